@@ -1,0 +1,21 @@
+# Every dependency is a Debian 12 package with a CMake config (scripts/setup.sh installs them).
+find_package(embree 3 REQUIRED)
+find_package(OpenImageIO REQUIRED)
+find_package(OpenEXR REQUIRED)
+find_package(TinyGLTF REQUIRED)
+find_package(tinyobjloader REQUIRED)
+find_package(TBB REQUIRED)
+find_package(CLI11 REQUIRED)
+find_package(doctest REQUIRED)
+
+# Debian's OpenImageIO config lists /usr/include/opencv4, which exists only with libopencv-dev;
+# CMake refuses a missing include path, so drop it rather than install OpenCV.
+foreach(_target OpenImageIO::OpenImageIO OpenImageIO::OpenImageIO_Util)
+  if(TARGET ${_target})
+    get_target_property(_dirs ${_target} INTERFACE_INCLUDE_DIRECTORIES)
+    if(_dirs)
+      list(FILTER _dirs EXCLUDE REGEX "opencv4")
+      set_target_properties(${_target} PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${_dirs}")
+    endif()
+  endif()
+endforeach()

@@ -1,0 +1,42 @@
+// Affine transforms as 4x4 row-major matrices (last row 0 0 0 1 for affine ones).
+#pragma once
+
+#include "math/vec.h"
+
+namespace radiant {
+
+struct mat4 {
+  float m[4][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
+};
+
+mat4 operator*(const mat4& a, const mat4& b);
+mat4 translation(vec3 t);
+mat4 scaling(vec3 s);
+// Rotation by unit quaternion (x, y, z, w), the glTF convention.
+mat4 rotation_quaternion(vec4 q);
+// Rotation by `degrees` around unit `axis`.
+mat4 rotation_axis(vec3 axis, float degrees);
+// Inverse of an affine matrix; returns false when singular.
+bool inverse_affine(const mat4& a, mat4& out);
+float determinant3(const mat4& a);
+bool is_finite(const mat4& a);
+bool is_identity(const mat4& a);
+
+inline vec3 transform_point(const mat4& a, vec3 p) {
+  return {a.m[0][0] * p.x + a.m[0][1] * p.y + a.m[0][2] * p.z + a.m[0][3],
+          a.m[1][0] * p.x + a.m[1][1] * p.y + a.m[1][2] * p.z + a.m[1][3],
+          a.m[2][0] * p.x + a.m[2][1] * p.y + a.m[2][2] * p.z + a.m[2][3]};
+}
+inline vec3 transform_vector(const mat4& a, vec3 v) {
+  return {a.m[0][0] * v.x + a.m[0][1] * v.y + a.m[0][2] * v.z,
+          a.m[1][0] * v.x + a.m[1][1] * v.y + a.m[1][2] * v.z,
+          a.m[2][0] * v.x + a.m[2][1] * v.y + a.m[2][2] * v.z};
+}
+// Normals transform by the inverse transpose; pass the inverse matrix.
+inline vec3 transform_normal(const mat4& inverse, vec3 n) {
+  return {inverse.m[0][0] * n.x + inverse.m[1][0] * n.y + inverse.m[2][0] * n.z,
+          inverse.m[0][1] * n.x + inverse.m[1][1] * n.y + inverse.m[2][1] * n.z,
+          inverse.m[0][2] * n.x + inverse.m[1][2] * n.y + inverse.m[2][2] * n.z};
+}
+
+}  // namespace radiant

@@ -1,0 +1,201 @@
+// The plain scene description every loader produces and the core builds from.
+// Plain structs linked by integer indices (-1 = none); no rendering types, no Embree.
+// Units are the internal ones of docs/units.md: linear RGB, radiometric, metres-agnostic.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "math/transform.h"
+#include "math/vec.h"
+
+namespace radiant {
+
+// ---------------------------------------------------------------- cameras
+
+enum class Projection { perspective, orthographic };
+
+struct CameraDesc {
+  std::string name;
+  Projection projection = Projection::perspective;
+  vec3 position = {0, 0, 0};
+  vec3 forward = {0, 0, -1};  // unit view direction
+  vec3 up = {0, 1, 0};        // unit, orthogonal to forward
+  float vertical_fov_degrees = 45;  // perspective
+  float ortho_height = 2;           // orthographic: full height of the view volume
+  float aspect = 0;                 // width / height; 0 = take it from the image size
+  int width = 0, height = 0;        // image size the file asks for; 0 = unset
+};
+
+// ---------------------------------------------------------------- images and textures
+
+// Texels as loaded: 8-bit (LDR files) or float (HDR/EXR). Color space is chosen by the user of
+// the texture (base color and emission decode sRGB, the others are linear data).
+struct ImageDesc {
+  std::string name;  // file path or glTF image name, for messages
+  int width = 0, height = 0, channels = 0;
+  std::vector<uint8_t> texels8;
+  std::vector<float> texels_float;
+};
+
+enum class TextureWrap { repeat, clamp_to_edge, mirrored_repeat };
+enum class TextureFilter { linear, nearest };
+
+struct TextureDesc {
+  int image = -1;
+  TextureWrap wrap_s = TextureWrap::repeat, wrap_t = TextureWrap::repeat;
+  TextureFilter filter = TextureFilter::linear;
+};
+
+// A material slot's texture: which texture, which UV set, and KHR_texture_transform.
+struct TextureRef {
+  int texture = -1;
+  int texcoord = 0;
+  vec2 offset = {0, 0};
+  vec2 scale = {1, 1};
+  float rotation = 0;  // radians
+  bool valid() const { return texture >= 0; }
+};
+
+// ---------------------------------------------------------------- materials
+
+// Which reflection model the author wrote; both integrators evaluate both (docs/materials.md).
+enum class MaterialModel { phong, metallic_roughness };
+enum class AlphaMode { opaque, mask, blend };
+
+struct MaterialDesc {
+  std::string name;
+  MaterialModel model = MaterialModel::phong;
+
+  // Phong/Whitted parameters (the `.scene` model, and OBJ/MTL).
+  color3 ka = {0, 0, 0};  // ambient reflectance
+  color3 kd = {0, 0, 0};  // diffuse reflectance (albedo)
+  color3 ks = {0, 0, 0};  // specular highlight weight
+  float shininess = 1;
+  color3 kr = {0, 0, 0};  // mirror reflection weight
+  color3 kt = {0, 0, 0};  // transmission weight
+  float ior = 1.5f;
+
+  // glTF metallic-roughness parameters.
+  color3 base_color = {1, 1, 1};
+  float alpha = 1;
+  float metallic = 1;
+  float roughness = 1;
+  float transmission = 0;  // KHR_materials_transmission
+  TextureRef base_color_texture;  // sRGB; alpha in channel 4
+  TextureRef metallic_roughness_texture;  // linear: G roughness, B metallic
+  TextureRef normal_texture;
+  float normal_scale = 1;
+  TextureRef transmission_texture;  // linear, R channel
+  TextureRef specular_texture;      // linear RGB weight for ks (OBJ map_Ks)
+  TextureRef alpha_texture;         // linear, R channel (OBJ map_d)
+
+  // Shared.
+  color3 emission = {0, 0, 0};  // emitted radiance (already × strength)
+  TextureRef emission_texture;  // sRGB, multiplies `emission`
+  AlphaMode alpha_mode = AlphaMode::opaque;
+  float alpha_cutoff = 0.5f;
+  bool double_sided = true;
+  bool unlit = false;  // KHR_materials_unlit: base color is shown as radiance
+};
+
+// ---------------------------------------------------------------- geometry
+
+// A triangle mesh with one material, in its own object space; placed by instances.
+struct MeshDesc {
+  std::string name;
+  int material = -1;
+  std::vector<vec3> positions;
+  std::vector<vec3> normals;     // empty or one per vertex
+  std::vector<vec4> tangents;    // empty or one per vertex (w = handedness)
+  std::vector<vec2> texcoords0;  // empty or one per vertex
+  std::vector<vec2> texcoords1;
+  std::vector<vec4> colors;      // empty or one per vertex (COLOR_0, linear RGBA)
+  std::vector<uint32_t> indices; // three per triangle
+  size_t triangle_count() const { return indices.size() / 3; }
+};
+
+struct InstanceDesc {
+  int mesh = -1;
+  mat4 transform;  // object to world
+  std::string name;
+};
+
+enum class ShapeKind { sphere, plane, cylinder, tube };
+
+// Analytic shapes, in world space.
+//  sphere:   center, radius
+//  plane:    center = a point on it, axis = unit normal (infinite)
+//  cylinder: center = centre of the base cap, axis = unit axis, radius, height (capped)
+//  tube:     center = a point on the axis, axis = unit axis, radius (infinite, no caps)
+struct ShapeDesc {
+  ShapeKind kind = ShapeKind::sphere;
+  int material = -1;
+  vec3 center = {0, 0, 0};
+  vec3 axis = {0, 0, 1};
+  float radius = 1;
+  float height = 1;
+  std::string name;
+};
+
+// ---------------------------------------------------------------- lights
+
+enum class LightKind { ambient, directional, point, spot };
+
+// Intensity units (internal): point/spot W/sr, directional W/m^2, ambient radiance.
+// Attenuation divides by (kc + kl*d + kq*d^2); glTF lights use kc = kl = 0, kq = 1.
+struct LightDesc {
+  std::string name;
+  LightKind kind = LightKind::point;
+  color3 intensity = {1, 1, 1};
+  vec3 position = {0, 0, 0};
+  vec3 direction = {0, 0, -1};  // unit; the direction light travels (directional, spot axis)
+  float kc = 0, kl = 0, kq = 1;
+  // Spot falloff: cos(angle)^exponent (the classic narrow beam) when use_cone is false, the
+  // glTF smooth step between outer and inner cone angles (radians) when it is true.
+  float spot_exponent = 1;
+  bool use_cone = false;
+  float inner_cone = 0, outer_cone = 0.785398f;
+  float range = 0;  // glTF range; 0 = infinite
+};
+
+// ---------------------------------------------------------------- environment and settings
+
+struct EnvironmentDesc {
+  color3 color = {0, 0, 0};  // uniform radiance seen by rays that escape (the background)
+  std::string map_path;      // equirectangular EXR/HDR; empty = none
+  float map_scale = 1;
+};
+
+enum class RenderMode { auto_select, whitted, path, naive };
+enum class SamplerKind { grid, random, jittered, sobol };
+
+// Render settings a scene file may carry; command-line flags override each one that is set.
+struct SceneSettings {
+  std::optional<int> width, height, spp, max_depth;
+  std::optional<RenderMode> mode;
+  std::optional<SamplerKind> sampler;
+};
+
+// ---------------------------------------------------------------- the scene
+
+struct SceneDesc {
+  std::string name;
+  std::string source_path;  // file it was loaded from ("-" for stdin)
+  std::vector<CameraDesc> cameras;
+  std::vector<MeshDesc> meshes;
+  std::vector<InstanceDesc> instances;
+  std::vector<ShapeDesc> shapes;
+  std::vector<MaterialDesc> materials;
+  std::vector<TextureDesc> textures;
+  std::vector<ImageDesc> images;
+  std::vector<LightDesc> lights;
+  EnvironmentDesc environment;
+  SceneSettings settings;
+  std::vector<std::string> warnings;  // shown by `render` (unless quiet) and `info`
+  size_t degenerate_triangles_dropped = 0;
+};
+
+}  // namespace radiant

@@ -1,0 +1,46 @@
+// Helpers shared by tests: scratch folders, running the CLI, reading rendered images.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace radiant::test {
+
+// A fresh, empty folder under the system temp dir, removed when the object dies.
+struct ScratchDir {
+  std::filesystem::path path;
+  explicit ScratchDir(const std::string& tag);
+  ~ScratchDir();
+  std::filesystem::path file(const std::string& name) const { return path / name; }
+  // Writes `text` to `name` inside the folder and returns the full path.
+  std::filesystem::path write(const std::string& name, const std::string& text) const;
+};
+
+struct CommandResult {
+  int exit_code = -1;
+  std::string out;  // stdout
+  std::string err;  // stderr
+};
+
+// Runs `radiant ARGS` (the built executable) with a hard timeout in seconds; `stdin_text` is fed
+// to its standard input.
+CommandResult run_radiant(const std::string& args, const std::string& stdin_text = "",
+                          int timeout_seconds = 120);
+
+// A float image as read through OpenImageIO (all channels, row-major, top row first).
+struct TestImage {
+  int width = 0, height = 0, channels = 0;
+  std::vector<float> pixels;
+  std::vector<std::string> channel_names;
+  float at(int x, int y, int c) const { return pixels[(size_t(y) * width + x) * channels + c]; }
+};
+TestImage read_image(const std::filesystem::path& file);
+
+// Whole file contents as bytes, for byte-identity checks.
+std::string read_bytes(const std::filesystem::path& file);
+
+// Absolute path of a file in the source tree (e.g. "assets/cornell.gltf").
+std::filesystem::path source_path(const std::string& relative);
+
+}  // namespace radiant::test
