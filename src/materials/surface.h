@@ -1,0 +1,76 @@
+// A material resolved at one surface point (textures applied), and the two ways radiant shades it:
+// the Phong/Whitted model and the physically based BSDF of the path tracer (docs/materials.md).
+#pragma once
+
+#include <optional>
+
+#include "math/vec.h"
+#include "scene/scene_desc.h"
+
+namespace radiant {
+
+// Per-hit geometric attributes a material needs for its texture lookups.
+struct SurfaceAttributes {
+  vec2 uv[2] = {{0, 0}, {0, 0}};
+  vec4 vertex_color = {1, 1, 1, 1};
+};
+
+// A material's parameters at one point: MaterialDesc with every texture applied.
+struct SurfaceMaterial {
+  MaterialModel model = MaterialModel::phong;
+  // Phong (also filled for metallic-roughness through the documented mapping; see
+  // `phong_from_metallic_roughness`), used by the Whitted integrator for every material.
+  color3 ka, kd, ks, kr, kt;
+  float shininess = 1;
+  float ior = 1.5f;
+  // Metallic-roughness, valid when model == metallic_roughness.
+  color3 base_color = {1, 1, 1};
+  float metallic = 0, roughness = 1, transmission = 0;
+  // Shared.
+  color3 emission;
+  float opacity = 1;  // alpha after the alpha mode (1 for opaque; 0 or 1 for mask)
+  bool unlit = false;
+  vec3 normal_map_sample = {0, 0, 1};  // tangent-space normal (scaled), when the material has one
+  bool has_normal_map = false;
+};
+
+// Texel fetch with wrap, filter and KHR_texture_transform; `srgb` decodes color textures.
+// Returns RGBA (missing channels: RGB repeat the first, A = 1).
+vec4 sample_texture(const SceneDesc& scene, const TextureRef& ref, const SurfaceAttributes& attributes,
+                    bool srgb);
+
+// Resolves `material` at a point.
+SurfaceMaterial resolve_material(const SceneDesc& scene, const MaterialDesc& material,
+                                 const SurfaceAttributes& attributes);
+
+// The Whitted mapping of metallic-roughness parameters onto kd/ks/shininess/kr/kt (fills the
+// Phong fields of `m` from its metallic-roughness fields).
+void phong_from_metallic_roughness(SurfaceMaterial& m);
+
+// Perturbs shading normal `n` by a tangent-space normal-map sample, given the tangent (xyz, w sign).
+vec3 apply_normal_map(vec3 n, vec4 tangent, vec3 tangent_space_normal);
+
+// ---------------------------------------------------------------- path tracer BSDF
+// Directions are world-space unit vectors pointing away from the surface; `n` is the shading
+// normal on the side the material was authored (the integrator flips it for double-sided hits).
+
+struct BsdfSample {
+  vec3 wi;
+  color3 weight;    // f * |cos(wi)| / pdf (for delta lobes: the lobe's reflectance / selection prob)
+  float pdf = 0;    // solid-angle pdf of choosing wi (selection probability for delta lobes)
+  bool delta = false;
+  bool transmitted = false;
+};
+
+// f(wo, wi) * |dot(n, wi)| for the non-delta lobes.
+color3 eval_bsdf(const SurfaceMaterial& m, vec3 n, vec3 wo, vec3 wi);
+// Solid-angle pdf that sample_bsdf picks wi through a non-delta lobe.
+float sample_bsdf_pdf(const SurfaceMaterial& m, vec3 n, vec3 wo, vec3 wi);
+// Samples a direction; u_lobe picks a lobe, u the direction within it. nullopt when absorbed.
+std::optional<BsdfSample> sample_bsdf(const SurfaceMaterial& m, vec3 n, vec3 wo, float u_lobe, vec2 u);
+// True when the material has only delta lobes (mirror, smooth glass): light sampling is useless.
+bool is_pure_delta(const SurfaceMaterial& m);
+// Hemispherical albedo estimate used for the albedo AOV (base color or kd, clamped to [0,1]).
+color3 bsdf_albedo(const SurfaceMaterial& m);
+
+}  // namespace radiant
