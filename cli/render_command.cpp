@@ -1,13 +1,113 @@
-// `radiant render` — not built yet.
+// `radiant render SCENE -o OUT [options]`
+#include <unistd.h>
+
+#include <chrono>
+#include <fstream>
 #include <iostream>
 
 #include "commands.h"
+#include "load_scene.h"
+#include "option_parsing.h"
+#include "render_report.h"
 
 namespace radiant::cli {
 
-int render_main(int, char**) {
-  std::cerr << "radiant render: not implemented yet\n";
-  return exit_failure;
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+const char* render_examples =
+    "\nExamples:\n"
+    "  radiant render assets/cornell.gltf -o cornell.png\n"
+    "  radiant render assets/first-render.scene -o sphere.png --spp 81 --sampler jittered\n"
+    "  radiant render model.obj -o model.exr --env-color 1,1,1 --aov albedo,normal,variance\n"
+    "  radiant render scene.gltf -o preview.png --effects=-shadows,-indirect --width 320\n"
+    "  cat room.scene | radiant render - -o room.png --mode path --spp 256 --threads 2\n";
+
+void write_text_file_atomically(const std::string& path, const std::string& text) {
+  std::string temporary = path + ".tmp-" + std::to_string(getpid());
+  {
+    std::ofstream out(temporary, std::ios::binary);
+    out << text;
+    if (!out.good()) throw std::runtime_error("cannot write '" + path + "'");
+  }
+  std::filesystem::rename(temporary, path);
+}
+
+}  // namespace
+
+int render_main(int argc, char** argv) {
+  auto start = Clock::now();
+  CLI::App app{"Render a scene (.scene, .gltf, .glb, .obj; - reads a .scene from stdin) to an image."};
+  app.footer(render_examples);
+  std::string scene_path, output, stats_path;
+  RenderFlags flags;
+  app.add_option("SCENE", scene_path, "Scene file, or - for a .scene on standard input")->required();
+  app.add_option("-o,--output", output, "Output image (.png is 8-bit sRGB, .exr linear float)")->required();
+  flags.bind(app, true);
+  app.add_option("--time-limit", flags.options.time_limit_seconds, "Stop after this many seconds (loading included)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--noise-threshold", flags.options.noise_threshold, "Adaptive sampling: stop pixels under this relative error")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--crop", flags.crop, "Render only pixels X0,Y0,X1,Y1 (half-open)");
+  app.add_option("--aov", flags.aovs, "Extra EXR channels: albedo,normal,depth,variance,spp");
+  app.add_option("--stats", stats_path, "Write render statistics as JSON");
+  app.set_version_flag("--version", "radiant " RADIANT_VERSION);
+  try {
+    app.parse(argc, argv);
+    flags.finish();
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);
+    std::cerr << "radiant render: " << e.what() << "\n";
+    return exit_usage;
+  }
+  RenderOptions& options = flags.options;
+  options.progress = isatty(STDERR_FILENO) && !options.quiet;
+  if (options.time_limit_seconds > 0)
+    options.deadline = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.time_limit_seconds));
+  if (!options.aovs.empty() && !is_float_format(output)) {
+    std::cerr << "radiant render: --aov needs an EXR output (got '" << output << "')\n";
+    return exit_usage;
+  }
+
+  PhaseTimes times;
+  try {
+    LoadOptions load_options;
+    load_options.allow_external_files = flags.allow_external_files;
+    load_options.max_memory_bytes = size_t(flags.max_memory_gb * double(size_t(1) << 30));
+    load_options.gltf_scene = flags.gltf_scene;
+    SceneDesc scene = load_scene(scene_path, load_options);
+    times.load = seconds_since(start);
+    if (!options.quiet)
+      for (const std::string& warning : scene.warnings) std::cerr << "radiant: warning: " << warning << "\n";
+
+    PreparedScene prepared = prepare_scene(scene);
+    times.build = prepared.build_seconds;
+    RenderResult result;
+    try {
+      result = render_prepared(prepared, options);
+    } catch (const std::invalid_argument& e) {
+      std::cerr << "radiant render: " << e.what() << "\n";
+      return exit_usage;
+    }
+    times.render = result.stats.render_seconds;
+    const ResolvedSettings& s = result.settings;
+    if (!options.quiet) {
+      if (s.camera_framed) std::cerr << "radiant: the scene has no camera; using one that frames the whole scene\n";
+      if (!s.mode_reason.empty()) std::cerr << "radiant: mode " << mode_name(s.mode) << ": " << s.mode_reason << "\n";
+    }
+    auto write_start = Clock::now();
+    write_image(output, film_to_image(result.film, options.aovs, s.window));
+    times.write = seconds_since(write_start);
+    if (!stats_path.empty()) write_text_file_atomically(stats_path, render_stats_json(scene_path, output, result, times));
+    if (!options.quiet) std::cerr << "radiant: " << render_summary(output, result, times) << "\n";
+  } catch (const std::exception& e) {
+    std::cerr << "radiant: " << e.what() << "\n";
+    return exit_failure;
+  }
+  return exit_ok;
 }
 
 }  // namespace radiant::cli

@@ -1,0 +1,144 @@
+#include "option_parsing.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace radiant::cli {
+
+namespace {
+
+std::vector<std::string> split(const std::string& text, char separator) {
+  std::vector<std::string> parts;
+  std::stringstream in(text);
+  std::string part;
+  while (std::getline(in, part, separator)) parts.push_back(part);
+  return parts;
+}
+
+double parse_number(const std::string& flag, const std::string& text) {
+  size_t used = 0;
+  double value = 0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || text.empty() || !std::isfinite(value))
+    throw CLI::ValidationError(flag, "'" + text + "' is not a finite number");
+  return value;
+}
+
+}  // namespace
+
+vec3 parse_vec3(const std::string& flag, const std::string& text) {
+  auto parts = split(text, ',');
+  if (parts.size() != 3) throw CLI::ValidationError(flag, "expected X,Y,Z (three comma-separated numbers), got '" + text + "'");
+  return {float(parse_number(flag, parts[0])), float(parse_number(flag, parts[1])), float(parse_number(flag, parts[2]))};
+}
+
+RenderMode parse_mode(const std::string& flag, const std::string& text) {
+  if (text == "whitted") return RenderMode::whitted;
+  if (text == "path") return RenderMode::path;
+  if (text == "naive") return RenderMode::naive;
+  if (text == "auto") return RenderMode::auto_select;
+  throw CLI::ValidationError(flag, "unknown mode '" + text + "' (expected whitted, path, naive or auto)");
+}
+
+SamplerKind parse_sampler(const std::string& flag, const std::string& text) {
+  if (text == "grid") return SamplerKind::grid;
+  if (text == "random") return SamplerKind::random;
+  if (text == "jittered") return SamplerKind::jittered;
+  if (text == "sobol") return SamplerKind::sobol;
+  throw CLI::ValidationError(flag, "unknown sampler '" + text + "' (expected grid, random, jittered or sobol)");
+}
+
+PixelWindow parse_window(const std::string& flag, const std::string& text) {
+  auto parts = split(text, ',');
+  if (parts.size() != 4) throw CLI::ValidationError(flag, "expected X0,Y0,X1,Y1 in pixels, got '" + text + "'");
+  int v[4];
+  for (int i = 0; i < 4; ++i) {
+    double d = parse_number(flag, parts[i]);
+    if (d != std::floor(d) || d < 0 || d > 1e6) throw CLI::ValidationError(flag, "'" + parts[i] + "' is not a pixel index");
+    v[i] = int(d);
+  }
+  return {v[0], v[1], v[2], v[3]};
+}
+
+std::vector<std::string> parse_aovs(const std::string& flag, const std::string& text) {
+  std::vector<std::string> aovs;
+  for (const std::string& name : split(text, ',')) {
+    if (name.empty()) continue;
+    if (name != "albedo" && name != "normal" && name != "depth" && name != "variance" && name != "spp")
+      throw CLI::ValidationError(flag, "unknown AOV '" + name + "' (expected albedo, normal, depth, variance or spp)");
+    aovs.push_back(name);
+  }
+  return aovs;
+}
+
+const char* mode_name(RenderMode mode) {
+  switch (mode) {
+    case RenderMode::whitted: return "whitted";
+    case RenderMode::path: return "path";
+    case RenderMode::naive: return "naive";
+    case RenderMode::auto_select: return "auto";
+  }
+  return "?";
+}
+
+const char* sampler_name(SamplerKind kind) {
+  switch (kind) {
+    case SamplerKind::grid: return "grid";
+    case SamplerKind::random: return "random";
+    case SamplerKind::jittered: return "jittered";
+    case SamplerKind::sobol: return "sobol";
+  }
+  return "?";
+}
+
+void RenderFlags::bind(CLI::App& app, bool image_flags) {
+  if (image_flags) {
+    app.add_option("--width", width, "Image width in pixels (default: from the scene or camera)")->check(CLI::Range(1, 65536));
+    app.add_option("--height", height, "Image height in pixels")->check(CLI::Range(1, 65536));
+    app.add_option("--spp", spp, "Samples per pixel (the maximum with --noise-threshold)")->check(CLI::Range(1, 1 << 24));
+  }
+  app.add_option("--mode", mode, "Integrator: whitted, path, naive or auto (default auto)");
+  app.add_option("--max-depth", max_depth, "Surface interactions that gather light (1 = direct only)")->check(CLI::Range(1, 1000));
+  app.add_option("--threads", options.threads, "Worker threads (default: all cores); never changes the image")->check(CLI::Range(0, 1024));
+  app.add_option("--seed", options.seed, "Random seed");
+  app.add_option("--sampler", sampler, "grid, random, jittered (Whitted default) or sobol (path default)");
+  app.add_option("--camera", options.camera, "Camera name or index (default: the first)");
+  app.add_option("--scene", gltf_scene, "glTF scene index (default: the file's default scene)")->check(CLI::NonNegativeNumber);
+  app.add_option("--env-color", env_color, "Uniform environment radiance R,G,B (linear)");
+  app.add_option("--env", options.env_map, "Equirectangular environment map (.exr or .hdr)");
+  app.add_option("--look-from", look_from, "Camera position X,Y,Z");
+  app.add_option("--look-at", look_at, "Point the camera looks at X,Y,Z");
+  app.add_option("--up", up, "Camera up vector X,Y,Z");
+  app.add_option("--fov", fov, "Vertical field of view in degrees");
+  app.add_option("--effects", options.effects, "Switch effects off/on: e.g. -shadows,-indirect, or 'all' (generic integrator)");
+  app.add_flag("--allow-external-files", allow_external_files, "Let scene files refer to files outside their folder");
+  app.add_option("--max-memory", max_memory_gb, "Refuse scenes declaring more geometry/texture memory (GiB; default 1/4 of RAM)")
+      ->check(CLI::PositiveNumber);
+  app.add_flag("--quiet,-q", options.quiet, "Print nothing but errors");
+}
+
+void RenderFlags::finish() {
+  if (width) options.width = width;
+  if (height) options.height = height;
+  if (spp) options.spp = spp;
+  if (max_depth) options.max_depth = max_depth;
+  if (!mode.empty()) options.mode = parse_mode("--mode", mode);
+  if (!sampler.empty()) options.sampler = parse_sampler("--sampler", sampler);
+  if (!env_color.empty()) {
+    vec3 c = parse_vec3("--env-color", env_color);
+    if (min_component(c) < 0) throw CLI::ValidationError("--env-color", "radiance cannot be negative");
+    options.env_color = c;
+  }
+  if (!crop.empty()) options.crop = parse_window("--crop", crop);
+  if (!aovs.empty()) options.aovs = parse_aovs("--aov", aovs);
+  if (!look_from.empty()) options.camera_override.look_from = parse_vec3("--look-from", look_from);
+  if (!look_at.empty()) options.camera_override.look_at = parse_vec3("--look-at", look_at);
+  if (!up.empty()) options.camera_override.up = parse_vec3("--up", up);
+  if (fov != 0) options.camera_override.fov_degrees = fov;
+}
+
+}  // namespace radiant::cli

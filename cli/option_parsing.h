@@ -1,0 +1,34 @@
+// Parsing the command line's value syntaxes (X,Y,Z triples, mode and sampler names, windows).
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+#include "render/render_options.h"
+
+namespace radiant::cli {
+
+// Each throws CLI::ValidationError naming `flag` on bad input.
+vec3 parse_vec3(const std::string& flag, const std::string& text);
+RenderMode parse_mode(const std::string& flag, const std::string& text);
+SamplerKind parse_sampler(const std::string& flag, const std::string& text);
+PixelWindow parse_window(const std::string& flag, const std::string& text);
+std::vector<std::string> parse_aovs(const std::string& flag, const std::string& text);
+const char* mode_name(RenderMode mode);
+const char* sampler_name(SamplerKind kind);
+
+// The options shared by `render`, `converge` and `batch`, bound to `app`; call `finish` after
+// parsing to convert the string flags.
+struct RenderFlags {
+  RenderOptions options;
+  std::string mode, sampler, env_color, crop, aovs, look_from, look_at, up;
+  int width = 0, height = 0, spp = 0, max_depth = 0, gltf_scene = -1;
+  float fov = 0;
+  bool allow_external_files = false;
+  double max_memory_gb = 0;
+  void bind(CLI::App& app, bool image_flags);
+  void finish();
+};
+
+}  // namespace radiant::cli

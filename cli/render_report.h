@@ -1,0 +1,24 @@
+// What `render` tells the user afterwards: the one-line summary and the --stats JSON file.
+#pragma once
+
+#include <string>
+
+#include "render/render.h"
+
+namespace radiant::cli {
+
+struct PhaseTimes {
+  double load = 0, build = 0, render = 0, write = 0;
+};
+
+// "wrote out.png: 800x800, 81 spp (jittered), whitted, 12.3 s, 4.56 M rays/s"
+std::string render_summary(const std::string& output, const RenderResult& result, const PhaseTimes& times);
+// The --stats JSON document.
+std::string render_stats_json(const std::string& scene_path, const std::string& output, const RenderResult& result,
+                              const PhaseTimes& times);
+// Peak resident memory of this process in bytes.
+size_t peak_memory_bytes();
+// Escapes a string for a JSON string literal.
+std::string json_escape(const std::string& text);
+
+}  // namespace radiant::cli

@@ -1,0 +1,207 @@
+#include "accel/analytic_shapes.h"
+
+#include <cmath>
+
+namespace radiant {
+
+namespace {
+
+struct dvec3 {
+  double x, y, z;
+};
+dvec3 to_double(vec3 v) { return {v.x, v.y, v.z}; }
+dvec3 operator-(dvec3 a, dvec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+dvec3 operator+(dvec3 a, dvec3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+dvec3 operator*(dvec3 a, double s) { return {a.x * s, a.y * s, a.z * s}; }
+double dot(dvec3 a, dvec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+vec3 to_float(dvec3 v) { return {float(v.x), float(v.y), float(v.z)}; }
+
+// Roots of a t^2 + b t + c with the numerically stable formulation (no cancellation).
+bool solve_quadratic(double a, double b, double c, double& t0, double& t1) {
+  if (a == 0) return false;
+  double discriminant = b * b - 4 * a * c;
+  if (discriminant < 0) return false;
+  double root = std::sqrt(discriminant);
+  double q = b < 0 ? -0.5 * (b - root) : -0.5 * (b + root);
+  if (q == 0) {
+    t0 = t1 = -b / (2 * a);
+    return true;
+  }
+  t0 = q / a;
+  t1 = c / q;
+  if (t0 > t1) std::swap(t0, t1);
+  return true;
+}
+
+bool accept(double t, float tmin, float tmax) { return t > tmin && t < tmax; }
+
+bool intersect_sphere(const ShapeDesc& s, const Ray& ray, float tmin, ShapeHit& hit) {
+  dvec3 o = to_double(ray.origin) - to_double(s.center);
+  dvec3 d = to_double(ray.direction);
+  double r = s.radius;
+  // a t^2 + b t + c with c = |o|^2 - r^2 factored to keep precision for rays starting on it.
+  double a = dot(d, d), b = 2 * dot(o, d);
+  double c = (std::sqrt(dot(o, o)) - r) * (std::sqrt(dot(o, o)) + r);
+  double t0, t1;
+  if (!solve_quadratic(a, b, c, t0, t1)) return false;
+  double t = accept(t0, tmin, ray.tmax) ? t0 : t1;
+  if (!accept(t, tmin, ray.tmax)) return false;
+  dvec3 p = o + d * t;
+  double len = std::sqrt(dot(p, p));
+  hit.t = float(t);
+  hit.normal = to_float(p * (1 / len));
+  double phi = std::atan2(p.y, p.x);
+  hit.uv = {float((phi + M_PI) / (2 * M_PI)), float(std::acos(std::clamp(p.z / len, -1.0, 1.0)) / M_PI)};
+  return true;
+}
+
+bool intersect_plane(const ShapeDesc& s, const Ray& ray, float tmin, ShapeHit& hit) {
+  dvec3 n = to_double(s.axis);
+  double denominator = dot(to_double(ray.direction), n);
+  if (denominator == 0) return false;  // parallel, including a ray lying in the plane
+  double t = dot(to_double(s.center) - to_double(ray.origin), n) / denominator;
+  if (!accept(t, tmin, ray.tmax)) return false;
+  hit.t = float(t);
+  hit.normal = s.axis;
+  vec3 tangent, bitangent;
+  orthonormal_basis(s.axis, tangent, bitangent);
+  dvec3 p = to_double(ray.origin) + to_double(ray.direction) * t - to_double(s.center);
+  hit.uv = {float(dot(p, to_double(tangent))), float(dot(p, to_double(bitangent)))};
+  return true;
+}
+
+// Side of a cylinder or tube: the quadratic in the plane orthogonal to the axis.
+bool intersect_side(const ShapeDesc& s, const Ray& ray, float tmin, float tmax, bool capped,
+                    ShapeHit& hit) {
+  dvec3 axis = to_double(s.axis);
+  dvec3 o = to_double(ray.origin) - to_double(s.center);
+  dvec3 d = to_double(ray.direction);
+  dvec3 o_perp = o - axis * dot(o, axis);
+  dvec3 d_perp = d - axis * dot(d, axis);
+  double r = s.radius;
+  double a = dot(d_perp, d_perp), b = 2 * dot(o_perp, d_perp);
+  double len = std::sqrt(dot(o_perp, o_perp));
+  double c = (len - r) * (len + r);
+  double roots[2];
+  if (!solve_quadratic(a, b, c, roots[0], roots[1])) return false;
+  for (double t : roots) {
+    if (!accept(t, tmin, tmax)) continue;
+    dvec3 p = o + d * t;
+    double height = dot(p, axis);
+    if (capped && (height < 0 || height > s.height)) continue;
+    dvec3 radial = p - axis * height;
+    double radial_length = std::sqrt(dot(radial, radial));
+    if (radial_length == 0) continue;
+    hit.t = float(t);
+    hit.normal = to_float(radial * (1 / radial_length));
+    vec3 tangent, bitangent;
+    orthonormal_basis(s.axis, tangent, bitangent);
+    double phi = std::atan2(dot(radial, to_double(bitangent)), dot(radial, to_double(tangent)));
+    hit.uv = {float((phi + M_PI) / (2 * M_PI)), float(height)};
+    return true;
+  }
+  return false;
+}
+
+bool intersect_cap(const ShapeDesc& s, const Ray& ray, float tmin, float tmax, bool top, ShapeHit& hit) {
+  dvec3 axis = to_double(s.axis);
+  dvec3 center = to_double(s.center) + axis * (top ? double(s.height) : 0.0);
+  double denominator = dot(to_double(ray.direction), axis);
+  if (denominator == 0) return false;
+  double t = dot(center - to_double(ray.origin), axis) / denominator;
+  if (!accept(t, tmin, tmax)) return false;
+  dvec3 p = to_double(ray.origin) + to_double(ray.direction) * t - center;
+  if (dot(p, p) > double(s.radius) * s.radius) return false;
+  hit.t = float(t);
+  hit.normal = top ? s.axis : -s.axis;
+  hit.uv = {float(p.x / s.radius), float(p.y / s.radius)};
+  return true;
+}
+
+bool intersect_cylinder(const ShapeDesc& s, const Ray& ray, float tmin, ShapeHit& hit) {
+  bool found = false;
+  float tmax = ray.tmax;
+  ShapeHit candidate;
+  if (intersect_side(s, ray, tmin, tmax, true, candidate)) found = true, hit = candidate, tmax = candidate.t;
+  if (intersect_cap(s, ray, tmin, tmax, false, candidate)) found = true, hit = candidate, tmax = candidate.t;
+  if (intersect_cap(s, ray, tmin, tmax, true, candidate)) found = true, hit = candidate;
+  return found;
+}
+
+}  // namespace
+
+bool intersect_shape(const ShapeDesc& shape, const Ray& ray, float tmin, ShapeHit& hit) {
+  switch (shape.kind) {
+    case ShapeKind::sphere: return intersect_sphere(shape, ray, tmin, hit);
+    case ShapeKind::plane: return intersect_plane(shape, ray, tmin, hit);
+    case ShapeKind::cylinder: return intersect_cylinder(shape, ray, tmin, hit);
+    case ShapeKind::tube: return intersect_side(shape, ray, tmin, ray.tmax, false, hit);
+  }
+  return false;
+}
+
+void shape_bounds(const ShapeDesc& s, float infinite_extent, vec3& lower, vec3& upper) {
+  switch (s.kind) {
+    case ShapeKind::sphere: {
+      vec3 r = {s.radius, s.radius, s.radius};
+      lower = s.center - r;
+      upper = s.center + r;
+      return;
+    }
+    case ShapeKind::cylinder: {
+      // Each axis-aligned extent of a disk of radius r with unit normal a is r*sqrt(1-a_i^2).
+      vec3 a = s.axis;
+      vec3 disk = {s.radius * std::sqrt(std::max(0.0f, 1 - a.x * a.x)),
+                   s.radius * std::sqrt(std::max(0.0f, 1 - a.y * a.y)),
+                   s.radius * std::sqrt(std::max(0.0f, 1 - a.z * a.z))};
+      vec3 top = s.center + s.axis * s.height;
+      lower = min(s.center, top) - disk;
+      upper = max(s.center, top) + disk;
+      return;
+    }
+    case ShapeKind::plane:
+    case ShapeKind::tube: {
+      vec3 e = {infinite_extent, infinite_extent, infinite_extent};
+      lower = -e;
+      upper = e;
+      return;
+    }
+  }
+}
+
+void refine_shape_point(const ShapeDesc& s, vec3 approximate, vec3 normal, vec3& point, vec3& error) {
+  dvec3 p = to_double(approximate), c = to_double(s.center);
+  switch (s.kind) {
+    case ShapeKind::sphere: {
+      dvec3 local = p - c;
+      double len = std::sqrt(dot(local, local));
+      if (len > 0) p = c + local * (double(s.radius) / len);
+      break;
+    }
+    case ShapeKind::plane: {
+      dvec3 n = to_double(s.axis);
+      p = p - n * dot(p - c, n);
+      break;
+    }
+    case ShapeKind::cylinder:
+    case ShapeKind::tube: {
+      dvec3 axis = to_double(s.axis);
+      double height = dot(p - c, axis);
+      if (std::abs(dot(to_double(normal), axis)) > 0.5) {  // a cap: onto its plane
+        double cap = height < 0.5 * s.height ? 0.0 : double(s.height);
+        p = p - axis * (height - cap);
+      } else {  // the side: radially onto the surface
+        dvec3 radial = (p - c) - axis * height;
+        double len = std::sqrt(dot(radial, radial));
+        if (len > 0) p = c + axis * height + radial * (double(s.radius) / len);
+      }
+      break;
+    }
+  }
+  point = to_float(p);
+  // The only error left is rounding the double result to float (plus margin for the
+  // shape parameters themselves being floats).
+  error = abs(point) * rounding_gamma(4) + vec3{1, 1, 1} * (std::abs(s.radius) * rounding_gamma(4));
+}
+
+}  // namespace radiant

@@ -1,0 +1,38 @@
+// A ray and the robust spawning of secondary rays from a surface.
+#pragma once
+
+#include <cmath>
+#include <limits>
+
+#include "math/vec.h"
+
+namespace radiant {
+
+struct Ray {
+  vec3 origin;
+  vec3 direction;  // not necessarily unit
+  float tmax = std::numeric_limits<float>::infinity();
+};
+
+// Bound on the relative rounding error of n floating-point operations (pbrt's gamma(n)).
+constexpr float rounding_gamma(int n) {
+  constexpr float epsilon = std::numeric_limits<float>::epsilon() * 0.5f;
+  return (n * epsilon) / (1 - n * epsilon);
+}
+
+// Moves `p` off the surface with normal `n` along the side `w` points to, by the projection of
+// the per-axis error bound `error` onto the normal, then one more ulp away from the surface:
+// the spawned ray cannot re-hit the surface it leaves, wherever that surface is.
+inline vec3 offset_ray_origin(vec3 p, vec3 error, vec3 n, vec3 w) {
+  float d = dot(abs(n), error);
+  vec3 offset = n * d;
+  if (dot(w, n) < 0) offset = -offset;
+  vec3 po = p + offset;
+  for (int i = 0; i < 3; ++i) {
+    if (offset[i] > 0) po[i] = std::nextafter(po[i], std::numeric_limits<float>::infinity());
+    else if (offset[i] < 0) po[i] = std::nextafter(po[i], -std::numeric_limits<float>::infinity());
+  }
+  return po;
+}
+
+}  // namespace radiant

@@ -1,0 +1,223 @@
+#include "accel/scene_accel.h"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "accel/analytic_shapes.h"
+
+namespace radiant {
+
+namespace {
+
+// Planes and tubes are infinite; Embree needs finite boxes, and this one is far beyond any
+// scene a float can describe precisely while leaving headroom for Embree's own arithmetic.
+constexpr float infinite_shape_extent = 1e18f;
+
+struct DeviceError {
+  std::string message;
+};
+
+void record_device_error(void* user, RTCError code, const char* message) {
+  auto* error = static_cast<DeviceError*>(user);
+  if (error->message.empty())
+    error->message = "Embree error " + std::to_string(int(code)) + ": " + (message ? message : "");
+}
+
+DeviceError& device_error() {
+  static thread_local DeviceError error;
+  return error;
+}
+
+void throw_on_device_error() {
+  DeviceError& e = device_error();
+  if (!e.message.empty()) {
+    std::string m = e.message;
+    e.message.clear();
+    throw std::runtime_error(m);
+  }
+}
+
+const SceneAccel& accel_of(void* user) { return *static_cast<const SceneAccel*>(user); }
+
+void shape_bounds_callback(const RTCBoundsFunctionArguments* args) {
+  const SceneAccel& accel = accel_of(args->geometryUserPtr);
+  vec3 lower, upper;
+  shape_bounds(accel.scene->shapes[args->primID], infinite_shape_extent, lower, upper);
+  *args->bounds_o = {lower.x, lower.y, lower.z, 0, upper.x, upper.y, upper.z, 0};
+}
+
+Ray ray_from_embree(const RTCRay& r) {
+  return {{r.org_x, r.org_y, r.org_z}, {r.dir_x, r.dir_y, r.dir_z}, r.tfar};
+}
+
+void shape_intersect_callback(const RTCIntersectFunctionNArguments* args) {
+  if (!args->valid[0]) return;
+  const SceneAccel& accel = accel_of(args->geometryUserPtr);
+  auto* rayhit = reinterpret_cast<RTCRayHit*>(args->rayhit);
+  ShapeHit hit;
+  if (!intersect_shape(accel.scene->shapes[args->primID], ray_from_embree(rayhit->ray), rayhit->ray.tnear, hit))
+    return;
+  rayhit->ray.tfar = hit.t;
+  rayhit->hit.geomID = args->geomID;
+  rayhit->hit.primID = args->primID;
+  rayhit->hit.Ng_x = hit.normal.x;
+  rayhit->hit.Ng_y = hit.normal.y;
+  rayhit->hit.Ng_z = hit.normal.z;
+  rayhit->hit.u = hit.uv.x;
+  rayhit->hit.v = hit.uv.y;
+  rayhit->hit.instID[0] = args->context->instID[0];
+}
+
+void shape_occluded_callback(const RTCOccludedFunctionNArguments* args) {
+  if (!args->valid[0]) return;
+  const SceneAccel& accel = accel_of(args->geometryUserPtr);
+  auto* ray = reinterpret_cast<RTCRay*>(args->ray);
+  ShapeHit hit;
+  if (intersect_shape(accel.scene->shapes[args->primID], ray_from_embree(*ray), ray->tnear, hit))
+    ray->tfar = -std::numeric_limits<float>::infinity();
+}
+
+// Rejects hits on texels whose alpha is under the material's cutoff, so they are never hit.
+void alpha_mask_filter(const RTCFilterFunctionNArguments* args) {
+  if (args->valid[0] == 0) return;
+  const auto* mask = static_cast<const SceneAccel::AlphaMask*>(args->geometryUserPtr);
+  const SceneDesc& scene = *mask->scene;
+  const MeshDesc& mesh = scene.meshes[mask->mesh];
+  const MaterialDesc& material = scene.materials[mesh.material];
+  uint32_t prim = RTCHitN_primID(args->hit, args->N, 0);
+  float u = RTCHitN_u(args->hit, args->N, 0), v = RTCHitN_v(args->hit, args->N, 0);
+  const uint32_t* tri = &mesh.indices[size_t(prim) * 3];
+  SurfaceAttributes attributes;
+  float b0 = 1 - u - v;
+  if (!mesh.texcoords0.empty())
+    attributes.uv[0] = mesh.texcoords0[tri[0]] * b0 + mesh.texcoords0[tri[1]] * u + mesh.texcoords0[tri[2]] * v;
+  if (!mesh.texcoords1.empty())
+    attributes.uv[1] = mesh.texcoords1[tri[0]] * b0 + mesh.texcoords1[tri[1]] * u + mesh.texcoords1[tri[2]] * v;
+  float alpha = material.alpha;
+  if (material.base_color_texture.valid()) alpha *= sample_texture(scene, material.base_color_texture, attributes, true).w;
+  if (material.alpha_texture.valid()) alpha *= sample_texture(scene, material.alpha_texture, attributes, false).x;
+  if (!mesh.colors.empty())
+    alpha *= mesh.colors[tri[0]].w * b0 + mesh.colors[tri[1]].w * u + mesh.colors[tri[2]].w * v;
+  if (alpha < material.alpha_cutoff) args->valid[0] = 0;
+}
+
+RTCScene build_mesh_scene(SceneAccel& accel, int mesh_index) {
+  const MeshDesc& mesh = accel.scene->meshes[mesh_index];
+  RTCScene scene = rtcNewScene(accel.device);
+  rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
+  RTCGeometry geometry = rtcNewGeometry(accel.device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+      geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.positions.size()));
+  for (size_t i = 0; i < mesh.positions.size(); ++i) {
+    vertices[3 * i + 0] = mesh.positions[i].x;
+    vertices[3 * i + 1] = mesh.positions[i].y;
+    vertices[3 * i + 2] = mesh.positions[i].z;
+  }
+  auto* indices = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
+      geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), mesh.triangle_count()));
+  std::copy(mesh.indices.begin(), mesh.indices.begin() + 3 * mesh.triangle_count(), indices);
+  if (mesh.material >= 0 && accel.scene->materials[mesh.material].alpha_mode == AlphaMode::mask) {
+    rtcSetGeometryUserData(geometry, &accel.alpha_masks[mesh_index]);
+    rtcSetGeometryIntersectFilterFunction(geometry, alpha_mask_filter);
+    rtcSetGeometryOccludedFilterFunction(geometry, alpha_mask_filter);
+  }
+  rtcCommitGeometry(geometry);
+  rtcAttachGeometryByID(scene, geometry, 0);
+  rtcReleaseGeometry(geometry);
+  rtcCommitScene(scene);
+  return scene;
+}
+
+void attach_instances(SceneAccel& accel) {
+  const SceneDesc& scene = *accel.scene;
+  accel.instance_inverse.resize(scene.instances.size());
+  for (size_t i = 0; i < scene.instances.size(); ++i) {
+    const InstanceDesc& instance = scene.instances[i];
+    if (!inverse_affine(instance.transform, accel.instance_inverse[i]))
+      throw std::runtime_error("instances[" + std::to_string(i) + "]: singular transform");
+    RTCGeometry geometry = rtcNewGeometry(accel.device, RTC_GEOMETRY_TYPE_INSTANCE);
+    rtcSetGeometryInstancedScene(geometry, accel.mesh_scenes[instance.mesh]);
+    float rows[12];
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 4; ++c) rows[r * 4 + c] = instance.transform.m[r][c];
+    rtcSetGeometryTransform(geometry, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, rows);
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometryByID(accel.top, geometry, unsigned(i));
+    rtcReleaseGeometry(geometry);
+  }
+}
+
+void attach_shapes(SceneAccel& accel) {
+  if (accel.scene->shapes.empty()) return;
+  RTCGeometry geometry = rtcNewGeometry(accel.device, RTC_GEOMETRY_TYPE_USER);
+  rtcSetGeometryUserPrimitiveCount(geometry, unsigned(accel.scene->shapes.size()));
+  rtcSetGeometryUserData(geometry, &accel);
+  rtcSetGeometryBoundsFunction(geometry, shape_bounds_callback, nullptr);
+  rtcSetGeometryIntersectFunction(geometry, shape_intersect_callback);
+  rtcSetGeometryOccludedFunction(geometry, shape_occluded_callback);
+  rtcCommitGeometry(geometry);
+  accel.shape_geometry = unsigned(accel.scene->instances.size());
+  rtcAttachGeometryByID(accel.top, geometry, accel.shape_geometry);
+  rtcReleaseGeometry(geometry);
+}
+
+}  // namespace
+
+SceneAccel::~SceneAccel() {
+  for (RTCScene s : mesh_scenes) rtcReleaseScene(s);
+  if (top) rtcReleaseScene(top);
+  if (device) rtcReleaseDevice(device);
+}
+
+std::unique_ptr<SceneAccel> build_scene_accel(const SceneDesc& scene) {
+  auto accel = std::make_unique<SceneAccel>();
+  accel->scene = &scene;
+  accel->device = rtcNewDevice(nullptr);
+  if (!accel->device) throw std::runtime_error("cannot create the Embree device");
+  rtcSetDeviceErrorFunction(accel->device, record_device_error, &device_error());
+  accel->alpha_masks.resize(scene.meshes.size());
+  for (size_t m = 0; m < scene.meshes.size(); ++m) accel->alpha_masks[m] = {&scene, int(m)};
+  for (size_t m = 0; m < scene.meshes.size(); ++m) accel->mesh_scenes.push_back(build_mesh_scene(*accel, int(m)));
+  accel->top = rtcNewScene(accel->device);
+  rtcSetSceneFlags(accel->top, RTC_SCENE_FLAG_ROBUST);
+  attach_instances(*accel);
+  attach_shapes(*accel);
+  rtcCommitScene(accel->top);
+  throw_on_device_error();
+  return accel;
+}
+
+HitId intersect_nearest(const SceneAccel& accel, const Ray& ray) {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit rayhit;
+  rayhit.ray = {ray.origin.x, ray.origin.y, ray.origin.z, 0.0f,
+                ray.direction.x, ray.direction.y, ray.direction.z, 0.0f,
+                ray.tmax, 0xFFFFFFFFu, 0, 0};
+  rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(accel.top, &context, &rayhit);
+  HitId id;
+  if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return id;
+  if (rayhit.hit.instID[0] != RTC_INVALID_GEOMETRY_ID) id.instance = int(rayhit.hit.instID[0]);
+  else id.shape = int(rayhit.hit.primID);
+  id.primitive = rayhit.hit.primID;
+  id.t = rayhit.ray.tfar;
+  id.barycentric = {rayhit.hit.u, rayhit.hit.v};
+  id.geometric_normal_raw = {rayhit.hit.Ng_x, rayhit.hit.Ng_y, rayhit.hit.Ng_z};
+  return id;
+}
+
+bool is_occluded(const SceneAccel& accel, const Ray& ray) {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRay r = {ray.origin.x, ray.origin.y, ray.origin.z, 0.0f,
+              ray.direction.x, ray.direction.y, ray.direction.z, 0.0f,
+              ray.tmax, 0xFFFFFFFFu, 0, 0};
+  rtcOccluded1(accel.top, &context, &r);
+  return r.tfar < 0;
+}
+
+}  // namespace radiant

@@ -1,0 +1,81 @@
+// The Embree acceleration structure of a SceneDesc: one RTCScene per mesh, instances on top,
+// and the analytic shapes as one user geometry beside them.
+#pragma once
+
+#include <embree3/rtcore.h>
+
+#include <memory>
+#include <vector>
+
+#include "accel/ray.h"
+#include "materials/surface.h"
+#include "scene/scene_desc.h"
+
+namespace radiant {
+
+// Where a ray hit: either a triangle of an instance or an analytic shape.
+struct HitId {
+  int instance = -1;   // >= 0 for triangles
+  int shape = -1;      // >= 0 for analytic shapes
+  uint32_t primitive = 0;
+  float t = 0;
+  vec2 barycentric;    // Embree's (u, v) for triangles, the shape's uv for shapes
+  vec3 geometric_normal_raw;  // Embree's Ng (unnormalised, world space for shapes)
+  bool valid() const { return instance >= 0 || shape >= 0; }
+};
+
+struct SceneAccel {
+  const SceneDesc* scene = nullptr;
+  RTCDevice device = nullptr;
+  RTCScene top = nullptr;
+  std::vector<RTCScene> mesh_scenes;
+  std::vector<mat4> instance_inverse;  // world to object, per instance
+  unsigned shape_geometry = RTC_INVALID_GEOMETRY_ID;
+  // Alpha-mask filter data, one per mesh (a material in MASK mode only).
+  struct AlphaMask {
+    const SceneDesc* scene;
+    int mesh;
+  };
+  std::vector<AlphaMask> alpha_masks;
+
+  SceneAccel() = default;
+  SceneAccel(const SceneAccel&) = delete;
+  SceneAccel& operator=(const SceneAccel&) = delete;
+  ~SceneAccel();
+};
+
+// Builds the acceleration structure; `scene` must outlive it. Throws std::runtime_error when
+// Embree reports an error.
+std::unique_ptr<SceneAccel> build_scene_accel(const SceneDesc& scene);
+
+// Nearest hit along the ray (from t = 0 to ray.tmax).
+HitId intersect_nearest(const SceneAccel& accel, const Ray& ray);
+// True when anything blocks the ray before ray.tmax.
+bool is_occluded(const SceneAccel& accel, const Ray& ray);
+
+// Everything about a hit point the integrators need, in world space.
+struct SurfaceHit {
+  vec3 position;
+  vec3 position_error;    // per-axis bound on the rounding error of `position`
+  vec3 geometric_normal;  // unit; the authored front side
+  vec3 shading_normal;    // unit; interpolated (and later normal-mapped) on the same side
+  vec4 tangent = {0, 0, 0, 0};  // xyz world tangent, w handedness; zero when absent
+  SurfaceAttributes attributes;
+  int material = -1;
+  bool front_face = true;  // the ray arrived on the geometric normal's side
+};
+
+SurfaceHit make_surface_hit(const SceneAccel& accel, const Ray& ray, const HitId& id);
+
+// A ray leaving `hit` in `direction`, with its origin offset by the error bound.
+inline Ray spawn_ray(const SurfaceHit& hit, vec3 direction) {
+  return {offset_ray_origin(hit.position, hit.position_error, hit.geometric_normal, direction), direction};
+}
+// A ray from `hit` towards `target`, ending just short of it (for shadow rays).
+inline Ray spawn_ray_to(const SurfaceHit& hit, vec3 target) {
+  vec3 direction = target - hit.position;
+  vec3 origin = offset_ray_origin(hit.position, hit.position_error, hit.geometric_normal, direction);
+  return {origin, target - origin, 1 - 1e-4f};
+}
+
+}  // namespace radiant

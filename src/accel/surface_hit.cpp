@@ -1,0 +1,87 @@
+// Turning an Embree hit into a SurfaceHit: position with its error bound, normals, attributes.
+#include <cmath>
+
+#include "accel/analytic_shapes.h"
+#include "accel/scene_accel.h"
+
+namespace radiant {
+
+namespace {
+
+template <class T>
+T interpolate(const std::vector<T>& values, const uint32_t* tri, float b0, float b1, float b2) {
+  return values[tri[0]] * b0 + values[tri[1]] * b1 + values[tri[2]] * b2;
+}
+vec4 interpolate4(const std::vector<vec4>& v, const uint32_t* tri, float b0, float b1, float b2) {
+  const vec4 &a = v[tri[0]], &b = v[tri[1]], &c = v[tri[2]];
+  return {a.x * b0 + b.x * b1 + c.x * b2, a.y * b0 + b.y * b1 + c.y * b2, a.z * b0 + b.z * b1 + c.z * b2,
+          a.w * b0 + b.w * b1 + c.w * b2};
+}
+
+vec3 abs_transform_vector(const mat4& m, vec3 v) {
+  mat4 a;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 4; ++c) a.m[r][c] = std::abs(m.m[r][c]);
+  return transform_vector(a, v);
+}
+
+void fill_triangle_hit(const SceneAccel& accel, const HitId& id, SurfaceHit& hit) {
+  const SceneDesc& scene = *accel.scene;
+  const InstanceDesc& instance = scene.instances[id.instance];
+  const MeshDesc& mesh = scene.meshes[instance.mesh];
+  const mat4& to_world = instance.transform;
+  const mat4& to_object = accel.instance_inverse[id.instance];
+  const uint32_t* tri = &mesh.indices[size_t(id.primitive) * 3];
+  float b1 = id.barycentric.x, b2 = id.barycentric.y, b0 = 1 - b1 - b2;
+  vec3 p0 = mesh.positions[tri[0]], p1 = mesh.positions[tri[1]], p2 = mesh.positions[tri[2]];
+
+  // Barycentric interpolation is far more accurate than origin + t * direction (pbrt 6.8.4).
+  vec3 object_point = b0 * p0 + b1 * p1 + b2 * p2;
+  vec3 object_error = rounding_gamma(7) * (abs(b0 * p0) + abs(b1 * p1) + abs(b2 * p2));
+  hit.position = transform_point(to_world, object_point);
+  vec3 translation = {to_world.m[0][3], to_world.m[1][3], to_world.m[2][3]};
+  hit.position_error = (1 + rounding_gamma(3)) * abs_transform_vector(to_world, object_error) +
+                       rounding_gamma(3) * (abs_transform_vector(to_world, abs(object_point)) + abs(translation));
+
+  // The inverse transpose keeps the authored front side even for mirroring transforms.
+  hit.geometric_normal = normalize(transform_normal(to_object, cross(p1 - p0, p2 - p0)));
+  hit.shading_normal = hit.geometric_normal;
+  if (!mesh.normals.empty()) {
+    vec3 n = normalize(transform_normal(to_object, interpolate(mesh.normals, tri, b0, b1, b2)));
+    if (is_finite(n) && length_squared(n) > 0.5f) {
+      // Interpolated normals live on the geometric normal's side.
+      hit.shading_normal = dot(n, hit.geometric_normal) < 0 ? -n : n;
+    }
+  }
+  if (!mesh.tangents.empty()) {
+    vec4 t = interpolate4(mesh.tangents, tri, b0, b1, b2);
+    vec3 world = transform_vector(to_world, {t.x, t.y, t.z});
+    hit.tangent = {world.x, world.y, world.z, mesh.tangents[tri[0]].w < 0 ? -1.0f : 1.0f};
+  }
+  if (!mesh.texcoords0.empty()) hit.attributes.uv[0] = interpolate(mesh.texcoords0, tri, b0, b1, b2);
+  if (!mesh.texcoords1.empty()) hit.attributes.uv[1] = interpolate(mesh.texcoords1, tri, b0, b1, b2);
+  if (!mesh.colors.empty()) hit.attributes.vertex_color = interpolate4(mesh.colors, tri, b0, b1, b2);
+  hit.material = mesh.material;
+}
+
+void fill_shape_hit(const SceneAccel& accel, const Ray& ray, const HitId& id, SurfaceHit& hit) {
+  const ShapeDesc& shape = accel.scene->shapes[id.shape];
+  vec3 normal = normalize(id.geometric_normal_raw);
+  refine_shape_point(shape, ray.origin + ray.direction * id.t, normal, hit.position, hit.position_error);
+  hit.geometric_normal = normal;
+  hit.shading_normal = normal;
+  hit.attributes.uv[0] = hit.attributes.uv[1] = id.barycentric;
+  hit.material = shape.material;
+}
+
+}  // namespace
+
+SurfaceHit make_surface_hit(const SceneAccel& accel, const Ray& ray, const HitId& id) {
+  SurfaceHit hit;
+  if (id.instance >= 0) fill_triangle_hit(accel, id, hit);
+  else fill_shape_hit(accel, ray, id, hit);
+  hit.front_face = dot(ray.direction, hit.geometric_normal) < 0;
+  return hit;
+}
+
+}  // namespace radiant

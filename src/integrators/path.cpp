@@ -1,0 +1,207 @@
+#include "integrators/path.h"
+
+#include <cmath>
+
+#include "integrators/background.h"
+#include "integrators/naive.h"
+#include "integrators/shading_frame.h"
+#include "integrators/shadow.h"
+#include "lights/area_light.h"
+#include "lights/delta_light.h"
+#include "lights/environment_light.h"
+#include "sampling/warp.h"
+
+namespace radiant {
+
+namespace {
+
+// Sample dimensions: 0-1 the pixel, then a fixed block per path vertex, so that switching an
+// effect off never shifts the random numbers the others use.
+constexpr uint32_t dimensions_per_vertex = 10;
+enum VertexDimension : uint32_t {
+  light_choice = 0, light_point = 1, lobe_choice = 3, bsdf_direction = 4, roulette = 6, alpha_choice = 7,
+  environment_choice = 8
+};
+constexpr uint32_t dimension(int depth, VertexDimension d) { return 2 + uint32_t(depth) * dimensions_per_vertex + d; }
+constexpr int roulette_start_depth = 3;
+
+// Emission of an area light at a sampled point (textured emission looked up from the mesh).
+template <uint32_t E>
+color3 area_light_emission(const RenderContext& ctx, const AreaLight& light, vec2 barycentric) {
+  const MaterialDesc& material = ctx.scene->materials[light.material];
+  if (!enabled<E>(ctx.effects, effect_textures) || !material.emission_texture.valid() || light.instance < 0)
+    return ctx.flat_materials[light.material].emission;
+  const MeshDesc& mesh = ctx.scene->meshes[ctx.scene->instances[light.instance].mesh];
+  SurfaceAttributes attributes;
+  const uint32_t* tri = &mesh.indices[size_t(light.primitive) * 3];
+  float b0 = 1 - barycentric.x - barycentric.y;
+  for (int set = 0; set < 2; ++set) {
+    const auto& uvs = set == 0 ? mesh.texcoords0 : mesh.texcoords1;
+    if (!uvs.empty()) attributes.uv[set] = uvs[tri[0]] * b0 + uvs[tri[1]] * barycentric.x + uvs[tri[2]] * barycentric.y;
+  }
+  return resolve_material(*ctx.scene, material, attributes).emission;
+}
+
+// Index in the light table of the area light that was hit, or -1.
+int hit_light_index(const LightTable& lights, const HitId& id) {
+  int area = -1;
+  if (id.instance >= 0 && !lights.instance_light_base.empty() && lights.instance_light_base[id.instance] >= 0)
+    area = lights.instance_light_base[id.instance] + int(id.primitive);
+  else if (id.shape >= 0 && !lights.shape_light.empty())
+    area = lights.shape_light[id.shape];
+  return area < 0 ? -1 : int(lights.delta_lights.size()) + area;
+}
+
+// One light sample with MIS against BSDF sampling (next-event estimation).
+template <uint32_t E>
+color3 sample_one_light(const RenderContext& ctx, const SurfaceHit& hit, const SurfaceMaterial& m,
+                        const ShadingFrame& f, const SampleContext& sample, int depth, RayCounts& counts) {
+  const LightTable& lights = *ctx.lights;
+  if (lights.selection.empty()) return {};
+  float u_choice = sample_1d(sample, dimension(depth, light_choice));
+  size_t index = sample_discrete(lights.selection, u_choice);
+  float select_pdf = lights.selection.pmf[index];
+  vec2 u = sample_2d(sample, dimension(depth, light_point));
+
+  if (index < lights.delta_lights.size()) {
+    if (!enabled<E>(ctx.effects, effect_direct_delta)) return {};
+    DeltaLightSample light;
+    if (!sample_delta_light(ctx.scene->lights[lights.delta_lights[index]], hit.position, light)) return {};
+    color3 f_cos = eval_bsdf(m, f.authored_normal, f.wo, light.direction);
+    if (is_black(f_cos)) return {};
+    color3 t = shadow_transmittance<E>(ctx, hit, light.direction, light.distance, false, counts);
+    return f_cos * light.irradiance * t / select_pdf;
+  }
+
+  vec3 wi;
+  float light_pdf;
+  color3 emitted;
+  float distance;
+  if (index < lights.environment_slot()) {
+    if (!enabled<E>(ctx.effects, effect_emission)) return {};
+    const AreaLight& light = lights.area_lights[index - lights.delta_lights.size()];
+    AreaLightSample s;
+    if (!sample_area_light(light, hit.position, u, s)) return {};
+    if (!area_light_emits(light, s.normal, -s.direction)) return {};
+    wi = s.direction;
+    light_pdf = s.pdf;
+    distance = s.distance * (1 - 1e-4f);
+    emitted = area_light_emission<E>(ctx, light, s.barycentric);
+  } else {
+    if (!enabled<E>(ctx.effects, effect_environment)) return {};
+    light_pdf = sample_environment(lights, sample_1d(sample, dimension(depth, environment_choice)), u, wi);
+    if (!(light_pdf > 0)) return {};
+    distance = std::numeric_limits<float>::infinity();
+    emitted = eval_environment(lights, wi);
+  }
+  if (is_black(emitted)) return {};
+  color3 f_cos = eval_bsdf(m, f.authored_normal, f.wo, wi);
+  if (is_black(f_cos)) return {};
+  color3 t = shadow_transmittance<E>(ctx, hit, wi, distance, false, counts);
+  if (is_black(t)) return {};
+  float pdf = select_pdf * light_pdf;
+  float weight = power_heuristic(pdf, sample_bsdf_pdf(m, f.authored_normal, f.wo, wi));
+  return f_cos * emitted * t * (weight / pdf);
+}
+
+template <uint32_t E, bool LightSampling>
+struct PathVariant {
+  static color3 run(const RenderContext& ctx, const Ray& camera_ray, const SampleContext& sample, RayCounts& counts,
+                    FirstHit* first_hit) {
+    const LightTable& lights = *ctx.lights;
+    color3 radiance, throughput = {1, 1, 1};
+    Ray ray = camera_ray;
+    bool specular_bounce = true;
+    float previous_pdf = 0;
+    vec3 previous_position;
+    int depth = 0, max_depth = ctx.max_depth;
+    counts.camera++;
+    for (int transparent_steps = 0; transparent_steps < 256;) {
+      HitId id = intersect_nearest(*ctx.accel, ray);
+      if (!id.valid()) {
+        if (enabled<E>(ctx.effects, effect_environment)) {
+          color3 background = eval_environment(lights, normalize(ray.direction));
+          float weight = 1;
+          if (LightSampling && !specular_bounce) {
+            float light_pdf = lights.selection.pmf[lights.environment_slot()] * environment_pdf(lights, normalize(ray.direction));
+            weight = power_heuristic(previous_pdf, light_pdf);
+          }
+          radiance += throughput * background * weight;
+        }
+        break;
+      }
+      SurfaceHit hit = make_surface_hit(*ctx.accel, ray, id);
+      SurfaceMaterial m = material_at<E>(ctx, hit);
+      if (enabled<E>(ctx.effects, effect_alpha) && m.opacity < 1 &&
+          sample_1d(sample, dimension(depth, alpha_choice) + 100 * transparent_steps) >= m.opacity) {
+        ray = spawn_ray(hit, ray.direction);  // see-through: the path goes on unchanged
+        ++transparent_steps;
+        continue;
+      }
+      ShadingFrame f = make_shading_frame<E>(ctx.effects, hit, m, ray.direction);
+      if (first_hit && depth == 0) *first_hit = {bsdf_albedo(m), f.normal, id.t * length(ray.direction)};
+
+      if (enabled<E>(ctx.effects, effect_emission) && !is_black(m.emission)) {
+        const MaterialDesc& authored = ctx.scene->materials[hit.material];
+        if (hit.front_face || authored.double_sided) {
+          float weight = 1;
+          int light_index = hit_light_index(lights, id);
+          if (LightSampling && !specular_bounce && light_index >= 0) {
+            const AreaLight& light = lights.area_lights[light_index - lights.delta_lights.size()];
+            float light_pdf = lights.selection.pmf[light_index] *
+                              area_light_pdf(light, previous_position, hit.position, hit.geometric_normal);
+            weight = power_heuristic(previous_pdf, light_pdf);
+          }
+          radiance += throughput * m.emission * weight;
+        }
+      }
+      if (m.unlit) {
+        radiance += throughput * m.base_color;
+        break;
+      }
+      // Vertex `depth` gathers light only below max_depth; the emission above completed the
+      // direct light of the previous vertex.
+      if (depth >= max_depth) break;
+      if (LightSampling && !is_pure_delta(m))
+        radiance += throughput * sample_one_light<E>(ctx, hit, m, f, sample, depth, counts);
+
+      auto bsdf = sample_bsdf(m, f.authored_normal, f.wo, sample_1d(sample, dimension(depth, lobe_choice)),
+                              sample_2d(sample, dimension(depth, bsdf_direction)));
+      if (!bsdf || is_black(bsdf->weight)) break;
+      // Without indirect light a diffuse or glossy bounce only completes this vertex's direct light.
+      if (!bsdf->delta && !enabled<E>(ctx.effects, effect_indirect)) max_depth = std::min(max_depth, depth + 1);
+      if (bsdf->delta) {
+        bool refracted = bsdf->transmitted;
+        if (refracted && !enabled<E>(ctx.effects, effect_refraction)) break;
+        if (!refracted && !enabled<E>(ctx.effects, effect_reflection)) break;
+        refracted ? counts.refraction++ : counts.reflection++;
+      } else {
+        counts.indirect++;
+      }
+      throughput *= bsdf->weight;
+      specular_bounce = bsdf->delta;
+      previous_pdf = bsdf->pdf;
+      previous_position = hit.position;
+      ray = spawn_ray(hit, bsdf->wi);
+      ++depth;
+      if (depth >= roulette_start_depth) {
+        float survive = std::min(1.0f, max_component(throughput));
+        if (sample_1d(sample, dimension(depth, roulette)) >= survive) break;
+        throughput /= survive;
+      }
+    }
+    return radiance;
+  }
+};
+
+template <uint32_t E>
+using PathWithLightSampling = PathVariant<E, true>;
+template <uint32_t E>
+using PathWithoutLightSampling = PathVariant<E, false>;
+
+}  // namespace
+
+RadianceFunction select_path(uint32_t effects) { return select_variant<PathWithLightSampling>(effects); }
+RadianceFunction select_naive(uint32_t effects) { return select_variant<PathWithoutLightSampling>(effects); }
+
+}  // namespace radiant

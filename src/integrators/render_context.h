@@ -1,0 +1,60 @@
+// What every integrator reads while tracing: the scene, its acceleration structure, the lights,
+// resolved settings, and per-thread ray counters.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "accel/scene_accel.h"
+#include "integrators/effect_variants.h"
+#include "lights/light_table.h"
+#include "materials/surface.h"
+#include "sampling/sampler.h"
+#include "scene/effects.h"
+#include "scene/scene_desc.h"
+
+namespace radiant {
+
+struct RayCounts {
+  uint64_t camera = 0, shadow = 0, reflection = 0, refraction = 0, indirect = 0;
+  uint64_t nonfinite_samples = 0;
+  uint64_t total() const { return camera + shadow + reflection + refraction + indirect; }
+  RayCounts& operator+=(const RayCounts& o) {
+    camera += o.camera, shadow += o.shadow, reflection += o.reflection, refraction += o.refraction;
+    indirect += o.indirect, nonfinite_samples += o.nonfinite_samples;
+    return *this;
+  }
+};
+
+// First-hit values for the albedo, normal and depth AOVs.
+struct FirstHit {
+  color3 albedo;
+  vec3 normal;
+  float depth = 0;
+};
+
+struct RenderContext {
+  const SceneDesc* scene = nullptr;
+  const SceneAccel* accel = nullptr;
+  const LightTable* lights = nullptr;
+  color3 ambient;                              // sum of the ambient lights
+  std::vector<SurfaceMaterial> flat_materials; // each material resolved once, for untextured renders
+  uint32_t effects = effect_all;
+  int max_depth = 8;
+  float contribution_cutoff = 0.001f;
+};
+
+// Radiance along a camera ray for one sample; `first_hit` (optional) receives AOV values.
+using RadianceFunction = color3 (*)(const RenderContext& ctx, const Ray& ray, const SampleContext& sample,
+                                    RayCounts& counts, FirstHit* first_hit);
+
+// The material at a hit: resolved per hit when textures are on, looked up once otherwise.
+template <uint32_t E>
+SurfaceMaterial material_at(const RenderContext& ctx, const SurfaceHit& hit) {
+  if (enabled<E>(ctx.effects, effect_textures))
+    return resolve_material(*ctx.scene, ctx.scene->materials[hit.material], hit.attributes);
+  else
+    return ctx.flat_materials[hit.material];
+}
+
+}  // namespace radiant

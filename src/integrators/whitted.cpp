@@ -1,0 +1,102 @@
+#include "integrators/whitted.h"
+
+#include <cmath>
+
+#include "integrators/background.h"
+#include "integrators/shading_frame.h"
+#include "integrators/shadow.h"
+#include "lights/delta_light.h"
+
+namespace radiant {
+
+namespace {
+
+enum class RayKind { camera, reflection, refraction };
+
+template <uint32_t E>
+color3 direct_phong(const RenderContext& ctx, const SurfaceHit& hit, const SurfaceMaterial& m,
+                    const ShadingFrame& f, RayCounts& counts) {
+  color3 sum;
+  if (enabled<E>(ctx.effects, effect_direct_delta)) {
+    for (int index : ctx.lights->delta_lights) {
+      DeltaLightSample light;
+      if (!sample_delta_light(ctx.scene->lights[index], hit.position, light)) continue;
+      float cos_theta = dot(f.normal, light.direction);
+      // Light and viewer must be on the same side of the surface.
+      if (cos_theta <= 0 || dot(f.geometric_normal, light.direction) <= 0) continue;
+      float highlight = 0;
+      if (!is_black(m.ks)) highlight = std::pow(std::max(0.0f, dot(reflect(light.direction, f.normal), f.wo)), m.shininess);
+      color3 response = m.kd * cos_theta + m.ks * highlight;
+      if (is_black(response)) continue;
+      color3 transmittance = shadow_transmittance<E>(ctx, hit, light.direction, light.distance, true, counts);
+      sum += transmittance * light.irradiance * response * inv_pi;
+    }
+  }
+  return sum;
+}
+
+template <uint32_t E>
+color3 trace(const RenderContext& ctx, const Ray& ray, int depth, color3 weight, RayKind kind,
+             RayCounts& counts, FirstHit* first_hit) {
+  switch (kind) {
+    case RayKind::camera: counts.camera++; break;
+    case RayKind::reflection: counts.reflection++; break;
+    case RayKind::refraction: counts.refraction++; break;
+  }
+  HitId id = intersect_nearest(*ctx.accel, ray);
+  if (!id.valid()) return background_radiance<E>(ctx, ray.direction);
+  SurfaceHit hit = make_surface_hit(*ctx.accel, ray, id);
+  SurfaceMaterial m = material_at<E>(ctx, hit);
+  ShadingFrame f = make_shading_frame<E>(ctx.effects, hit, m, ray.direction);
+  if (first_hit) *first_hit = {bsdf_albedo(m), f.normal, id.t * length(ray.direction)};
+
+  color3 radiance;
+  if (enabled<E>(ctx.effects, effect_emission)) radiance += m.emission;
+  if (m.unlit) return m.base_color;
+  if (enabled<E>(ctx.effects, effect_ambient)) radiance += m.ka * ctx.ambient;
+  radiance += direct_phong<E>(ctx, hit, m, f, counts);
+
+  if (depth + 1 >= ctx.max_depth) return radiance;
+  color3 reflected_weight = m.kr;
+  if (enabled<E>(ctx.effects, effect_refraction)) {
+    if (!is_black(m.kt)) {
+      float eta = f.entering ? m.ior : 1 / m.ior;
+      vec3 transmitted;
+      if (refract(f.wo, f.normal, eta, transmitted)) {
+        color3 w = weight * m.kt;
+        if (max_component(w) >= ctx.contribution_cutoff)
+          radiance += m.kt * trace<E>(ctx, spawn_ray(hit, transmitted), depth + 1, w, RayKind::refraction, counts, nullptr);
+      } else {
+        reflected_weight += m.kt;  // total internal reflection: the transmitted share reflects
+      }
+    }
+  }
+  if (enabled<E>(ctx.effects, effect_reflection)) {
+    color3 w = weight * reflected_weight;
+    if (!is_black(reflected_weight) && max_component(w) >= ctx.contribution_cutoff)
+      radiance += reflected_weight * trace<E>(ctx, spawn_ray(hit, reflect(f.wo, f.normal)), depth + 1, w,
+                                              RayKind::reflection, counts, nullptr);
+  }
+  if (enabled<E>(ctx.effects, effect_alpha)) {
+    if (m.opacity < 1) {
+      Ray through = spawn_ray(hit, ray.direction);
+      radiance = radiance * m.opacity +
+                 (1 - m.opacity) * trace<E>(ctx, through, depth, weight * (1 - m.opacity), kind, counts, nullptr);
+    }
+  }
+  return radiance;
+}
+
+template <uint32_t E>
+struct WhittedVariant {
+  static color3 run(const RenderContext& ctx, const Ray& ray, const SampleContext&, RayCounts& counts,
+                    FirstHit* first_hit) {
+    return trace<E>(ctx, ray, 0, {1, 1, 1}, RayKind::camera, counts, first_hit);
+  }
+};
+
+}  // namespace
+
+RadianceFunction select_whitted(uint32_t effects) { return select_variant<WhittedVariant>(effects); }
+
+}  // namespace radiant

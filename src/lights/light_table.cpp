@@ -1,0 +1,165 @@
+#include "lights/light_table.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "accel/analytic_shapes.h"
+
+namespace radiant {
+
+namespace {
+
+void scene_bounding_sphere(const SceneDesc& scene, vec3& center, float& radius) {
+  constexpr float inf = std::numeric_limits<float>::infinity();
+  vec3 lower = {inf, inf, inf}, upper = -lower;
+  for (const InstanceDesc& instance : scene.instances)
+    for (vec3 p : scene.meshes[instance.mesh].positions) {
+      vec3 w = transform_point(instance.transform, p);
+      lower = min(lower, w);
+      upper = max(upper, w);
+    }
+  for (const ShapeDesc& s : scene.shapes) {
+    if (s.kind == ShapeKind::plane || s.kind == ShapeKind::tube) continue;
+    vec3 lo, hi;
+    shape_bounds(s, 0, lo, hi);
+    lower = min(lower, lo);
+    upper = max(upper, hi);
+  }
+  if (!(lower.x <= upper.x)) {
+    center = {0, 0, 0};
+    radius = 1;
+    return;
+  }
+  center = (lower + upper) * 0.5f;
+  radius = std::max(length(upper - lower) * 0.5f, 1e-3f);
+}
+
+void add_emissive_triangles(const SceneDesc& scene, LightTable& table) {
+  table.instance_light_base.assign(scene.instances.size(), -1);
+  for (size_t i = 0; i < scene.instances.size(); ++i) {
+    const InstanceDesc& instance = scene.instances[i];
+    const MeshDesc& mesh = scene.meshes[instance.mesh];
+    if (mesh.material < 0 || is_black(scene.materials[mesh.material].emission)) continue;
+    table.instance_light_base[i] = int(table.area_lights.size());
+    mat4 inverse;
+    inverse_affine(instance.transform, inverse);
+    for (size_t t = 0; t < mesh.triangle_count(); ++t) {
+      AreaLight light;
+      light.p0 = transform_point(instance.transform, mesh.positions[mesh.indices[3 * t]]);
+      light.p1 = transform_point(instance.transform, mesh.positions[mesh.indices[3 * t + 1]]);
+      light.p2 = transform_point(instance.transform, mesh.positions[mesh.indices[3 * t + 2]]);
+      vec3 object_normal = cross(mesh.positions[mesh.indices[3 * t + 1]] - mesh.positions[mesh.indices[3 * t]],
+                                 mesh.positions[mesh.indices[3 * t + 2]] - mesh.positions[mesh.indices[3 * t]]);
+      light.normal = normalize(transform_normal(inverse, object_normal));
+      light.area = 0.5f * length(cross(light.p1 - light.p0, light.p2 - light.p0));
+      light.material = mesh.material;
+      light.two_sided = scene.materials[mesh.material].double_sided;
+      light.instance = int(i);
+      light.primitive = uint32_t(t);
+      table.area_lights.push_back(light);
+    }
+  }
+}
+
+void add_emissive_spheres(const SceneDesc& scene, LightTable& table) {
+  table.shape_light.assign(scene.shapes.size(), -1);
+  for (size_t s = 0; s < scene.shapes.size(); ++s) {
+    const ShapeDesc& shape = scene.shapes[s];
+    if (shape.kind != ShapeKind::sphere || shape.material < 0 || is_black(scene.materials[shape.material].emission))
+      continue;
+    AreaLight light;
+    light.shape = AreaLightShape::sphere;
+    light.center = shape.center;
+    light.radius = shape.radius;
+    light.area = 4 * pi * shape.radius * shape.radius;
+    light.material = shape.material;
+    light.shape_index = int(s);
+    table.shape_light[s] = int(table.area_lights.size());
+    table.area_lights.push_back(light);
+  }
+}
+
+EnvironmentMap load_environment_map(const std::string& path) {
+  auto input = OIIO::ImageInput::open(path);
+  if (!input) throw std::runtime_error(path + ": cannot read environment map: " + OIIO::geterror());
+  const OIIO::ImageSpec& spec = input->spec();
+  if (spec.width <= 0 || spec.height <= 0 || size_t(spec.width) * spec.height > (size_t(1) << 28))
+    throw std::runtime_error(path + ": environment map has an unusable size");
+  std::vector<float> pixels(size_t(spec.width) * spec.height * spec.nchannels);
+  if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()))
+    throw std::runtime_error(path + ": cannot read environment map: " + input->geterror());
+  EnvironmentMap map;
+  map.width = spec.width;
+  map.height = spec.height;
+  map.texels.resize(size_t(map.width) * map.height);
+  std::vector<float> weights(map.texels.size());
+  for (int y = 0; y < map.height; ++y) {
+    float sin_theta = std::sin(pi * (float(y) + 0.5f) / float(map.height));
+    for (int x = 0; x < map.width; ++x) {
+      size_t i = size_t(y) * map.width + x;
+      const float* p = &pixels[i * spec.nchannels];
+      color3 c = spec.nchannels >= 3 ? color3{p[0], p[1], p[2]} : color3{p[0], p[0], p[0]};
+      if (!is_finite(c)) c = {0, 0, 0};
+      map.texels[i] = max(c, color3{0, 0, 0});
+      weights[i] = luminance(map.texels[i]) * sin_theta;
+    }
+  }
+  map.distribution = make_distribution_2d(weights, map.width, map.height);
+  return map;
+}
+
+}  // namespace
+
+LightTable make_light_table(const SceneDesc& scene, color3 environment_color, const std::string& environment_map_path,
+                            bool use_area_lights) {
+  LightTable table;
+  scene_bounding_sphere(scene, table.scene_center, table.scene_radius);
+  for (size_t i = 0; i < scene.lights.size(); ++i)
+    if (scene.lights[i].kind != LightKind::ambient) table.delta_lights.push_back(int(i));
+  if (use_area_lights) {
+    add_emissive_triangles(scene, table);
+    add_emissive_spheres(scene, table);
+  }
+  table.environment_color = environment_color;
+  if (!environment_map_path.empty()) table.environment_map = load_environment_map(environment_map_path);
+
+  // Selection weights: each light's emitted power (up to a common factor).
+  float disk = pi * table.scene_radius * table.scene_radius;
+  std::vector<float> weights;
+  for (int index : table.delta_lights) {
+    const LightDesc& l = scene.lights[index];
+    float power = luminance(l.intensity);
+    if (l.kind == LightKind::directional) weights.push_back(power * disk);
+    else weights.push_back(power * 4 * pi / std::max(l.kc + l.kl + l.kq, 1e-6f));
+  }
+  for (const AreaLight& l : table.area_lights)
+    weights.push_back(luminance(scene.materials[l.material].emission) * l.area * pi * (l.two_sided ? 2.0f : 1.0f));
+  if (table.has_environment()) {
+    float average = luminance(table.environment_color);
+    if (table.environment_map.width > 0)
+      average += table.environment_map.distribution.marginal.total /
+                 float(table.environment_map.width * table.environment_map.height) * pi / 2;
+    weights.push_back(std::max(average, 1e-6f) * disk * 4);
+  }
+  table.selection = make_distribution(weights);
+  return table;
+}
+
+color3 eval_environment(const LightTable& lights, vec3 d) {
+  color3 radiance = lights.environment_color;
+  const EnvironmentMap& map = lights.environment_map;
+  if (map.width > 0) {
+    // Equirectangular, +y up; u = 0.5 looks down -z.
+    float u = 0.5f + std::atan2(d.x, -d.z) / (2 * pi);
+    float v = std::acos(std::clamp(d.y, -1.0f, 1.0f)) / pi;
+    int x = std::clamp(int(u * map.width), 0, map.width - 1);
+    int y = std::clamp(int(v * map.height), 0, map.height - 1);
+    radiance += map.texels[size_t(y) * map.width + x] * lights.environment_scale;
+  }
+  return radiance;
+}
+
+}  // namespace radiant

@@ -1,0 +1,61 @@
+// Every light of a scene in the form the integrators sample: delta lights, emissive triangles
+// and spheres as area lights, and the environment, chosen in proportion to their power.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "math/vec.h"
+#include "sampling/distribution.h"
+#include "scene/scene_desc.h"
+
+namespace radiant {
+
+enum class AreaLightShape { triangle, sphere };
+
+struct AreaLight {
+  AreaLightShape shape = AreaLightShape::triangle;
+  vec3 p0, p1, p2;          // world-space triangle
+  vec3 center;              // sphere
+  float radius = 0;
+  vec3 normal;              // triangle front normal (unit)
+  float area = 0;
+  int material = -1;
+  bool two_sided = false;
+  int instance = -1, shape_index = -1;
+  uint32_t primitive = 0;
+};
+
+// An equirectangular environment map, importance-sampled by luminance.
+struct EnvironmentMap {
+  int width = 0, height = 0;
+  std::vector<color3> texels;      // linear radiance, top row first (+y up is the top)
+  Distribution2D distribution;     // over (u, v) in [0,1)^2, weighted by luminance * sin(theta)
+};
+
+struct LightTable {
+  std::vector<int> delta_lights;        // indices of point, spot and directional lights
+  std::vector<AreaLight> area_lights;
+  color3 environment_color;             // uniform part of the environment
+  EnvironmentMap environment_map;       // width 0 when there is none
+  float environment_scale = 1;
+  vec3 scene_center;                    // bounding sphere, for the power of infinite lights
+  float scene_radius = 1;
+
+  // Selection among [delta lights..., area lights..., environment] by power.
+  Distribution1D selection;
+  std::vector<int> instance_light_base;  // first area light of each instance's triangles, or -1
+  std::vector<int> shape_light;          // area light of each analytic shape, or -1
+  bool has_environment() const { return !is_black(environment_color) || environment_map.width > 0; }
+  size_t environment_slot() const { return delta_lights.size() + area_lights.size(); }
+};
+
+// Builds the table. `environment_color` and `environment_map_path` are the resolved background
+// (scene, then --env-color/--env). Throws std::runtime_error when the map cannot be read.
+LightTable make_light_table(const SceneDesc& scene, color3 environment_color, const std::string& environment_map_path,
+                            bool use_area_lights);
+
+// Environment radiance seen along unit direction `d`.
+color3 eval_environment(const LightTable& lights, vec3 d);
+
+}  // namespace radiant

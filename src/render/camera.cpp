@@ -1,0 +1,119 @@
+#include "render/camera.h"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "accel/analytic_shapes.h"
+
+namespace radiant {
+
+CameraFrame make_camera_frame(const CameraDesc& camera, int width, int height) {
+  CameraFrame f;
+  f.projection = camera.projection;
+  f.position = camera.position;
+  f.forward = normalize(camera.forward);
+  f.right = normalize(cross(f.forward, camera.up));
+  f.up = cross(f.right, f.forward);
+  f.width = width;
+  f.height = height;
+  float aspect = float(width) / float(height);
+  if (camera.projection == Projection::perspective)
+    f.half_height = std::tan(camera.vertical_fov_degrees * pi / 360.0f);
+  else
+    f.half_height = camera.ortho_height / 2;
+  f.half_width = f.half_height * aspect;
+  return f;
+}
+
+Ray generate_camera_ray(const CameraFrame& f, float x, float y) {
+  float sx = (2 * x / float(f.width) - 1) * f.half_width;
+  float sy = (1 - 2 * y / float(f.height)) * f.half_height;
+  if (f.projection == Projection::orthographic)
+    return {f.position + f.right * sx + f.up * sy, f.forward};
+  return {f.position, normalize(f.forward + f.right * sx + f.up * sy)};
+}
+
+namespace {
+
+void grow(vec3& lower, vec3& upper, vec3 p) {
+  lower = min(lower, p);
+  upper = max(upper, p);
+}
+
+}  // namespace
+
+CameraDesc make_framing_camera(const SceneDesc& scene) {
+  constexpr float inf = std::numeric_limits<float>::infinity();
+  vec3 lower = {inf, inf, inf}, upper = -lower;
+  for (const InstanceDesc& instance : scene.instances)
+    for (vec3 p : scene.meshes[instance.mesh].positions) grow(lower, upper, transform_point(instance.transform, p));
+  for (const ShapeDesc& s : scene.shapes) {
+    if (s.kind == ShapeKind::plane || s.kind == ShapeKind::tube) {
+      grow(lower, upper, s.center);  // infinite: frame only a point on it
+      continue;
+    }
+    vec3 lo, hi;
+    shape_bounds(s, 0, lo, hi);
+    grow(lower, upper, lo);
+    grow(lower, upper, hi);
+  }
+  CameraDesc camera;
+  camera.name = "framing";
+  if (!(lower.x <= upper.x)) return camera;
+  vec3 center = (lower + upper) * 0.5f;
+  float radius = std::max(length(upper - lower) * 0.5f, 1e-6f);
+  camera.vertical_fov_degrees = 40;
+  float distance = radius / std::sin(camera.vertical_fov_degrees * pi / 360.0f);
+  // Slightly above and in front (+z, the glTF front), looking at the centre.
+  vec3 direction = normalize(vec3{0, 0.25f, 1});
+  camera.position = center + direction * distance;
+  camera.forward = -direction;
+  camera.up = normalize(cross(cross(camera.forward, vec3{0, 1, 0}), camera.forward));
+  return camera;
+}
+
+void apply_camera_override(CameraDesc& camera, const CameraOverride& o) {
+  if (o.look_from) camera.position = *o.look_from;
+  if (o.look_at) {
+    vec3 d = *o.look_at - camera.position;
+    if (length(d) == 0 || !is_finite(d)) throw std::invalid_argument("--look-at equals the camera position");
+    camera.forward = normalize(d);
+  }
+  vec3 up = o.up ? *o.up : camera.up;
+  if (o.fov_degrees) {
+    if (!(*o.fov_degrees > 0 && *o.fov_degrees < 180)) throw std::invalid_argument("--fov must be in (0, 180) degrees");
+    camera.vertical_fov_degrees = *o.fov_degrees;
+    camera.projection = Projection::perspective;
+  }
+  vec3 right = cross(camera.forward, up);
+  if (length(right) < 1e-6f * length(up)) {
+    if (o.up) throw std::invalid_argument("--up is parallel to the view direction");
+    // Keep the authored up's intent when only the direction changed: fall back to +z or +x.
+    up = std::abs(camera.forward.y) < 0.999f ? vec3{0, 1, 0} : vec3{0, 0, -1};
+    right = cross(camera.forward, up);
+  }
+  camera.up = normalize(cross(normalize(right), camera.forward));
+}
+
+CameraDesc select_camera(const SceneDesc& scene, const std::string& which, bool& framed) {
+  framed = false;
+  if (which.empty()) {
+    if (!scene.cameras.empty()) return scene.cameras.front();
+    framed = true;
+    return make_framing_camera(scene);
+  }
+  for (const CameraDesc& c : scene.cameras)
+    if (c.name == which) return c;
+  bool numeric = !which.empty() && which.find_first_not_of("0123456789") == std::string::npos;
+  if (numeric) {
+    size_t index = std::stoul(which);
+    if (index < scene.cameras.size()) return scene.cameras[index];
+  }
+  std::string known;
+  for (size_t i = 0; i < scene.cameras.size(); ++i)
+    known += (i ? ", " : "") + std::to_string(i) + (scene.cameras[i].name.empty() ? "" : " '" + scene.cameras[i].name + "'");
+  throw std::invalid_argument("no camera '" + which + "' in the scene (cameras: " + (known.empty() ? "none" : known) + ")");
+}
+
+}  // namespace radiant

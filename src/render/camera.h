@@ -1,0 +1,31 @@
+// Camera rays: from a CameraDesc and an image size to one ray per film position.
+#pragma once
+
+#include "accel/ray.h"
+#include "render/render_options.h"
+#include "scene/scene_desc.h"
+
+namespace radiant {
+
+struct CameraFrame {
+  Projection projection = Projection::perspective;
+  vec3 position, forward, right, up;
+  float half_width = 1, half_height = 1;  // tan(half fov) for perspective, world units for ortho
+  int width = 0, height = 0;
+};
+
+CameraFrame make_camera_frame(const CameraDesc& camera, int width, int height);
+
+// Ray through film position (x, y) in pixels, (0, 0) the top-left corner of the image.
+Ray generate_camera_ray(const CameraFrame& frame, float x, float y);
+
+// A camera that frames the bounds of everything in the scene (used when the file has none).
+CameraDesc make_framing_camera(const SceneDesc& scene);
+
+// Applies --look-from/--look-at/--up/--fov; throws std::invalid_argument on a degenerate view.
+void apply_camera_override(CameraDesc& camera, const CameraOverride& override_);
+
+// Picks the camera by name or index ("" = first); throws std::invalid_argument when not found.
+CameraDesc select_camera(const SceneDesc& scene, const std::string& which, bool& framed);
+
+}  // namespace radiant

@@ -1,0 +1,236 @@
+#include "render/render.h"
+
+#include <tbb/blocked_range2d.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <mutex>
+
+#include "integrators/naive.h"
+#include "integrators/path.h"
+#include "integrators/whitted.h"
+#include "render/camera.h"
+
+namespace radiant {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+RenderContext make_context(const PreparedScene& prepared, const ResolvedSettings& s, const LightTable& lights,
+                           const RenderOptions& options) {
+  const SceneDesc& scene = *prepared.scene;
+  RenderContext ctx;
+  ctx.scene = &scene;
+  ctx.accel = prepared.accel.get();
+  ctx.lights = &lights;
+  for (const LightDesc& l : scene.lights)
+    if (l.kind == LightKind::ambient) ctx.ambient += l.intensity;
+  ctx.flat_materials.reserve(scene.materials.size());
+  for (const MaterialDesc& m : scene.materials) ctx.flat_materials.push_back(resolve_material(scene, m, {}));
+  ctx.effects = s.effects;
+  ctx.max_depth = s.max_depth;
+  ctx.contribution_cutoff = options.contribution_cutoff;
+  return ctx;
+}
+
+RadianceFunction select_integrator(const ResolvedSettings& s) {
+  switch (s.mode) {
+    case RenderMode::whitted: return select_whitted(s.compiled_variant);
+    case RenderMode::naive: return select_naive(s.compiled_variant);
+    case RenderMode::path:
+    case RenderMode::auto_select: break;
+  }
+  return select_path(s.compiled_variant);
+}
+
+// Relative standard error of a pixel's mean luminance (0 for black, converged pixels).
+float pixel_relative_error(const FilmPixel& p) {
+  if (p.samples < 2) return std::numeric_limits<float>::infinity();
+  color3 mean = pixel_mean(p), variance = pixel_mean_variance(p);
+  float l = luminance(mean);
+  float sigma = std::sqrt(std::max(0.0f, luminance(variance)));
+  return sigma / std::max(l, 1e-3f);
+}
+
+struct PassRunner {
+  const RenderContext& ctx;
+  const ResolvedSettings& s;
+  RadianceFunction radiance;
+  CameraFrame frame;
+  bool want_aovs;
+  uint32_t seed;
+  Film& film;
+  tbb::enumerable_thread_specific<RayCounts>& counts;
+
+  void render_pixel(int x, int y, uint32_t first, uint32_t end) const {
+    FilmPixel& p = film.at(x - s.window.x0, y - s.window.y0);
+    RayCounts& c = counts.local();
+    for (uint32_t index = first; index < end; ++index) {
+      SampleContext sample{s.sampler, uint32_t(y) * uint32_t(s.width) + uint32_t(x), index, uint32_t(s.spp), seed};
+      vec2 offset = sample_pixel(sample);
+      Ray ray = generate_camera_ray(frame, float(x) + offset.x, float(y) + offset.y);
+      FirstHit first_hit;
+      color3 value = radiance(ctx, ray, sample, c, want_aovs ? &first_hit : nullptr);
+      if (!is_finite(value)) {
+        c.nonfinite_samples++;  // dropped: never reaches the film
+        continue;
+      }
+      add_sample(p, value);
+      if (want_aovs) {
+        for (int k = 0; k < 3; ++k) {
+          p.albedo[k] += first_hit.albedo[k];
+          p.normal[k] += first_hit.normal[k];
+        }
+        p.depth += first_hit.depth;
+      }
+    }
+  }
+
+  // Adds samples [first, end) to every pixel still active.
+  void run(uint32_t first, uint32_t end, const std::vector<uint8_t>& active) const {
+    const PixelWindow& w = s.window;
+    tbb::parallel_for(tbb::blocked_range2d<int>(w.y0, w.y1, 8, w.x0, w.x1, 8), [&](const tbb::blocked_range2d<int>& r) {
+      for (int y = r.rows().begin(); y < r.rows().end(); ++y)
+        for (int x = r.cols().begin(); x < r.cols().end(); ++x)
+          if (active.empty() || active[size_t(y - w.y0) * film.width + (x - w.x0)]) render_pixel(x, y, first, end);
+    });
+  }
+};
+
+void print_progress(double fraction, double elapsed) {
+  double eta = fraction > 0 ? elapsed * (1 - fraction) / fraction : 0;
+  std::fprintf(stderr, "\rrendering %3d%%  ETA %5.1fs ", int(fraction * 100), eta);
+  std::fflush(stderr);
+}
+
+}  // namespace
+
+PreparedScene prepare_scene(const SceneDesc& scene) {
+  PreparedScene prepared;
+  prepared.scene = &scene;
+  auto start = Clock::now();
+  prepared.accel = build_scene_accel(scene);
+  prepared.build_seconds = seconds_since(start);
+  prepared.effects = analyze_effects(scene);
+  return prepared;
+}
+
+RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions& options) {
+  RenderResult result;
+  ResolvedSettings& s = result.settings;
+  s = resolve_settings(prepared, options);
+  bool path_like = s.mode != RenderMode::whitted;
+  LightTable lights = make_light_table(*prepared.scene, s.environment_color, s.environment_map, path_like);
+  lights.environment_scale = prepared.scene->environment.map_scale;
+  RenderContext ctx = make_context(prepared, s, lights, options);
+
+  result.film = make_film(s.window.x1 - s.window.x0, s.window.y1 - s.window.y0);
+  tbb::enumerable_thread_specific<RayCounts> counts;
+  PassRunner runner{ctx, s, select_integrator(s), make_camera_frame(s.camera, s.width, s.height),
+                    !options.aovs.empty(), options.seed, result.film, counts};
+
+  int threads = options.threads > 0 ? options.threads : tbb::this_task_arena::max_concurrency();
+  tbb::task_arena arena(threads);
+  auto start = Clock::now();
+  std::vector<uint8_t> active;
+  uint32_t done = 0, total = uint32_t(s.spp);
+  bool adaptive = options.noise_threshold > 0, timed = options.time_limit_seconds > 0;
+  // One pass for a plain render; growing passes when a budget or a noise target may stop early.
+  uint32_t pass = (adaptive || timed) ? std::min<uint32_t>(total, adaptive ? 8u : 1u) : total;
+  while (done < total) {
+    uint32_t end = std::min(total, done + pass);
+    arena.execute([&] { runner.run(done, end, active); });
+    done = end;
+    result.stats.passes++;
+    if (options.progress && !options.quiet) print_progress(double(done) / total, seconds_since(start));
+    if (adaptive) {
+      active.assign(result.film.pixels.size(), 0);
+      size_t remaining = 0;
+      for (size_t i = 0; i < result.film.pixels.size(); ++i)
+        remaining += active[i] = pixel_relative_error(result.film.pixels[i]) > options.noise_threshold;
+      if (remaining == 0) break;
+    }
+    if (timed) {
+      double elapsed = options.deadline ? std::chrono::duration<double>(*options.deadline - Clock::now()).count()
+                                        : options.time_limit_seconds - seconds_since(start);
+      double per_sample = seconds_since(start) / done;
+      uint32_t next = std::max<uint32_t>(1, pass * 2);
+      if (elapsed <= per_sample * next * 1.1) {
+        next = uint32_t(std::max(0.0, elapsed / (per_sample * 1.1)));
+        if (next == 0) {
+          result.stats.stopped_by_time_limit = done < total;
+          break;
+        }
+      }
+      pass = next;
+    } else if (adaptive) {
+      pass = std::min<uint32_t>(pass * 2, 64);
+    }
+  }
+  if (options.progress && !options.quiet) std::fprintf(stderr, "\r%40s\r", "");
+  result.stats.render_seconds = seconds_since(start);
+  result.stats.build_seconds = prepared.build_seconds;
+  for (const RayCounts& c : counts) result.stats.rays += c;
+
+  uint32_t min_samples = UINT32_MAX, max_samples = 0;
+  double error_sum = 0;
+  size_t error_count = 0;
+  for (const FilmPixel& p : result.film.pixels) {
+    min_samples = std::min(min_samples, p.samples);
+    max_samples = std::max(max_samples, p.samples);
+    result.stats.samples += p.samples;
+    float e = pixel_relative_error(p);
+    if (std::isfinite(e)) error_sum += e, ++error_count;
+  }
+  result.stats.min_pixel_samples = min_samples == UINT32_MAX ? 0 : min_samples;
+  result.stats.max_pixel_samples = max_samples;
+  result.stats.estimated_relative_error = error_count ? float(error_sum / error_count) : 0.0f;
+  return result;
+}
+
+OutputImage film_to_image(const Film& film, const std::vector<std::string>& aovs, const PixelWindow&) {
+  OutputImage image;
+  image.width = film.width;
+  image.height = film.height;
+  image.channels = {"R", "G", "B"};
+  for (const std::string& aov : aovs) {
+    if (aov == "albedo") image.channels.insert(image.channels.end(), {"albedo.R", "albedo.G", "albedo.B"});
+    else if (aov == "normal") image.channels.insert(image.channels.end(), {"N.X", "N.Y", "N.Z"});
+    else if (aov == "depth") image.channels.push_back("Z");
+    else if (aov == "variance") image.channels.insert(image.channels.end(), {"variance.R", "variance.G", "variance.B"});
+    else if (aov == "spp") image.channels.push_back("spp");
+  }
+  size_t stride = image.channels.size();
+  image.pixels.resize(size_t(film.width) * film.height * stride);
+  for (size_t i = 0; i < film.pixels.size(); ++i) {
+    const FilmPixel& p = film.pixels[i];
+    float* out = &image.pixels[i * stride];
+    color3 mean = pixel_mean(p);
+    *out++ = mean.x, *out++ = mean.y, *out++ = mean.z;
+    float n = p.samples ? float(p.samples) : 1.0f;
+    for (const std::string& aov : aovs) {
+      if (aov == "albedo") for (int k = 0; k < 3; ++k) *out++ = p.albedo[k] / n;
+      else if (aov == "normal") {
+        vec3 normal = normalize(vec3{p.normal[0], p.normal[1], p.normal[2]});
+        *out++ = normal.x, *out++ = normal.y, *out++ = normal.z;
+      } else if (aov == "depth") *out++ = p.depth / n;
+      else if (aov == "variance") {
+        color3 v = pixel_mean_variance(p);
+        *out++ = v.x, *out++ = v.y, *out++ = v.z;
+      } else if (aov == "spp") *out++ = float(p.samples);
+    }
+  }
+  return image;
+}
+
+}  // namespace radiant

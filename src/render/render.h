@@ -1,0 +1,66 @@
+// Rendering a loaded scene: settings resolution, the tile loop, statistics.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "accel/scene_accel.h"
+#include "film/film.h"
+#include "image/image_writer.h"
+#include "integrators/render_context.h"
+#include "render/render_options.h"
+
+namespace radiant {
+
+// Derived state built once per scene and reused for every view (`radiant batch`).
+struct PreparedScene {
+  const SceneDesc* scene = nullptr;
+  std::unique_ptr<SceneAccel> accel;
+  EffectSet effects;
+  double build_seconds = 0;
+};
+PreparedScene prepare_scene(const SceneDesc& scene);
+
+// Settings after combining flags, the scene file's settings and the defaults.
+struct ResolvedSettings {
+  int width = 0, height = 0, spp = 1, max_depth = 1;
+  RenderMode mode = RenderMode::path;
+  std::string mode_reason;  // why auto picked the mode ("" when given)
+  SamplerKind sampler = SamplerKind::jittered;
+  CameraDesc camera;
+  bool camera_framed = false;  // no camera in the file: one frames the scene
+  color3 environment_color;
+  std::string environment_map;
+  uint32_t effects = 0;          // what runs: the scene's effects after --effects
+  uint32_t compiled_variant = 0; // the compiled effect set that runs them
+  PixelWindow window;
+};
+
+// Throws std::invalid_argument for settings that make no sense (names the flag).
+ResolvedSettings resolve_settings(const PreparedScene& prepared, const RenderOptions& options);
+
+// auto mode's rule (docs/effects.md): Whitted when it gives the path tracer's converged answer.
+RenderMode choose_auto_mode(const SceneDesc& scene, std::string& reason);
+
+struct RenderStats {
+  double build_seconds = 0, render_seconds = 0;
+  RayCounts rays;
+  uint64_t samples = 0;
+  int passes = 0;
+  uint32_t min_pixel_samples = 0, max_pixel_samples = 0;
+  float estimated_relative_error = 0;  // mean over pixels of the relative standard error
+  bool stopped_by_time_limit = false;
+};
+
+struct RenderResult {
+  ResolvedSettings settings;
+  Film film;
+  RenderStats stats;
+};
+
+RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions& options);
+
+// The film as an image with the requested AOV channels (crop applied when set).
+OutputImage film_to_image(const Film& film, const std::vector<std::string>& aovs, const PixelWindow& window);
+
+}  // namespace radiant

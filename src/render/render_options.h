@@ -1,0 +1,54 @@
+// The single options struct that carries every knob from the command line to the core.
+// Unset optionals fall back to the scene file's settings, then to the defaults of the mode.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "math/vec.h"
+#include "scene/scene_desc.h"
+
+namespace radiant {
+
+struct CameraOverride {
+  std::optional<vec3> look_from, look_at, up;
+  std::optional<float> fov_degrees;
+};
+
+struct PixelWindow {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // half-open [x0, x1) x [y0, y1)
+};
+
+struct RenderOptions {
+  std::optional<int> width, height, spp, max_depth;
+  std::optional<RenderMode> mode;
+  std::optional<SamplerKind> sampler;
+  int threads = 0;  // 0 = all cores
+  uint32_t seed = 0;
+  std::string camera;  // name or index; empty = the first
+  CameraOverride camera_override;
+  std::optional<color3> env_color;
+  std::string env_map;
+  std::optional<PixelWindow> crop;
+  std::string effects;          // --effects list, applied to the scene's effect set
+  std::vector<std::string> aovs;  // albedo, normal, depth, variance, spp
+  double time_limit_seconds = 0;  // 0 = none
+  // When set, the time limit ends here (the CLI starts it before loading the scene).
+  std::optional<std::chrono::steady_clock::time_point> deadline;
+  float noise_threshold = 0;      // 0 = off
+  float contribution_cutoff = 0.001f;  // Whitted: stop recursing below this weight
+  bool quiet = false;
+  bool progress = false;  // print progress to stderr (the CLI sets it when stderr is a terminal)
+};
+
+// Default samples per pixel and depth of each mode.
+constexpr int default_whitted_spp = 4;
+constexpr int default_path_spp = 64;
+constexpr int default_whitted_max_depth = 10;
+constexpr int default_path_max_depth = 8;
+constexpr int default_image_size = 512;
+
+}  // namespace radiant

@@ -1,0 +1,72 @@
+// Combining command-line options, the scene file's settings and the defaults.
+#include <cmath>
+#include <stdexcept>
+
+#include "render/camera.h"
+#include "render/render.h"
+
+namespace radiant {
+
+namespace {
+
+void resolve_size(const RenderOptions& options, const SceneDesc& scene, ResolvedSettings& r) {
+  std::optional<int> width = options.width ? options.width : scene.settings.width;
+  std::optional<int> height = options.height ? options.height : scene.settings.height;
+  if (!width && r.camera.width > 0) width = r.camera.width;
+  if (!height && r.camera.height > 0) height = r.camera.height;
+  float aspect = r.camera.aspect > 0 ? r.camera.aspect : 1.0f;
+  if (width && !height) height = std::max(1, int(std::lround(*width / aspect)));
+  if (height && !width) width = std::max(1, int(std::lround(*height * aspect)));
+  if (!width) {
+    width = aspect >= 1 ? default_image_size : std::max(1, int(std::lround(default_image_size * aspect)));
+    height = aspect >= 1 ? std::max(1, int(std::lround(default_image_size / aspect))) : default_image_size;
+  }
+  if (*width < 1 || *height < 1 || *width > 65536 || *height > 65536)
+    throw std::invalid_argument("image size " + std::to_string(*width) + "x" + std::to_string(*height) +
+                                " is out of range (1 to 65536)");
+  r.width = *width;
+  r.height = *height;
+}
+
+}  // namespace
+
+ResolvedSettings resolve_settings(const PreparedScene& prepared, const RenderOptions& options) {
+  const SceneDesc& scene = *prepared.scene;
+  ResolvedSettings r;
+  r.camera = select_camera(scene, options.camera, r.camera_framed);
+  apply_camera_override(r.camera, options.camera_override);
+  resolve_size(options, scene, r);
+
+  RenderMode mode = options.mode ? *options.mode : scene.settings.mode.value_or(RenderMode::auto_select);
+  if (mode == RenderMode::auto_select) mode = choose_auto_mode(scene, r.mode_reason);
+  r.mode = mode;
+  bool whitted = mode == RenderMode::whitted;
+  r.spp = options.spp ? *options.spp : scene.settings.spp.value_or(whitted ? default_whitted_spp : default_path_spp);
+  r.max_depth = options.max_depth ? *options.max_depth
+                                  : scene.settings.max_depth.value_or(whitted ? default_whitted_max_depth : default_path_max_depth);
+  r.sampler = options.sampler ? *options.sampler
+                              : scene.settings.sampler.value_or(whitted ? SamplerKind::jittered : SamplerKind::sobol);
+  if (r.spp < 1) throw std::invalid_argument("--spp must be at least 1");
+  if (r.max_depth < 1) throw std::invalid_argument("--max-depth must be at least 1");
+
+  r.environment_color = options.env_color ? *options.env_color : scene.environment.color;
+  r.environment_map = options.env_map.empty() ? scene.environment.map_path : options.env_map;
+
+  uint32_t needed = prepared.effects.mask;
+  if (!is_black(r.environment_color) || !r.environment_map.empty()) needed |= effect_environment | effect_shadows | effect_indirect;
+  if (options.env_color && is_black(*options.env_color) && r.environment_map.empty()) needed &= ~effect_environment;
+  r.effects = options.effects.empty() ? needed : apply_effects_override(needed, options.effects);
+  r.compiled_variant = options.effects.find("all") != std::string::npos ? effect_all : smallest_variant(r.effects);
+
+  r.window = {0, 0, r.width, r.height};
+  if (options.crop) {
+    const PixelWindow& c = *options.crop;
+    if (c.x0 < 0 || c.y0 < 0 || c.x1 > r.width || c.y1 > r.height || c.x0 >= c.x1 || c.y0 >= c.y1)
+      throw std::invalid_argument("--crop must lie inside the " + std::to_string(r.width) + "x" +
+                                  std::to_string(r.height) + " image with x0 < x1 and y0 < y1");
+    r.window = c;
+  }
+  return r;
+}
+
+}  // namespace radiant

@@ -1,0 +1,35 @@
+// Sample values as pure functions of (pixel, sample index, dimension, seed): the image never
+// depends on thread count or tile order.
+#pragma once
+
+#include <cstdint>
+
+#include "math/vec.h"
+#include "scene/scene_desc.h"
+
+namespace radiant {
+
+// What identifies one sample of one pixel.
+struct SampleContext {
+  SamplerKind kind = SamplerKind::jittered;
+  uint32_t pixel = 0;         // y * width + x
+  uint32_t index = 0;         // sample index within the pixel
+  uint32_t samples = 1;       // samples per pixel of the whole render (grid/jittered strata)
+  uint32_t seed = 0;
+};
+
+// Position inside the pixel, in [0,1)^2. grid: cell centres; jittered: one random point per
+// cell; random: independent; sobol: Owen-scrambled Sobol. One sample shoots through the centre
+// for grid and jittered.
+vec2 sample_pixel(const SampleContext& context);
+
+// A 1D / 2D value for `dimension` (>= 2; dimensions 0 and 1 are the pixel position). Sobol
+// pads pairs of dimensions with independently scrambled (0, 1) Sobol dimensions; the other
+// samplers use independent random values.
+float sample_1d(const SampleContext& context, uint32_t dimension);
+vec2 sample_2d(const SampleContext& context, uint32_t dimension);
+
+// Owen-scrambled Sobol point `index` in dimension 0 or 1 with scramble `seed` (exposed for tests).
+float sobol_scrambled(uint32_t index, int sobol_dimension, uint32_t seed);
+
+}  // namespace radiant
