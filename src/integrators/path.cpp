@@ -67,7 +67,7 @@ color3 sample_one_light(const RenderContext& ctx, const SurfaceHit& hit, const S
     if (!enabled<E>(ctx.effects, effect_direct_delta)) return {};
     DeltaLightSample light;
     if (!sample_delta_light(ctx.scene->lights[lights.delta_lights[index]], hit.position, light)) return {};
-    color3 f_cos = eval_bsdf(m, f.authored_normal, f.wo, light.direction);
+    color3 f_cos = eval_bsdf(m, bsdf_normal(m, f), f.wo, light.direction);
     if (is_black(f_cos)) return {};
     color3 t = shadow_transmittance<E>(ctx, hit, light.direction, light.distance, false, counts);
     return f_cos * light.irradiance * t / select_pdf;
@@ -89,18 +89,18 @@ color3 sample_one_light(const RenderContext& ctx, const SurfaceHit& hit, const S
     emitted = area_light_emission<E>(ctx, light, s.barycentric);
   } else {
     if (!enabled<E>(ctx.effects, effect_environment)) return {};
-    light_pdf = sample_environment(lights, sample_1d(sample, dimension(depth, environment_choice)), u, wi);
+    light_pdf = sample_environment(lights, f.normal, sample_1d(sample, dimension(depth, environment_choice)), u, wi);
     if (!(light_pdf > 0)) return {};
     distance = std::numeric_limits<float>::infinity();
     emitted = eval_environment(lights, wi);
   }
   if (is_black(emitted)) return {};
-  color3 f_cos = eval_bsdf(m, f.authored_normal, f.wo, wi);
+  color3 f_cos = eval_bsdf(m, bsdf_normal(m, f), f.wo, wi);
   if (is_black(f_cos)) return {};
   color3 t = shadow_transmittance<E>(ctx, hit, wi, distance, false, counts);
   if (is_black(t)) return {};
   float pdf = select_pdf * light_pdf;
-  float weight = power_heuristic(pdf, sample_bsdf_pdf(m, f.authored_normal, f.wo, wi));
+  float weight = power_heuristic(pdf, sample_bsdf_pdf(m, bsdf_normal(m, f), f.wo, wi));
   return f_cos * emitted * t * (weight / pdf);
 }
 
@@ -113,7 +113,7 @@ struct PathVariant {
     Ray ray = camera_ray;
     bool specular_bounce = true;
     float previous_pdf = 0;
-    vec3 previous_position;
+    vec3 previous_position, previous_normal;
     int depth = 0, max_depth = ctx.max_depth;
     counts.camera++;
     for (int transparent_steps = 0; transparent_steps < 256;) {
@@ -123,7 +123,8 @@ struct PathVariant {
           color3 background = eval_environment(lights, normalize(ray.direction));
           float weight = 1;
           if (LightSampling && !specular_bounce) {
-            float light_pdf = lights.selection.pmf[lights.environment_slot()] * environment_pdf(lights, normalize(ray.direction));
+            float light_pdf = lights.selection.pmf[lights.environment_slot()] *
+                              environment_pdf(lights, previous_normal, normalize(ray.direction));
             weight = power_heuristic(previous_pdf, light_pdf);
           }
           radiance += throughput * background * weight;
@@ -165,7 +166,7 @@ struct PathVariant {
       if (LightSampling && !is_pure_delta(m))
         radiance += throughput * sample_one_light<E>(ctx, hit, m, f, sample, depth, counts);
 
-      auto bsdf = sample_bsdf(m, f.authored_normal, f.wo, sample_1d(sample, dimension(depth, lobe_choice)),
+      auto bsdf = sample_bsdf(m, bsdf_normal(m, f), f.wo, sample_1d(sample, dimension(depth, lobe_choice)),
                               sample_2d(sample, dimension(depth, bsdf_direction)));
       if (!bsdf || is_black(bsdf->weight)) break;
       // Without indirect light a diffuse or glossy bounce only completes this vertex's direct light.
@@ -182,6 +183,7 @@ struct PathVariant {
       specular_bounce = bsdf->delta;
       previous_pdf = bsdf->pdf;
       previous_position = hit.position;
+      previous_normal = f.normal;
       ray = spawn_ray(hit, bsdf->wi);
       ++depth;
       if (depth >= roulette_start_depth) {

@@ -15,6 +15,13 @@ struct ShadingFrame {
   bool entering = true;   // the ray arrived on the front side
 };
 
+// The normal the BSDF sees: facing the incoming ray for opaque materials, the authored one for
+// transmissive materials, whose BSDF tells entering from leaving by the side wo lies on.
+inline vec3 bsdf_normal(const SurfaceMaterial& m, const ShadingFrame& f) {
+  bool transmissive = !is_black(m.kt) || m.transmission > 0;
+  return transmissive ? f.authored_normal : f.normal;
+}
+
 template <uint32_t E>
 ShadingFrame make_shading_frame(uint32_t effects, const SurfaceHit& hit, const SurfaceMaterial& m, vec3 ray_direction) {
   ShadingFrame f;

@@ -8,8 +8,6 @@ namespace radiant {
 
 namespace {
 
-constexpr float uniform_sphere_pdf = 1 / (4 * pi);
-
 // Probability of sampling the map rather than the uniform sphere.
 float map_probability(const LightTable& lights) {
   if (lights.environment_map.width == 0 || lights.environment_map.distribution.marginal.empty()) return 0;
@@ -32,7 +30,7 @@ float map_pdf(const LightTable& lights, vec3 d) {
 
 }  // namespace
 
-float sample_environment(const LightTable& lights, float u_choice, vec2 u, vec3& direction) {
+float sample_environment(const LightTable& lights, vec3 normal, float u_choice, vec2 u, vec3& direction) {
   float p_map = map_probability(lights);
   if (u_choice < p_map) {
     float uv_pdf, sin_theta;
@@ -40,14 +38,14 @@ float sample_environment(const LightTable& lights, float u_choice, vec2 u, vec3&
     direction = direction_from_uv(uv, sin_theta);
     if (sin_theta <= 0) return 0;
   } else {
-    direction = sample_uniform_sphere(u);
+    direction = to_world(normal, sample_cosine_hemisphere(u));
   }
-  return environment_pdf(lights, direction);
+  return environment_pdf(lights, normal, direction);
 }
 
-float environment_pdf(const LightTable& lights, vec3 direction) {
+float environment_pdf(const LightTable& lights, vec3 normal, vec3 direction) {
   float p_map = map_probability(lights);
-  float pdf = (1 - p_map) * uniform_sphere_pdf;
+  float pdf = (1 - p_map) * std::max(0.0f, dot(normal, direction)) * inv_pi;
   if (p_map > 0) pdf += p_map * map_pdf(lights, direction);
   return pdf;
 }

@@ -1,5 +1,6 @@
-// Sampling directions towards the environment: uniform over the sphere for a constant color,
-// by luminance for a map (a mixture when both are present).
+// Sampling directions towards the environment: the constant color part cosine-weighted around
+// the shaded point's normal (exact for diffuse surfaces under a uniform sky), a map by its
+// luminance; a mixture of the two when both are present.
 #pragma once
 
 #include "lights/light_table.h"
@@ -7,7 +8,8 @@
 namespace radiant {
 
 // Samples a unit direction; returns its solid-angle pdf (0 when nothing can be sampled).
-float sample_environment(const LightTable& lights, float u_choice, vec2 u, vec3& direction);
-float environment_pdf(const LightTable& lights, vec3 direction);
+float sample_environment(const LightTable& lights, vec3 normal, float u_choice, vec2 u, vec3& direction);
+// Solid-angle pdf of `direction` as sampled from a point with shading normal `normal`.
+float environment_pdf(const LightTable& lights, vec3 normal, vec3 direction);
 
 }  // namespace radiant

@@ -1,5 +1,6 @@
 #include "sampling/sampler.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "sampling/hash.h"
@@ -50,6 +51,30 @@ uint32_t owen_scramble(uint32_t v, uint32_t seed) {
   return reverse_bits(v);
 }
 
+// Element i of a pseudo-random permutation of [0, length) chosen by `seed` (Kensler 2013).
+uint32_t permutation_element(uint32_t i, uint32_t length, uint32_t seed) {
+  if (length <= 1) return 0;
+  uint32_t w = length - 1;
+  w |= w >> 1, w |= w >> 2, w |= w >> 4, w |= w >> 8, w |= w >> 16;
+  do {
+    i ^= seed, i *= 0xe170893dU, i ^= seed >> 16, i ^= (i & w) >> 4, i ^= seed >> 8, i *= 0x0929eb3fU;
+    i ^= seed >> 23, i ^= (i & w) >> 1, i *= 1 | seed >> 27, i *= 0x6935fa69U, i ^= (i & w) >> 11;
+    i *= 0x74dcb303U, i ^= (i & w) >> 2, i *= 0x9e501cc3U, i ^= (i & w) >> 2, i *= 0xc860a3dfU;
+    i &= w, i ^= i >> 5;
+  } while (i >= length);
+  return (i + seed) % length;
+}
+
+// Padded Sobol (as pbrt-v4's PaddedSobolSampler): each pair of dimensions is the first two
+// Sobol dimensions, Owen-scrambled and with the sample index permuted by its own seed, so that
+// pairs are not correlated with each other (the pixel pair keeps the unpermuted order, which
+// makes every prefix of the samples well spread for progressive and adaptive rendering).
+vec2 padded_sobol_2d(const SampleContext& c, uint32_t dimension) {
+  uint32_t scramble = hash4(c.pixel, dimension, c.seed, 0x52u);
+  uint32_t index = dimension == 0 ? c.index : permutation_element(c.index, std::max(c.samples, c.index + 1), mix_bits(scramble ^ 0x9e37u));
+  return {sobol_scrambled(index, 0, scramble), sobol_scrambled(index, 1, mix_bits(scramble))};
+}
+
 float random_value(const SampleContext& c, uint32_t dimension) {
   return bits_to_unit_float(hash4(c.pixel, c.index, dimension, c.seed));
 }
@@ -88,13 +113,12 @@ vec2 sample_pixel(const SampleContext& c) {
 
 float sample_1d(const SampleContext& c, uint32_t dimension) {
   if (c.kind != SamplerKind::sobol) return random_value(c, dimension);
-  return sobol_scrambled(c.index, 0, hash4(c.pixel, dimension, c.seed, 0x51u));
+  return padded_sobol_2d(c, dimension).x;
 }
 
 vec2 sample_2d(const SampleContext& c, uint32_t dimension) {
   if (c.kind != SamplerKind::sobol) return {random_value(c, dimension), random_value(c, dimension + 1)};
-  uint32_t scramble = hash4(c.pixel, dimension, c.seed, 0x52u);
-  return {sobol_scrambled(c.index, 0, scramble), sobol_scrambled(c.index, 1, mix_bits(scramble))};
+  return padded_sobol_2d(c, dimension);
 }
 
 }  // namespace radiant
