@@ -80,7 +80,7 @@ std::string polygon_defect(const std::vector<vec3>& vertices) {
   for (size_t i = 0; i < n; ++i) {
     double distance = std::abs(dot(points[i], normal));
     if (distance > planar_tolerance * size)
-      return "is not planar (" + vertex_text(i) + " is " + number_text(distance) + " away from the plane of the others)";
+      return "is not planar (" + vertex_text(i) + " is " + number_text(distance) + " away from the mean plane)";
   }
   return convexity_defect(points, normal);
 }
