@@ -1,5 +1,7 @@
 #include "scene_format/scene_format_camera.h"
 
+#include <utility>
+
 #include "scene_format/scene_format_units.h"
 #include "scene_format/scene_format_values.h"
 
@@ -40,11 +42,11 @@ static const std::vector<AttributeName> camera_names = {
     {"position", ""}, {"direction", ""},     {"look-at", ""},   {"up", ""},         {"fov", ""},
     {"view-distance", ""}, {"view-size", ""}, {"resolution", ""}, {"orthographic", ""}};
 
-// Fails at `second` when both attributes are given.
+// Fails at the later of the two attributes when both are given.
 static void exclusive(const BuildContext& context, const Attribute* first, const Attribute* second) {
-  if (first && second)
-    fail(context, second->name,
-         quote(second->name.text) + " cannot be combined with " + quote(first->name.text));
+  if (!first || !second) return;
+  if (first->name.line > second->name.line) std::swap(first, second);
+  fail(context, second->name, quote(second->name.text) + " cannot be combined with " + quote(first->name.text));
 }
 
 static vec3 camera_forward(const BuildContext& context, const Attributes& attributes, vec3 position) {
