@@ -53,7 +53,10 @@ void build_light_block(BuildContext& context, const Block& block) {
   color3 color = {255, 255, 255};
   if (auto* a = find(attributes, "color")) color = read_color(context, *a);
   light.intensity = light.kind == LightKind::ambient ? ambient_from_scene(color) : light_intensity_from_scene(color);
-  light.kc = 1, light.kl = 0, light.kq = 0;
+  // The classic engine's "no attenuation", unlike the inverse square LightDesc defaults to.
+  light.kc = 1;
+  light.kl = 0;
+  light.kq = 0;
   if (auto* a = find(attributes, "attenuation")) set_attenuation(context, *a, light);
   if (light.kind == LightKind::point || light.kind == LightKind::spot)
     light.position = read_vec3(context, require(context, attributes, "position", what));

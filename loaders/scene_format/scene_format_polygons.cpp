@@ -1,6 +1,7 @@
 #include "scene_format/scene_format_polygons.h"
 
 #include <cmath>
+#include <numbers>
 #include <sstream>
 
 #include "scene_format/scene_format_materials.h"
@@ -55,7 +56,7 @@ static std::string convexity_defect(const std::vector<Point>& points, Point norm
     if (sine <= turn_tolerance && cosine < 0) return "is not convex (it folds back on itself at " + vertex_text(i) + ")";
     turning += std::atan2(sine, cosine);
   }
-  if (turning > 3 * M_PI) return "is not convex (its edges wind around more than once)";
+  if (turning > 3 * std::numbers::pi) return "is not convex (its edges wind around more than once)";
   return "";
 }
 

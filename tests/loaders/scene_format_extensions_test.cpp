@@ -352,3 +352,20 @@ TEST_CASE("@mesh includes an OBJ file with its transform and a material override
   const MaterialDesc& material = scene.materials.at(size_t(scene.meshes[0].material));
   check_vec3(material.kd, {0.5f, 0.5f, 0.5f});
 }
+
+// ---------------------------------------------------------------- docs/scene-format.md
+
+TEST_CASE("the worked example of the units section converts as documented") {
+  SceneDesc scene = test::load_scene_text(
+      "@light ambient\ncolor 51 51 51\n@light point\ncolor 255 200 100\nposition 0 2 0\nattenuation 1 0 0.25\n"
+      "@sphere\ncenter 0 -1 0\nradius 1\nkd 0.8\nemission 100 0 0\n");
+  const LightDesc& ambient = scene.lights.at(0);
+  const LightDesc& point = scene.lights.at(1);
+  const MaterialDesc& material = scene.materials.at(0);
+  check_vec3(point.intensity, {3.1415927f, 2.4639943f, 1.2319971f});
+  float attenuation = point.kc + point.kl * 2 + point.kq * 4;
+  CHECK(attenuation == 2);
+  // The Whitted sum at the top of the sphere, as the spec writes it out.
+  color3 shown = point.intensity / pi * material.kd / attenuation + material.ka * ambient.intensity + material.emission;
+  check_vec3(shown * 255, {253, 131, 91});
+}
