@@ -59,6 +59,7 @@ static vec3 camera_forward(const BuildContext& context, const Attributes& attrib
   vec3 offset = read_vec3(context, *look_at) - position;
   if (max_component(abs(offset)) == 0)
     fail(context, look_at->name, "'look-at' must differ from 'position'");
+  if (!is_finite(offset)) fail(context, look_at->name, "'look-at' is too far from 'position'");
   return normalize(offset / max_component(abs(offset)));
 }
 

@@ -74,6 +74,8 @@ static int older_material(BuildContext& context, const Attributes& attributes) {
   material.ka = material.kd;
   material.kr = smooth ? color3{0, 0, 0} : reflectance;
   material.emission = reflectance * emittance;
+  if (!is_finite(material.emission))
+    fail(context, find(attributes, "e")->name, "emission c/255 * e is out of range");
   return add_material(context, std::move(material));
 }
 

@@ -1,5 +1,7 @@
 #include "scene_format/scene_format_shapes.h"
 
+#include <cmath>
+
 #include "scene_format/scene_format_materials.h"
 
 namespace radiant::scene_format {
@@ -49,6 +51,7 @@ static void set_cylinder_ends(const BuildContext& context, const Attributes& att
   const Attribute& to = require(context, attributes, "to", "@cylinder");
   vec3 offset = read_vec3(context, to) - from;
   if (max_component(abs(offset)) == 0) fail(context, to.name, "'to' must differ from 'from'");
+  if (!std::isfinite(length(offset))) fail(context, to.name, "'to' is too far from 'from'");
   shape.center = from;
   shape.height = length(offset);
   shape.axis = offset / shape.height;
