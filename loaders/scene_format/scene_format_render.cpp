@@ -1,0 +1,27 @@
+#include "scene_format/scene_format_render.h"
+
+#include "scene_format/scene_format_units.h"
+#include "scene_format/scene_format_values.h"
+
+namespace radiant::scene_format {
+
+static const std::vector<AttributeName> render_names = {{"mode", ""},      {"spp", ""},   {"sampler", ""},
+                                                        {"max-depth", ""}, {"width", ""}, {"height", ""},
+                                                        {"background", ""}};
+
+void build_render_block(BuildContext& context, const Block& block) {
+  expect_block_arguments(context, block, 0);
+  Attributes attributes = index_attributes(context, block, render_names, "@render");
+  SceneSettings& settings = context.scene.settings;
+  // Same order as RenderMode and SamplerKind.
+  if (auto* a = find(attributes, "mode")) settings.mode = RenderMode(read_choice(context, *a, {"auto", "whitted", "path", "naive"}));
+  if (auto* a = find(attributes, "sampler"))
+    settings.sampler = SamplerKind(read_choice(context, *a, {"grid", "random", "jittered", "sobol"}));
+  if (auto* a = find(attributes, "spp")) settings.spp = read_integer(context, *a, 1, max_samples_per_pixel);
+  if (auto* a = find(attributes, "max-depth")) settings.max_depth = read_integer(context, *a, 1, max_render_depth);
+  if (auto* a = find(attributes, "width")) settings.width = read_integer(context, *a, 1, max_image_side);
+  if (auto* a = find(attributes, "height")) settings.height = read_integer(context, *a, 1, max_image_side);
+  if (auto* a = find(attributes, "background")) context.scene.environment.color = radiance_from_scene(read_color(context, *a));
+}
+
+}  // namespace radiant::scene_format
