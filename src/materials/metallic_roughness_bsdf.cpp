@@ -39,7 +39,11 @@ color3 specular_fresnel(const Lobes& l, float cos_h) {
 // Light crossing the plastic's coating at cosine `cos` (symmetric in wo and wi: reciprocity).
 float coating_transmittance(const Lobes& l, float cos) { return 1 - l.fade * fresnel_dielectric(cos, l.ior); }
 
-float selection_weight(bool present, float estimate) { return present ? std::max(estimate, min_lobe_weight) : 0; }
+// Delta lobes need no floor: a delta lobe with no reflectance is simply never chosen.
+float selection_weight(bool present, float estimate, bool delta) {
+  if (!present) return 0;
+  return delta ? estimate : std::max(estimate, min_lobe_weight);
+}
 
 Lobes make_lobes(const SurfaceMaterial& m, vec3 n, vec3 wo) {
   Lobes l;
@@ -60,10 +64,11 @@ Lobes make_lobes(const SurfaceMaterial& m, vec3 n, vec3 wo) {
   bool colored = max_component(l.base) > 0;
   float cos_o = l.wo.z;
   float specular = selection_weight(l.metal > 0 || l.plastic * l.fade > 0 || l.glass > 0,
-                                    mean(specular_fresnel(l, cos_o)));
-  float diffuse = selection_weight(l.plastic > 0 && colored, l.plastic * mean(l.base) * coating_transmittance(l, cos_o));
+                                    mean(specular_fresnel(l, cos_o)), l.smooth);
+  float diffuse = selection_weight(l.plastic > 0 && colored,
+                                   l.plastic * mean(l.base) * coating_transmittance(l, cos_o), false);
   float transmitted = selection_weight(l.glass > 0 && colored,
-                                       l.glass * mean(l.base) * (1 - fresnel_dielectric(cos_o, l.eta)));
+                                       l.glass * mean(l.base) * (1 - fresnel_dielectric(cos_o, l.eta)), l.smooth);
   float total = specular + diffuse + transmitted;
   if (total <= 0) return l;
   l.p_specular = specular / total;
