@@ -67,8 +67,9 @@ Lobes make_lobes(const SurfaceMaterial& m, vec3 n, vec3 wo) {
                                     mean(specular_fresnel(l, cos_o)), l.smooth);
   float diffuse = selection_weight(l.plastic > 0 && colored,
                                    l.plastic * mean(l.base) * coating_transmittance(l, cos_o), false);
-  float transmitted = selection_weight(l.glass > 0 && colored,
-                                       l.glass * mean(l.base) * (1 - fresnel_dielectric(cos_o, l.eta)), l.smooth);
+  float transmittance = 1 - fresnel_dielectric(cos_o, l.eta);
+  float transmitted =
+      selection_weight(l.glass > 0 && colored, l.glass * mean(l.base) * transmittance, l.smooth);
   float total = specular + diffuse + transmitted;
   if (total <= 0) return l;
   l.p_specular = specular / total;

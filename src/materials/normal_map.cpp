@@ -15,7 +15,8 @@ vec3 apply_normal_map(vec3 n, vec4 tangent, vec3 tangent_space_normal) {
   } else {
     orthonormal_basis(n, t, b);  // no usable tangent: any frame beats a NaN
   }
-  vec3 mapped = normalize(t * tangent_space_normal.x + b * tangent_space_normal.y + n * tangent_space_normal.z);
+  vec3 local = tangent_space_normal;
+  vec3 mapped = normalize(t * local.x + b * local.y + n * local.z);
   return is_finite(mapped) && length_squared(mapped) > 0.5f ? mapped : n;
 }
 

@@ -113,8 +113,10 @@ vec4 sample_texture(const SceneDesc& scene, const TextureRef& ref, const Surface
   float fx = x - 0.5f, fy = y - 0.5f;
   int x0 = int(std::floor(fx)), y0 = int(std::floor(fy));
   float tx = fx - float(x0), ty = fy - float(y0);
-  int i0 = wrap_index(x0, image->width, texture.wrap_s), i1 = wrap_index(x0 + 1, image->width, texture.wrap_s);
-  int j0 = wrap_index(y0, image->height, texture.wrap_t), j1 = wrap_index(y0 + 1, image->height, texture.wrap_t);
+  int i0 = wrap_index(x0, image->width, texture.wrap_s);
+  int i1 = wrap_index(x0 + 1, image->width, texture.wrap_s);
+  int j0 = wrap_index(y0, image->height, texture.wrap_t);
+  int j1 = wrap_index(y0 + 1, image->height, texture.wrap_t);
   vec4 top = mix(fetch_texel(*image, i0, j0, srgb), fetch_texel(*image, i1, j0, srgb), tx);
   vec4 bottom = mix(fetch_texel(*image, i0, j1, srgb), fetch_texel(*image, i1, j1, srgb), tx);
   return mix(top, bottom, ty);

@@ -48,7 +48,8 @@ double simpson(const std::function<double(double)>& f, double a, double b, doubl
   double flm = f(lm), frm = f(rm);
   double left = (m - a) / 6 * (fa + 4 * flm + fm), right = (b - m) / 6 * (fm + 4 * frm + fb);
   double delta = left + right - whole;
-  if (depth <= 0 || (depth <= max_depth - min_depth && std::abs(delta) <= 15 * eps)) return left + right + delta / 15;
+  bool converged = depth <= max_depth - min_depth && std::abs(delta) <= 15 * eps;
+  if (depth <= 0 || converged) return left + right + delta / 15;
   return simpson(f, a, m, fa, flm, fm, left, eps / 2, depth - 1) +
          simpson(f, m, b, fm, frm, fb, right, eps / 2, depth - 1);
 }
@@ -67,7 +68,9 @@ std::vector<double> expected_counts(const SurfaceMaterial& m, vec3 wo) {
       double c0 = -1 + 2.0 * i / cos_bins, c1 = -1 + 2.0 * (i + 1) / cos_bins;
       double p0 = 2 * pi * j / phi_bins, p1 = 2 * pi * (j + 1) / phi_bins;
       auto over_phi = [&](double c) {
-        auto pdf = [&](double phi) { return double(sample_bsdf_pdf(m, n, wo, spherical_direction(float(c), float(phi)))); };
+        auto pdf = [&](double phi) {
+          return double(sample_bsdf_pdf(m, n, wo, spherical_direction(float(c), float(phi))));
+        };
         return integrate(pdf, p0, p1, 1e-8);
       };
       counts[i * phi_bins + j] = integrate(over_phi, c0, c1, 1e-7) * sample_count;
@@ -140,7 +143,9 @@ TEST_CASE("chi-square: metallic-roughness sampling follows its pdf") {
   run_chi_square_tests(configs_of(MaterialModel::metallic_roughness));
 }
 
-TEST_CASE("chi-square: phong sampling follows its pdf") { run_chi_square_tests(configs_of(MaterialModel::phong)); }
+TEST_CASE("chi-square: phong sampling follows its pdf") {
+  run_chi_square_tests(configs_of(MaterialModel::phong));
+}
 
 
 }  // namespace

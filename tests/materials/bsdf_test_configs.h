@@ -24,8 +24,8 @@ struct BsdfConfig {
   bool from_inside = false;  // wo arrives from below the authored normal
 };
 
-inline SurfaceMaterial metallic_roughness(color3 base, float metallic, float roughness, float transmission = 0,
-                                          float ior = 1.5f) {
+inline SurfaceMaterial metallic_roughness(color3 base, float metallic, float roughness,
+                                          float transmission = 0, float ior = 1.5f) {
   SurfaceMaterial m;
   m.model = MaterialModel::metallic_roughness;
   m.base_color = base;

@@ -12,7 +12,8 @@ namespace {
 
 // A scene with one texture over one 8-bit image of `width` x `height` x `channels`.
 SceneDesc scene_with_image(int width, int height, int channels, std::vector<uint8_t> texels,
-                           TextureFilter filter = TextureFilter::nearest, TextureWrap wrap = TextureWrap::repeat) {
+                           TextureFilter filter = TextureFilter::nearest,
+                           TextureWrap wrap = TextureWrap::repeat) {
   SceneDesc scene;
   ImageDesc image;
   image.width = width, image.height = height, image.channels = channels;
@@ -71,9 +72,10 @@ TEST_CASE("texture wrap: repeat, clamp to edge and mirrored repeat") {
   CHECK(grey_at(mirrored, {2.25f, 0.25f}) == doctest::Approx(0));   // period 2
   CHECK(grey_at(mirrored, {-0.25f, 0.25f}) == doctest::Approx(0));
   // Bilinear across the u = 0 edge blends with the far column only when repeating.
-  CHECK(grey_at(two_by_two(TextureFilter::linear, TextureWrap::repeat), {0, 0.25f}) == doctest::Approx(5));
-  CHECK(grey_at(two_by_two(TextureFilter::linear, TextureWrap::clamp_to_edge), {0, 0.25f}) == doctest::Approx(0));
-  CHECK(grey_at(two_by_two(TextureFilter::linear, TextureWrap::mirrored_repeat), {0, 0.25f}) == doctest::Approx(0));
+  vec2 left_edge = {0, 0.25f};
+  CHECK(grey_at(two_by_two(TextureFilter::linear, TextureWrap::repeat), left_edge) == doctest::Approx(5));
+  CHECK(grey_at(two_by_two(TextureFilter::linear, TextureWrap::clamp_to_edge), left_edge) == 0);
+  CHECK(grey_at(two_by_two(TextureFilter::linear, TextureWrap::mirrored_repeat), left_edge) == 0);
 }
 
 TEST_CASE("texture sRGB: 8-bit color decodes through the sRGB curve, alpha stays linear") {
