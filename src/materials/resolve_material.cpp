@@ -68,7 +68,6 @@ SurfaceMaterial resolve_phong(const SceneDesc& scene, const MaterialDesc& materi
   m.kt = material.kt;
   m.shininess = material.shininess;
   m.ior = material.ior;
-  m.base_color = m.kd;
   float alpha = material.alpha * diffuse.w * attributes.vertex_color.w *
                 sample_texture(scene, material.alpha_texture, attributes, false).x;
   resolve_shared(scene, material, attributes, alpha, m);
