@@ -1,0 +1,30 @@
+// Fresnel reflectance for dielectric interfaces and Schlick's approximation for conductors.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+#include "math/vec.h"
+
+namespace radiant {
+
+// Unpolarized Fresnel reflectance of a dielectric interface; `cos_i` > 0 on the incident side and
+// `eta` = n_transmitted / n_incident. Returns 1 on total internal reflection.
+inline float fresnel_dielectric(float cos_i, float eta) {
+  cos_i = std::clamp(cos_i, 0.0f, 1.0f);
+  float sin2_t = (1 - cos_i * cos_i) / (eta * eta);
+  if (sin2_t >= 1) return 1;
+  float cos_t = std::sqrt(1 - sin2_t);
+  float parallel = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
+  float perpendicular = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
+  return (parallel * parallel + perpendicular * perpendicular) / 2;
+}
+
+// Schlick's approximation with a colored reflectance at normal incidence (metals).
+inline color3 fresnel_schlick(color3 f0, float cos_i) {
+  float m = 1 - std::clamp(cos_i, 0.0f, 1.0f);
+  float m5 = (m * m) * (m * m) * m;
+  return f0 + (color3{1, 1, 1} - f0) * m5;
+}
+
+}  // namespace radiant

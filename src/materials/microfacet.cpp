@@ -1,0 +1,49 @@
+// GGX microfacet distribution, masking-shadowing and visible-normal sampling.
+#include "materials/microfacet.h"
+
+#include <limits>
+
+namespace radiant {
+
+float ggx_distribution(vec3 m, float alpha) {
+  if (m.z <= 0) return 0;
+  float a2 = alpha * alpha;
+  float d = m.z * m.z * (a2 - 1) + 1;
+  return a2 / (pi * d * d);
+}
+
+float ggx_lambda(vec3 w, float alpha) {
+  float cos2 = w.z * w.z;
+  if (cos2 <= 0) return std::numeric_limits<float>::infinity();
+  float tan2 = std::max(0.0f, 1 - cos2) / cos2;
+  return (std::sqrt(1 + alpha * alpha * tan2) - 1) / 2;
+}
+
+float ggx_masking(vec3 w, float alpha) { return 1 / (1 + ggx_lambda(w, alpha)); }
+
+float ggx_masking_shadowing(vec3 wo, vec3 wi, float alpha) {
+  return 1 / (1 + ggx_lambda(wo, alpha) + ggx_lambda(wi, alpha));
+}
+
+vec3 sample_ggx_visible_normal(vec3 wo, float alpha, vec2 u) {
+  // Stretch the view so the distribution becomes the hemisphere configuration.
+  vec3 vh = normalize(vec3{alpha * wo.x, alpha * wo.y, wo.z});
+  float length2 = vh.x * vh.x + vh.y * vh.y;
+  vec3 t1 = length2 > 0 ? vec3{-vh.y, vh.x, 0} / std::sqrt(length2) : vec3{1, 0, 0};
+  vec3 t2 = cross(vh, t1);
+  // A point on the projected disk, warped to the visible half of the hemisphere.
+  float r = std::sqrt(u.x), phi = 2 * pi * u.y;
+  float p1 = r * std::cos(phi), p2 = r * std::sin(phi);
+  float s = 0.5f * (1 + vh.z);
+  p2 = (1 - s) * std::sqrt(std::max(0.0f, 1 - p1 * p1)) + s * p2;
+  vec3 nh = t1 * p1 + t2 * p2 + vh * std::sqrt(std::max(0.0f, 1 - p1 * p1 - p2 * p2));
+  // Unstretch back to the ellipsoid configuration.
+  return normalize(vec3{alpha * nh.x, alpha * nh.y, std::max(1e-6f, nh.z)});
+}
+
+float ggx_visible_normal_pdf(vec3 wo, vec3 m, float alpha) {
+  if (wo.z <= 0) return 0;
+  return ggx_masking(wo, alpha) * std::max(0.0f, dot(wo, m)) * ggx_distribution(m, alpha) / wo.z;
+}
+
+}  // namespace radiant

@@ -1,0 +1,23 @@
+// Tangent-space normal mapping.
+#include "materials/surface.h"
+
+namespace radiant {
+
+vec3 apply_normal_map(vec3 n, vec4 tangent, vec3 tangent_space_normal) {
+  // Gram-Schmidt: interpolated tangents are rarely orthogonal to the shading normal.
+  vec3 t = {tangent.x, tangent.y, tangent.z};
+  t = t - n * dot(n, t);
+  vec3 b;
+  if (length_squared(t) > 1e-12f && std::isfinite(length_squared(t))) {
+    t = normalize(t);
+    float handedness = tangent.w < 0 ? -1.0f : 1.0f;
+    b = cross(n, t) * handedness;
+  } else {
+    orthonormal_basis(n, t, b);  // no usable tangent: any frame beats a NaN
+  }
+  vec3 local = tangent_space_normal;
+  vec3 mapped = normalize(t * local.x + b * local.y + n * local.z);
+  return is_finite(mapped) && length_squared(mapped) > 0.5f ? mapped : n;
+}
+
+}  // namespace radiant

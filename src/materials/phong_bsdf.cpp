@@ -1,0 +1,136 @@
+// The Phong model as a path-tracing BSDF: normalized diffuse, the modified Phong lobe
+// ks (n+2)/(2 pi) cos^n (Lafortune & Willems 1994), a delta mirror (kr) and a delta
+// transmission (kt), scaled per channel so that kd + ks + kr + kt <= 1 (docs/materials.md).
+#include "materials/bsdf_models.h"
+#include "materials/shading_frame.h"
+
+namespace radiant {
+
+namespace {
+
+// The material's lobes seen from one outgoing direction.
+struct Lobes {
+  bool valid = false;
+  ShadingFrame frame;  // z = the normal on wo's side
+  vec3 wo;             // local, wo.z > 0
+  float eta = 1.5f;    // n_transmitted / n_incident seen from wo
+  float exponent = 1;
+  color3 kd, ks, kr, kt;  // energy-conserving weights
+  float p_diffuse = 0, p_glossy = 0, p_mirror = 0, p_transmission = 0;
+};
+
+// Per-channel weights scaled so that no channel reflects more than it receives.
+void conserve_energy(const SurfaceMaterial& m, Lobes& l) {
+  color3 zero = {0, 0, 0};
+  l.kd = max(m.kd, zero), l.ks = max(m.ks, zero), l.kr = max(m.kr, zero), l.kt = max(m.kt, zero);
+  color3 total = l.kd + l.ks + l.kr + l.kt;
+  color3 scale = {1 / std::max(1.0f, total.x), 1 / std::max(1.0f, total.y), 1 / std::max(1.0f, total.z)};
+  l.kd *= scale, l.ks *= scale, l.kr *= scale, l.kt *= scale;
+}
+
+Lobes make_lobes(const SurfaceMaterial& m, vec3 n, vec3 wo) {
+  Lobes l;
+  bool from_inside = dot(n, wo) < 0;  // only transmissive materials are seen from behind
+  l.frame = make_shading_frame(from_inside ? -n : n);
+  l.wo = to_local(l.frame, wo);
+  if (!(l.wo.z > 1e-7f) || !is_finite(l.wo)) return l;
+  float ior = std::isfinite(m.ior) && m.ior > 0 ? m.ior : 1.0f;
+  l.eta = from_inside ? 1 / ior : ior;
+  l.exponent = std::isfinite(m.shininess) ? std::clamp(m.shininess, 0.0f, 1e6f) : 1.0f;
+  conserve_energy(m, l);
+  float total = mean(l.kd) + mean(l.ks) + mean(l.kr) + mean(l.kt);
+  if (!(total > 0) || !std::isfinite(total)) return l;
+  l.p_diffuse = mean(l.kd) / total;
+  l.p_glossy = mean(l.ks) / total;
+  l.p_mirror = mean(l.kr) / total;
+  l.p_transmission = mean(l.kt) / total;
+  l.valid = true;
+  return l;
+}
+
+// cos^n of the angle between wi and the mirror direction of wo (0 beyond 90 degrees).
+float phong_lobe(const Lobes& l, vec3 wi) {
+  float cos_alpha = dot(wi, reflect_local(l.wo));
+  return cos_alpha > 0 ? std::pow(std::min(cos_alpha, 1.0f), l.exponent) : 0;
+}
+
+color3 eval_local(const Lobes& l, vec3 wi) {
+  if (!l.valid || wi.z < 1e-7f) return {0, 0, 0};
+  color3 glossy = l.ks * ((l.exponent + 2) / (2 * pi) * phong_lobe(l, wi));
+  return (l.kd * inv_pi + glossy) * wi.z;
+}
+
+float pdf_local(const Lobes& l, vec3 wi) {
+  if (!l.valid || wi.z < 1e-7f) return 0;
+  return l.p_diffuse * wi.z * inv_pi + l.p_glossy * (l.exponent + 1) / (2 * pi) * phong_lobe(l, wi);
+}
+
+BsdfSample delta_sample(const Lobes& l, vec3 wi_local, color3 weight, float selection) {
+  BsdfSample s;
+  s.wi = to_world(l.frame, wi_local);
+  s.weight = weight / selection;
+  s.pdf = selection;
+  s.delta = true;
+  s.transmitted = wi_local.z < 0;
+  return s;
+}
+
+// A direction chosen by one of the non-delta lobes, weighted by the whole mixture (one-sample MIS).
+std::optional<BsdfSample> mixture_sample(const Lobes& l, vec3 wi_local) {
+  float pdf = pdf_local(l, wi_local);
+  color3 f = eval_local(l, wi_local);
+  if (!(pdf > 0) || is_black(f)) return std::nullopt;
+  BsdfSample s;
+  s.wi = to_world(l.frame, wi_local);
+  s.weight = f / pdf;
+  s.pdf = pdf;
+  if (!is_finite(s.weight)) return std::nullopt;
+  return s;
+}
+
+// A direction with density (n+1)/(2 pi) cos^n around the mirror direction.
+vec3 sample_phong_lobe(const Lobes& l, vec2 u) {
+  float cos_alpha = std::pow(u.x, 1 / (l.exponent + 1));
+  float sin_alpha = std::sqrt(std::max(0.0f, 1 - cos_alpha * cos_alpha));
+  float phi = 2 * pi * u.y;
+  vec3 axis = reflect_local(l.wo), t, b;
+  orthonormal_basis(axis, t, b);
+  return normalize(t * (sin_alpha * std::cos(phi)) + b * (sin_alpha * std::sin(phi)) + axis * cos_alpha);
+}
+
+// Refraction through the smooth interface; total internal reflection turns it into a mirror.
+BsdfSample sample_delta_transmission(const Lobes& l) {
+  vec3 wi;
+  if (l.eta == 1) wi = -l.wo;  // index-matched: straight through, no bending
+  else if (!refract(l.wo, {0, 0, 1}, l.eta, wi)) wi = reflect_local(l.wo);
+  return delta_sample(l, wi, l.kt, l.p_transmission);
+}
+
+}  // namespace
+
+color3 eval_phong(const SurfaceMaterial& m, vec3 n, vec3 wo, vec3 wi) {
+  Lobes l = make_lobes(m, n, wo);
+  return eval_local(l, to_local(l.frame, wi));
+}
+
+float sample_phong_pdf(const SurfaceMaterial& m, vec3 n, vec3 wo, vec3 wi) {
+  Lobes l = make_lobes(m, n, wo);
+  return pdf_local(l, to_local(l.frame, wi));
+}
+
+std::optional<BsdfSample> sample_phong(const SurfaceMaterial& m, vec3 n, vec3 wo, float u_lobe, vec2 u) {
+  Lobes l = make_lobes(m, n, wo);
+  if (!l.valid) return std::nullopt;
+  float threshold = l.p_diffuse;
+  if (u_lobe < threshold) return mixture_sample(l, sample_cosine_hemisphere(u));
+  if (u_lobe < (threshold += l.p_glossy)) return mixture_sample(l, sample_phong_lobe(l, u));
+  if (u_lobe < (threshold += l.p_mirror)) return delta_sample(l, reflect_local(l.wo), l.kr, l.p_mirror);
+  if (l.p_transmission > 0) return sample_delta_transmission(l);
+  return std::nullopt;
+}
+
+bool is_phong_pure_delta(const SurfaceMaterial& m) {
+  return max_component(m.kd) <= 0 && max_component(m.ks) <= 0;
+}
+
+}  // namespace radiant

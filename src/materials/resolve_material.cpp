@@ -1,0 +1,86 @@
+// A MaterialDesc evaluated at one surface point: textures and vertex colors applied.
+#include "materials/surface.h"
+
+namespace radiant {
+
+namespace {
+
+color3 rgb(vec4 c) { return {c.x, c.y, c.z}; }
+
+float clamp01(float x) { return std::isfinite(x) ? std::clamp(x, 0.0f, 1.0f) : 0.0f; }
+
+// Opacity after the alpha mode: opaque ignores alpha, mask thresholds it, blend keeps it.
+float opacity_from_alpha(const MaterialDesc& material, float alpha) {
+  switch (material.alpha_mode) {
+    case AlphaMode::opaque: return 1;
+    case AlphaMode::mask: return alpha >= material.alpha_cutoff ? 1.0f : 0.0f;
+    case AlphaMode::blend: return clamp01(alpha);
+  }
+  return 1;
+}
+
+// Shared slots: emission, normal map, alpha mode, unlit.
+void resolve_shared(const SceneDesc& scene, const MaterialDesc& material, const SurfaceAttributes& attributes,
+                    float alpha, SurfaceMaterial& m) {
+  m.emission = material.emission;
+  if (material.emission_texture.valid())
+    m.emission *= rgb(sample_texture(scene, material.emission_texture, attributes, true));
+  if (material.normal_texture.valid()) {
+    vec4 texel = sample_texture(scene, material.normal_texture, attributes, false);
+    vec3 n = {2 * texel.x - 1, 2 * texel.y - 1, 2 * texel.z - 1};
+    n.x *= material.normal_scale;
+    n.y *= material.normal_scale;
+    vec3 unit = normalize(n);
+    m.normal_map_sample = is_finite(unit) && length_squared(unit) > 0.5f ? unit : vec3{0, 0, 1};
+    m.has_normal_map = true;
+  }
+  m.opacity = opacity_from_alpha(material, alpha);
+  m.unlit = material.unlit;
+}
+
+SurfaceMaterial resolve_metallic_roughness(const SceneDesc& scene, const MaterialDesc& material,
+                                           const SurfaceAttributes& attributes) {
+  SurfaceMaterial m;
+  m.model = MaterialModel::metallic_roughness;
+  vec4 base = sample_texture(scene, material.base_color_texture, attributes, true);
+  m.base_color = material.base_color * rgb(base) * rgb(attributes.vertex_color);
+  float alpha = material.alpha * base.w * attributes.vertex_color.w;
+  vec4 metallic_roughness = sample_texture(scene, material.metallic_roughness_texture, attributes, false);
+  m.metallic = clamp01(material.metallic * metallic_roughness.z);
+  m.roughness = clamp01(material.roughness * metallic_roughness.y);
+  m.transmission = clamp01(material.transmission * sample_texture(scene, material.transmission_texture,
+                                                                   attributes, false).x);
+  m.ior = material.ior;
+  resolve_shared(scene, material, attributes, alpha, m);
+  phong_from_metallic_roughness(m);
+  return m;
+}
+
+SurfaceMaterial resolve_phong(const SceneDesc& scene, const MaterialDesc& material,
+                              const SurfaceAttributes& attributes) {
+  SurfaceMaterial m;
+  m.model = MaterialModel::phong;
+  vec4 diffuse = sample_texture(scene, material.base_color_texture, attributes, true);
+  m.kd = material.kd * rgb(diffuse) * rgb(attributes.vertex_color);
+  m.ks = material.ks * rgb(sample_texture(scene, material.specular_texture, attributes, false));
+  m.ka = material.ka;
+  m.kr = material.kr;
+  m.kt = material.kt;
+  m.shininess = material.shininess;
+  m.ior = material.ior;
+  float alpha = material.alpha * diffuse.w * attributes.vertex_color.w *
+                sample_texture(scene, material.alpha_texture, attributes, false).x;
+  resolve_shared(scene, material, attributes, alpha, m);
+  return m;
+}
+
+}  // namespace
+
+SurfaceMaterial resolve_material(const SceneDesc& scene, const MaterialDesc& material,
+                                 const SurfaceAttributes& attributes) {
+  if (material.model == MaterialModel::metallic_roughness)
+    return resolve_metallic_roughness(scene, material, attributes);
+  return resolve_phong(scene, material, attributes);
+}
+
+}  // namespace radiant

@@ -1,0 +1,125 @@
+// Texture lookups: KHR_texture_transform, wrap modes, nearest/bilinear filtering, sRGB decode.
+#include <array>
+#include <cmath>
+
+#include "materials/surface.h"
+
+namespace radiant {
+
+namespace {
+
+// The 256 sRGB-encoded byte values decoded to linear once (IEC 61966-2-1 curve).
+const std::array<float, 256>& srgb_to_linear_table() {
+  static const std::array<float, 256> table = [] {
+    std::array<float, 256> values{};
+    for (int i = 0; i < 256; ++i) {
+      double c = i / 255.0;
+      values[i] = float(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
+    }
+    return values;
+  }();
+  return table;
+}
+
+// The image behind `ref`, or nullptr when any link is missing or its texels are inconsistent.
+const ImageDesc* texture_image(const SceneDesc& scene, const TextureRef& ref) {
+  if (ref.texture < 0 || ref.texture >= int(scene.textures.size())) return nullptr;
+  int index = scene.textures[ref.texture].image;
+  if (index < 0 || index >= int(scene.images.size())) return nullptr;
+  const ImageDesc& image = scene.images[index];
+  if (image.width <= 0 || image.height <= 0 || image.channels < 1 || image.channels > 4) return nullptr;
+  size_t count = size_t(image.width) * size_t(image.height) * size_t(image.channels);
+  if (image.texels8.size() != count && image.texels_float.size() != count) return nullptr;
+  return &image;
+}
+
+// KHR_texture_transform: uv' = T * R * S * uv (the extension's matrix order).
+vec2 transform_uv(const TextureRef& ref, vec2 uv) {
+  if (ref.rotation == 0 && ref.scale.x == 1 && ref.scale.y == 1 && ref.offset.x == 0 && ref.offset.y == 0)
+    return uv;
+  float c = std::cos(ref.rotation), s = std::sin(ref.rotation);
+  vec2 scaled = {uv.x * ref.scale.x, uv.y * ref.scale.y};
+  return {c * scaled.x + s * scaled.y + ref.offset.x, -s * scaled.x + c * scaled.y + ref.offset.y};
+}
+
+// Brings a texture coordinate into a small range with the same texels, so that NaN or huge
+// values can never produce an out-of-range integer.
+float reduce_coordinate(float t, TextureWrap wrap) {
+  if (!std::isfinite(t)) return 0;
+  switch (wrap) {
+    case TextureWrap::repeat: return t - std::floor(t);
+    case TextureWrap::mirrored_repeat: return t - 2 * std::floor(t / 2);
+    case TextureWrap::clamp_to_edge: return std::clamp(t, -1.0f, 2.0f);
+  }
+  return 0;
+}
+
+// Maps a texel index that may lie outside [0, size) onto the image by the wrap mode.
+int wrap_index(int i, int size, TextureWrap wrap) {
+  switch (wrap) {
+    case TextureWrap::repeat: return ((i % size) + size) % size;
+    case TextureWrap::clamp_to_edge: return std::clamp(i, 0, size - 1);
+    case TextureWrap::mirrored_repeat: {
+      int period = 2 * size;
+      int m = ((i % period) + period) % period;
+      return m < size ? m : period - 1 - m;
+    }
+  }
+  return 0;
+}
+
+// One texel as linear RGBA; the alpha channel is always linear.
+vec4 fetch_texel(const ImageDesc& image, int x, int y, bool srgb) {
+  size_t base = (size_t(y) * size_t(image.width) + size_t(x)) * size_t(image.channels);
+  float values[4] = {0, 0, 0, 1};
+  for (int c = 0; c < image.channels; ++c) {
+    if (!image.texels8.empty()) {
+      uint8_t byte = image.texels8[base + c];
+      bool is_alpha = image.channels == 2 ? c == 1 : c == 3;
+      values[c] = srgb && !is_alpha ? srgb_to_linear_table()[byte] : byte / 255.0f;
+    } else {
+      values[c] = image.texels_float[base + c];
+    }
+  }
+  switch (image.channels) {
+    case 1: return {values[0], values[0], values[0], 1};
+    case 2: return {values[0], values[0], values[0], values[1]};
+    case 3: return {values[0], values[1], values[2], 1};
+    default: return {values[0], values[1], values[2], values[3]};
+  }
+}
+
+vec4 mix(vec4 a, vec4 b, float t) {
+  return {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t, a.z + (b.z - a.z) * t, a.w + (b.w - a.w) * t};
+}
+
+}  // namespace
+
+vec4 sample_texture(const SceneDesc& scene, const TextureRef& ref, const SurfaceAttributes& attributes,
+                    bool srgb) {
+  const ImageDesc* image = texture_image(scene, ref);
+  if (!image || ref.texcoord < 0 || ref.texcoord > 1) return {1, 1, 1, 1};
+  const TextureDesc& texture = scene.textures[ref.texture];
+  vec2 uv = transform_uv(ref, attributes.uv[ref.texcoord]);
+  // glTF puts uv (0,0) at the top-left texel, the first row in memory: no vertical flip.
+  float x = reduce_coordinate(uv.x, texture.wrap_s) * float(image->width);
+  float y = reduce_coordinate(uv.y, texture.wrap_t) * float(image->height);
+  if (texture.filter == TextureFilter::nearest) {
+    int i = wrap_index(int(std::floor(x)), image->width, texture.wrap_s);
+    int j = wrap_index(int(std::floor(y)), image->height, texture.wrap_t);
+    return fetch_texel(*image, i, j, srgb);
+  }
+  // Bilinear between the four texel centres around (x, y); centres sit at half-integers.
+  float fx = x - 0.5f, fy = y - 0.5f;
+  int x0 = int(std::floor(fx)), y0 = int(std::floor(fy));
+  float tx = fx - float(x0), ty = fy - float(y0);
+  int i0 = wrap_index(x0, image->width, texture.wrap_s);
+  int i1 = wrap_index(x0 + 1, image->width, texture.wrap_s);
+  int j0 = wrap_index(y0, image->height, texture.wrap_t);
+  int j1 = wrap_index(y0 + 1, image->height, texture.wrap_t);
+  vec4 top = mix(fetch_texel(*image, i0, j0, srgb), fetch_texel(*image, i1, j0, srgb), tx);
+  vec4 bottom = mix(fetch_texel(*image, i0, j1, srgb), fetch_texel(*image, i1, j1, srgb), tx);
+  return mix(top, bottom, ty);
+}
+
+}  // namespace radiant
