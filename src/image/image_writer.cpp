@@ -29,7 +29,7 @@ std::string temporary_path_beside(const std::string& path) {
 
 void write_with_oiio(const std::string& file, const OutputImage& image, bool as_float) {
   auto out = OIIO::ImageOutput::create(file);
-  if (!out) throw std::runtime_error("cannot write '" + file + "': " + OIIO::geterror());
+  if (!out) throw std::runtime_error(OIIO::geterror());
   int channels = as_float ? int(image.channels.size()) : 3;
   OIIO::ImageSpec spec(image.width, image.height, channels, as_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
   spec.channelnames.assign(image.channels.begin(), image.channels.begin() + channels);
@@ -50,7 +50,7 @@ void write_with_oiio(const std::string& file, const OutputImage& image, bool as_
     source = data.data();
   }
   if (!out->open(file, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, source) || !out->close())
-    throw std::runtime_error("cannot write '" + file + "': " + out->geterror());
+    throw std::runtime_error(out->geterror());
 }
 
 }  // namespace
@@ -72,7 +72,10 @@ void write_image(const std::string& path, const OutputImage& image) {
   } catch (const std::exception& e) {
     std::error_code ignored;
     fs::remove(temporary, ignored);
-    throw std::runtime_error(e.what());
+    // Name the file the user asked for, not the temporary one.
+    std::string reason = e.what();
+    for (size_t at; (at = reason.find(temporary)) != std::string::npos;) reason.replace(at, temporary.size(), path);
+    throw std::runtime_error("cannot write '" + path + "': " + reason);
   }
 }
 

@@ -1,0 +1,139 @@
+// `radiant render` as users and scripts drive it: exit codes, errors, outputs, determinism.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "support/test_support.h"
+
+using namespace radiant::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+const char* lit_plane_scene = R"(scene analytic plane
+@camera
+position 0 5 0
+direction 0 -1 0
+up 0 0 -1
+orthographic 4
+@light point
+color 255 255 255
+position 0.5 2 0.25
+attenuation 1 0.1 0.05
+@plane
+point 0 0 0
+normal 0 1 0
+kd 0.6
+)";
+
+std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
+
+}  // namespace
+
+TEST_CASE("render cli: a .scene point-lit plane in EXR equals kd*I*cos/(kc+kl*d+kq*d^2) in the format's units") {
+  ScratchDir dir("cli-analytic");
+  fs::path scene = dir.write("plane.scene", lit_plane_scene);
+  fs::path out = dir.file("plane.exr");
+  CommandResult r = run_radiant("render " + quoted(scene) + " -o " + quoted(out) +
+                                " --width 8 --height 8 --spp 1 --mode whitted --quiet");
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.err.empty());
+  TestImage img = read_image(out);
+  REQUIRE(img.width == 8);
+  for (auto [x, y] : {std::pair{0, 0}, {3, 5}, {7, 2}}) {
+    float px = -2 + 0.5f * (x + 0.5f), pz = -(2 - 0.5f * (y + 0.5f));
+    float dx = 0.5f - px, dy = 2, dz = 0.25f - pz;
+    float d = std::sqrt(dx * dx + dy * dy + dz * dz);
+    // In the format's units a value of 255 is full white: internal = value / 255.
+    float expected = 0.6f * 255 * (dy / d) / (1 + 0.1f * d + 0.05f * d * d) / 255;
+    CHECK(img.at(x, y, 0) == doctest::Approx(expected).epsilon(1e-4));
+  }
+}
+
+TEST_CASE("render cli: --threads 1 and --threads 2 write byte-identical files") {
+  ScratchDir dir("cli-threads");
+  fs::path showcase = source_path("assets/showcase.scene");
+  for (std::string mode : {"whitted", "path"}) {
+    fs::path a = dir.file("a-" + mode + ".png"), b = dir.file("b-" + mode + ".png");
+    std::string common = " --width 48 --height 36 --spp 4 --quiet --mode " + mode;
+    REQUIRE(run_radiant("render " + quoted(showcase) + " -o " + quoted(a) + " --threads 1" + common).exit_code == 0);
+    REQUIRE(run_radiant("render " + quoted(showcase) + " -o " + quoted(b) + " --threads 2" + common).exit_code == 0);
+    CHECK(read_bytes(a) == read_bytes(b));
+  }
+}
+
+TEST_CASE("render cli: a scene on standard input renders") {
+  ScratchDir dir("cli-stdin");
+  fs::path out = dir.file("stdin.png");
+  CommandResult r = run_radiant("render - -o " + quoted(out) + " --width 8 --height 8 --quiet", lit_plane_scene);
+  CHECK(r.exit_code == 0);
+  CHECK(fs::exists(out));
+}
+
+TEST_CASE("render cli: a bad scene file exits 1 with one line naming file:line:col and writes nothing") {
+  ScratchDir dir("cli-bad-scene");
+  fs::path scene = dir.write("bad.scene", "@sphere\nradius -2\ncenter 0 0 0\n");
+  fs::path out = dir.file("out.png");
+  CommandResult r = run_radiant("render " + quoted(scene) + " -o " + quoted(out));
+  CHECK(r.exit_code == 1);
+  CHECK(r.err.find("bad.scene:2:8:") != std::string::npos);
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  CHECK_FALSE(fs::exists(out));
+}
+
+TEST_CASE("render cli: an existing output file is left untouched when the render fails") {
+  ScratchDir dir("cli-keep");
+  fs::path out = dir.write("keep.png", "precious");
+  CommandResult r = run_radiant("render " + quoted(dir.file("missing.scene")) + " -o " + quoted(out));
+  CHECK(r.exit_code == 1);
+  CHECK(r.err.find("missing.scene") != std::string::npos);
+  CHECK(read_bytes(out) == "precious");
+  // No temporary files are left beside it either.
+  CHECK(std::distance(fs::directory_iterator(dir.path), fs::directory_iterator()) == 1);
+}
+
+TEST_CASE("render cli: bad flags exit 2 with a clear message and write nothing") {
+  ScratchDir dir("cli-flags");
+  fs::path scene = dir.write("ok.scene", lit_plane_scene);
+  fs::path out = dir.file("out.png");
+  std::string base = "render " + quoted(scene) + " -o " + quoted(out) + " ";
+  for (std::string flags : {"--spp 0", "--mode magic", "--sampler sobolx", "--width -3", "--frobnicate",
+                            "--env-color 1,2", "--look-from 1,2,x", "--crop 0,0,9999,10", "--effects=-sparkles"}) {
+    CAPTURE(flags);
+    CommandResult r = run_radiant(base + flags);
+    CHECK(r.exit_code == 2);
+    CHECK_FALSE(r.err.empty());
+    CHECK_FALSE(fs::exists(out));
+  }
+  CommandResult missing_output = run_radiant("render " + quoted(scene));
+  CHECK(missing_output.exit_code == 2);
+}
+
+TEST_CASE("render cli: an unwritable output path exits 1 naming the file") {
+  ScratchDir dir("cli-unwritable");
+  fs::path scene = dir.write("ok.scene", lit_plane_scene);
+  CommandResult r = run_radiant("render " + quoted(scene) + " -o " + quoted(dir.file("no/such/dir/out.png")) + " --width 4 --height 4");
+  CHECK(r.exit_code == 1);
+  CHECK(r.err.find("out.png") != std::string::npos);
+}
+
+TEST_CASE("render cli: --help shows examples and --version the version, both exit 0") {
+  CommandResult help = run_radiant("render --help");
+  CHECK(help.exit_code == 0);
+  CHECK(help.out.find("Examples:") != std::string::npos);
+  CommandResult version = run_radiant("--version");
+  CHECK(version.exit_code == 0);
+  CHECK(version.out.rfind("radiant ", 0) == 0);
+}
+
+TEST_CASE("render cli: the summary line reports resolution, spp, time and rays/s unless --quiet") {
+  ScratchDir dir("cli-summary");
+  fs::path scene = dir.write("ok.scene", lit_plane_scene);
+  CommandResult r = run_radiant("render " + quoted(scene) + " -o " + quoted(dir.file("o.png")) + " --width 10 --height 6 --spp 2");
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.err.find("10x6") != std::string::npos);
+  CHECK(r.err.find("2 spp") != std::string::npos);
+  CHECK(r.err.find("rays/s") != std::string::npos);
+}
