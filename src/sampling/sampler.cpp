@@ -69,10 +69,14 @@ uint32_t permutation_element(uint32_t i, uint32_t length, uint32_t seed) {
 // Sobol dimensions, Owen-scrambled and with the sample index permuted by its own seed, so that
 // pairs are not correlated with each other (the pixel pair keeps the unpermuted order, which
 // makes every prefix of the samples well spread for progressive and adaptive rendering).
-vec2 padded_sobol_2d(const SampleContext& c, uint32_t dimension) {
+struct PaddedSobolPair {
+  uint32_t index, scramble;
+};
+PaddedSobolPair padded_sobol_pair(const SampleContext& c, uint32_t dimension) {
   uint32_t scramble = hash4(c.pixel, dimension, c.seed, 0x52u);
-  uint32_t index = dimension == 0 ? c.index : permutation_element(c.index, std::max(c.samples, c.index + 1), mix_bits(scramble ^ 0x9e37u));
-  return {sobol_scrambled(index, 0, scramble), sobol_scrambled(index, 1, mix_bits(scramble))};
+  uint32_t index = dimension == 0 ? c.index
+                                  : permutation_element(c.index, std::max(c.samples, c.index + 1), mix_bits(scramble ^ 0x9e37u));
+  return {index, scramble};
 }
 
 float random_value(const SampleContext& c, uint32_t dimension) {
@@ -113,12 +117,14 @@ vec2 sample_pixel(const SampleContext& c) {
 
 float sample_1d(const SampleContext& c, uint32_t dimension) {
   if (c.kind != SamplerKind::sobol) return random_value(c, dimension);
-  return padded_sobol_2d(c, dimension).x;
+  PaddedSobolPair p = padded_sobol_pair(c, dimension);
+  return sobol_scrambled(p.index, 0, p.scramble);
 }
 
 vec2 sample_2d(const SampleContext& c, uint32_t dimension) {
   if (c.kind != SamplerKind::sobol) return {random_value(c, dimension), random_value(c, dimension + 1)};
-  return padded_sobol_2d(c, dimension);
+  PaddedSobolPair p = padded_sobol_pair(c, dimension);
+  return {sobol_scrambled(p.index, 0, p.scramble), sobol_scrambled(p.index, 1, mix_bits(p.scramble))};
 }
 
 }  // namespace radiant

@@ -64,6 +64,11 @@ EffectSet analyze_effects(const SceneDesc& scene) {
     normal_mapped += m.normal_texture.valid();
     alpha += m.alpha_mode != AlphaMode::opaque;
   }
+  for (const InstanceDesc& i : scene.instances)
+    if (!scene.meshes[i.mesh].colors.empty()) {
+      ++textured;  // vertex colors are read per hit like a texture
+      break;
+    }
   bool environment = !is_black(scene.environment.color) || !scene.environment.map_path.empty();
   auto add = [&](Effect e, const std::string& reason) {
     set.mask |= e;
@@ -82,7 +87,7 @@ EffectSet analyze_effects(const SceneDesc& scene) {
   if (emissive) add(effect_emission, count(emissive, "emissive material(s)"));
   if (environment)
     add(effect_environment, scene.environment.map_path.empty() ? "a uniform background color" : "an environment map");
-  if (textured) add(effect_textures, count(textured, "textured material(s)"));
+  if (textured) add(effect_textures, count(textured, "textured material(s) or vertex-colored mesh(es)"));
   if (normal_mapped) add(effect_normal_maps, count(normal_mapped, "normal-mapped material(s)"));
   if (alpha) add(effect_alpha, count(alpha, "material(s) with alpha mask or blend"));
   if (delta_lights || emissive || environment)

@@ -1,0 +1,102 @@
+#include "scene/scene_summary.h"
+
+#include <limits>
+
+#include "accel/analytic_shapes.h"
+#include "accel/scene_accel.h"
+
+namespace radiant {
+
+namespace {
+
+void count_geometry(const SceneDesc& scene, SceneSummary& s) {
+  s.meshes = scene.meshes.size();
+  s.instances = scene.instances.size();
+  for (const MeshDesc& m : scene.meshes) {
+    s.triangles += m.triangle_count();
+    s.geometry_bytes += m.positions.size() * sizeof(vec3) + m.normals.size() * sizeof(vec3) +
+                        m.tangents.size() * sizeof(vec4) + (m.texcoords0.size() + m.texcoords1.size()) * sizeof(vec2) +
+                        m.colors.size() * sizeof(vec4) + m.indices.size() * sizeof(uint32_t);
+  }
+  for (const InstanceDesc& i : scene.instances) s.instanced_triangles += scene.meshes[i.mesh].triangle_count();
+  for (const ShapeDesc& shape : scene.shapes) {
+    switch (shape.kind) {
+      case ShapeKind::sphere: s.spheres++; break;
+      case ShapeKind::plane: s.planes++; break;
+      case ShapeKind::cylinder: s.cylinders++; break;
+      case ShapeKind::tube: s.tubes++; break;
+    }
+  }
+}
+
+void compute_bounds(const SceneDesc& scene, SceneSummary& s) {
+  constexpr float inf = std::numeric_limits<float>::infinity();
+  vec3 lower = {inf, inf, inf}, upper = -lower;
+  for (const InstanceDesc& i : scene.instances)
+    for (vec3 p : scene.meshes[i.mesh].positions) {
+      vec3 w = transform_point(i.transform, p);
+      lower = min(lower, w);
+      upper = max(upper, w);
+    }
+  for (const ShapeDesc& shape : scene.shapes) {
+    if (shape.kind == ShapeKind::plane || shape.kind == ShapeKind::tube) continue;
+    vec3 lo, hi;
+    shape_bounds(shape, 0, lo, hi);
+    lower = min(lower, lo);
+    upper = max(upper, hi);
+  }
+  s.has_bounds = lower.x <= upper.x;
+  if (s.has_bounds) s.bounds_lower = lower, s.bounds_upper = upper;
+}
+
+// A light is enclosed when rays in all six axis directions hit the back of some surface.
+bool light_is_enclosed(const SceneAccel& accel, vec3 position) {
+  const vec3 directions[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  for (vec3 d : directions) {
+    Ray ray{position, normalize(d + vec3{0.0123f, 0.0071f, 0.0037f})};
+    HitId id = intersect_nearest(accel, ray);
+    if (!id.valid()) return false;
+    if (make_surface_hit(accel, ray, id).front_face) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+SceneSummary summarize_scene(const SceneDesc& scene) {
+  SceneSummary s;
+  count_geometry(scene, s);
+  compute_bounds(scene, s);
+  s.materials = scene.materials.size();
+  s.textures = scene.textures.size();
+  s.images = scene.images.size();
+  for (const ImageDesc& image : scene.images) s.texture_bytes += image.texels8.size() + image.texels_float.size() * sizeof(float);
+  for (const MaterialDesc& m : scene.materials) s.emissive_materials += !is_black(m.emission);
+  s.cameras = scene.cameras.size();
+  for (const LightDesc& l : scene.lights) {
+    switch (l.kind) {
+      case LightKind::ambient: s.ambient_lights++; break;
+      case LightKind::directional: s.directional_lights++; break;
+      case LightKind::point: s.point_lights++; break;
+      case LightKind::spot: s.spot_lights++; break;
+    }
+  }
+  s.warnings = scene.warnings;
+  if (scene.degenerate_triangles_dropped > 0)
+    s.warnings.push_back(std::to_string(scene.degenerate_triangles_dropped) + " degenerate triangle(s) dropped");
+  bool environment = !is_black(scene.environment.color) || !scene.environment.map_path.empty();
+  if (scene.lights.empty() && s.emissive_materials == 0 && !environment)
+    s.warnings.push_back("no lights, emissive materials or environment: the image will be black unless --env-color or --env is given");
+  if (!scene.instances.empty() || !scene.shapes.empty()) {
+    auto accel = build_scene_accel(scene);
+    for (size_t i = 0; i < scene.lights.size(); ++i) {
+      const LightDesc& l = scene.lights[i];
+      if ((l.kind == LightKind::point || l.kind == LightKind::spot) && light_is_enclosed(*accel, l.position))
+        s.warnings.push_back("light " + (l.name.empty() ? "#" + std::to_string(i) : "'" + l.name + "'") +
+                             " is inside closed geometry: it lights only the inside");
+    }
+  }
+  return s;
+}
+
+}  // namespace radiant
