@@ -2,13 +2,12 @@
 #include <unistd.h>
 
 #include <chrono>
-#include <fstream>
 #include <iostream>
 
 #include "commands.h"
 #include "load_scene.h"
 #include "option_parsing.h"
-#include "render_report.h"
+#include "render_job.h"
 
 namespace radiant::cli {
 
@@ -25,16 +24,6 @@ const char* render_examples =
     "  radiant render model.obj -o model.exr --env-color 1,1,1 --aov albedo,normal,variance\n"
     "  radiant render scene.gltf -o preview.png --effects=-shadows,-indirect --width 320\n"
     "  cat room.scene | radiant render - -o room.png --mode path --spp 256 --threads 2\n";
-
-void write_text_file_atomically(const std::string& path, const std::string& text) {
-  std::string temporary = path + ".tmp-" + std::to_string(getpid());
-  {
-    std::ofstream out(temporary, std::ios::binary);
-    out << text;
-    if (!out.good()) throw std::runtime_error("cannot write '" + path + "'");
-  }
-  std::filesystem::rename(temporary, path);
-}
 
 }  // namespace
 
@@ -84,25 +73,12 @@ int render_main(int argc, char** argv) {
       for (const std::string& warning : scene.warnings) std::cerr << "radiant: warning: " << warning << "\n";
 
     PreparedScene prepared = prepare_scene(scene);
-    times.build = prepared.build_seconds;
-    RenderResult result;
     try {
-      result = render_prepared(prepared, options);
+      run_render_job(scene_path, prepared, {options, output, stats_path}, times);
     } catch (const std::invalid_argument& e) {
       std::cerr << "radiant render: " << e.what() << "\n";
       return exit_usage;
     }
-    times.render = result.stats.render_seconds;
-    const ResolvedSettings& s = result.settings;
-    if (!options.quiet) {
-      if (s.camera_framed) std::cerr << "radiant: the scene has no camera; using one that frames the whole scene\n";
-      if (!s.mode_reason.empty()) std::cerr << "radiant: mode " << mode_name(s.mode) << ": " << s.mode_reason << "\n";
-    }
-    auto write_start = Clock::now();
-    write_image(output, film_to_image(result.film, options.aovs, s.window));
-    times.write = seconds_since(write_start);
-    if (!stats_path.empty()) write_text_file_atomically(stats_path, render_stats_json(scene_path, output, result, times));
-    if (!options.quiet) std::cerr << "radiant: " << render_summary(output, result, times) << "\n";
   } catch (const std::exception& e) {
     std::cerr << "radiant: " << e.what() << "\n";
     return exit_failure;

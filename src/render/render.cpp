@@ -198,7 +198,7 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
   return result;
 }
 
-OutputImage film_to_image(const Film& film, const std::vector<std::string>& aovs, const PixelWindow&) {
+OutputImage film_to_image(const Film& film, const std::vector<std::string>& aovs) {
   OutputImage image;
   image.width = film.width;
   image.height = film.height;

@@ -60,7 +60,7 @@ struct RenderResult {
 
 RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions& options);
 
-// The film as an image with the requested AOV channels (crop applied when set).
-OutputImage film_to_image(const Film& film, const std::vector<std::string>& aovs, const PixelWindow& window);
+// The film as an image with the requested AOV channels (a cropped render's film is the window).
+OutputImage film_to_image(const Film& film, const std::vector<std::string>& aovs);
 
 }  // namespace radiant
