@@ -1,0 +1,68 @@
+// `radiant info` and `radiant batch` as scripts use them.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+
+#include "support/test_support.h"
+
+using namespace radiant::test;
+namespace fs = std::filesystem;
+
+namespace {
+std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
+}  // namespace
+
+TEST_CASE("info: the showcase reports its shapes, lights by kind, effects with reasons and the auto mode") {
+  CommandResult r = run_radiant("info " + quoted(source_path("assets/showcase.scene")) + " --json");
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.out.find("\"point\": 1, \"spot\": 1") != std::string::npos);
+  CHECK(r.out.find("{\"effect\": \"transparent-shadows\", \"reason\": \"2 transmissive material(s) let light through\"}") !=
+        std::string::npos);
+  CHECK(r.out.find("\"auto_mode\": {\"mode\": \"whitted\"") != std::string::npos);
+}
+
+TEST_CASE("info: warns about a scene without light and about a light enclosed in geometry") {
+  ScratchDir dir("info-warnings");
+  fs::path dark = dir.write("dark.scene", "@sphere\nradius 1\ncenter 0 0 -3\n");
+  CommandResult r = run_radiant("info " + quoted(dark));
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.out.find("warning: no lights") != std::string::npos);
+  fs::path enclosed = dir.write("enclosed.scene",
+                                "@light point\ncolor 255 255 255\nposition 0 0 -3\n@sphere\nradius 1\ncenter 0 0 -3\n");
+  r = run_radiant("info " + quoted(enclosed));
+  CHECK(r.out.find("is inside closed geometry") != std::string::npos);
+  CHECK(r.out.find("warning: no lights") == std::string::npos);
+}
+
+TEST_CASE("info: a bad file exits 1 with the loader's located message") {
+  ScratchDir dir("info-bad");
+  fs::path bad = dir.write("bad.scene", "@sphere\nradius x\ncenter 0 0 0\n");
+  CommandResult r = run_radiant("info " + quoted(bad));
+  CHECK(r.exit_code == 1);
+  CHECK(r.err.find("bad.scene:2:8:") != std::string::npos);
+}
+
+TEST_CASE("batch: one load renders every view; views differ where the camera moved") {
+  ScratchDir dir("batch");
+  fs::copy_file(source_path("assets/first-render.scene"), dir.file("s.scene"));
+  fs::path script = dir.write("views.txt",
+                              "# two views of one scene\n"
+                              "scene s.scene\n"
+                              "render -o a.png --width 32 --height 32 --spp 1 --quiet\n"
+                              "render -o b.png --width 32 --height 32 --spp 1 --quiet --look-from 300,0,1000 --look-at 0,0,-200\n");
+  CommandResult r = run_radiant("batch " + quoted(script));
+  REQUIRE(r.exit_code == 0);
+  REQUIRE(fs::exists(dir.file("a.png")));
+  REQUIRE(fs::exists(dir.file("b.png")));
+  CHECK(read_bytes(dir.file("a.png")) != read_bytes(dir.file("b.png")));
+}
+
+TEST_CASE("batch: a bad line is reported as script:line before anything renders") {
+  ScratchDir dir("batch-bad");
+  fs::copy_file(source_path("assets/first-render.scene"), dir.file("s.scene"));
+  fs::path script = dir.write("views.txt", "scene s.scene\nrender -o a.png --spp 1\nrender -o b.png --spp zero\n");
+  CommandResult r = run_radiant("batch " + quoted(script));
+  CHECK(r.exit_code == 1);
+  CHECK(r.err.find("views.txt:3:") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir.file("a.png")));
+}
