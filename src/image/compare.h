@@ -102,7 +102,7 @@ Verdict threshold_verdict(const CompareMetrics& metrics, const CompareThresholds
 struct ZTestParams {
   double alpha = 0.01;                 // chance that two renders of the same mean fail
   double allowed_fail_percent = 0.25;  // % of pixels that may fail (fireflies), as Mitsuba
-  double epsilon = 1e-3;               // relative floor of the deviation: roundoff, half floats
+  double epsilon = 5e-4;               // relative floor of the deviation: roundoff, half floats
 };
 
 struct ZTestResult {
