@@ -66,6 +66,8 @@ void add_options(CLI::App& app, CompareOptions& options) {
       ->capture_default_str()->check(CLI::Range(0.0, 100.0));
   app.add_option("--mc-epsilon", options.z_test.epsilon, "z-test: relative deviation floor")
       ->capture_default_str()->check(non_negative);
+  app.add_flag("--mc-bias", options.z_test.bias_test,
+               "z-test: also fail a significant whole-image bias (independent pixels only)");
   auto* variance = app.add_option("--variance", options.variance_file,
                                   "per-sample variance image of A (with --spp)");
   auto* spp = app.add_option("--spp", options.samples_per_pixel, "samples per pixel of A")
@@ -183,7 +185,10 @@ void print_json(std::ostream& out, const CompareOptions& options, const CompareR
         << ",\"fail_pixels\":" << z->fail_pixels
         << ",\"fail_fraction\":" << json_number(z->fail_fraction)
         << ",\"allowed_fail_percent\":" << json_number(options.z_test.allowed_fail_percent)
-        << ",\"epsilon\":" << json_number(options.z_test.epsilon) << "}";
+        << ",\"epsilon\":" << json_number(options.z_test.epsilon)
+        << ",\"bias_z\":" << json_number(z->bias_z)
+        << ",\"bias_p_value\":" << json_number(z->bias_p_value)
+        << ",\"bias_test\":" << (options.z_test.bias_test ? "true" : "false") << "}";
   } else {
     out << "null";
   }
@@ -220,7 +225,9 @@ void print_table(std::ostream& out, const CompareOptions& options, const Compare
         << z->alpha_corrected << " (|z| > " << z->z_critical << ") over " << z->tests
         << " values\n  max |z|              " << z->max_abs_z
         << "\n  pixels failing z     " << z->fail_pixels << " (" << percent(z->fail_fraction)
-        << ", fail above " << options.z_test.allowed_fail_percent << "%)\n";
+        << ", fail above " << options.z_test.allowed_fail_percent << "%)"
+        << "\n  bias z               " << z->bias_z << " (p " << z->bias_p_value
+        << (options.z_test.bias_test ? ", fail below alpha)\n" : ", not tested: --mc-bias)\n");
   out << "verdict: " << verdict_name(report.verdict)
       << (report.z_test ? " (Monte Carlo z-test)\n" : " (thresholds)\n");
 }

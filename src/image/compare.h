@@ -103,6 +103,9 @@ struct ZTestParams {
   double alpha = 0.01;                 // chance that two renders of the same mean fail
   double allowed_fail_percent = 0.25;  // % of pixels that may fail (fireflies), as Mitsuba
   double epsilon = 5e-4;               // relative floor of the deviation: roundoff, half floats
+  // Also fail when Σz/√N (a whole-image bias, which the per-value test misses under heavy noise)
+  // is significant at alpha; sound only when pixels are independent (no wide pixel filter).
+  bool bias_test = false;
 };
 
 struct ZTestResult {
@@ -113,6 +116,8 @@ struct ZTestResult {
   double min_p_value = 1;       // smallest two-sided p-value
   size_t fail_pixels = 0;       // pixels with a channel whose p-value is below alpha_corrected
   double fail_fraction = 0;     // fail_pixels / pixels
+  double bias_z = 0;            // Σz/√N over the finite z: standard normal for equal means
+  double bias_p_value = 1;      // its two-sided p-value
   std::vector<float> abs_z;     // per pixel, the largest |z| over its channels
   Verdict verdict = Verdict::pass;
 };

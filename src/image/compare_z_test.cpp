@@ -9,15 +9,21 @@ namespace radiant {
 
 namespace {
 
-// The value's |z|: equal values (also equal infinities) give 0, NaN or unequal infinities +inf.
-double abs_z(double a, double b, double variance, double epsilon) {
+// The value's z: equal values (also equal infinities) give 0, NaN or unequal infinities +inf.
+double signed_z(double a, double b, double variance, double epsilon) {
   if (a == b) return 0;
   if (!std::isfinite(a) || !std::isfinite(b)) return std::numeric_limits<double>::infinity();
   double floor = epsilon * (1 + (std::abs(a) + std::abs(b)) / 2);
-  return std::abs(a - b) / std::sqrt(variance + floor * floor);
+  return (a - b) / std::sqrt(variance + floor * floor);
 }
 
 double two_sided_p_value(double abs_z) { return std::erfc(abs_z / std::sqrt(2.0)); }
+
+Verdict z_test_verdict(const ZTestResult& result, const ZTestParams& params) {
+  bool biased = params.bias_test && result.bias_p_value < params.alpha;
+  if (result.fail_fraction * 100 > params.allowed_fail_percent || biased) return Verdict::fail;
+  return result.fail_pixels > 0 ? Verdict::warn : Verdict::pass;
+}
 
 }  // namespace
 
@@ -42,13 +48,21 @@ ZTestResult run_z_test(const CompareImage& a, const CompareImage& b, const ZTest
   result.alpha_corrected = sidak_level(params.alpha, result.tests);
   result.z_critical = two_sided_critical_z(result.alpha_corrected);
   result.abs_z.assign(a.pixel_count(), 0.0f);
+  double z_sum = 0;
+  size_t finite_count = 0;
   for (size_t p = 0; p < a.pixel_count(); ++p) {
     bool failed = false;
     for (int c = 0; c < channels; ++c) {
       size_t i = p * channels + c;
       double variance = (a.variance.empty() ? 0.0 : a.variance[i]) +
                         (b.variance.empty() ? 0.0 : b.variance[i]);
-      double z = abs_z(a.values[i], b.values[i], variance > 0 ? variance : 0.0, params.epsilon);
+      double z_signed = signed_z(a.values[i], b.values[i], variance > 0 ? variance : 0.0,
+                                 params.epsilon);
+      if (std::isfinite(z_signed)) {
+        z_sum += z_signed;
+        finite_count += 1;
+      }
+      double z = std::abs(z_signed);
       double p_value = two_sided_p_value(z);
       failed = failed || p_value < result.alpha_corrected;
       result.max_abs_z = std::max(result.max_abs_z, z);
@@ -58,9 +72,9 @@ ZTestResult run_z_test(const CompareImage& a, const CompareImage& b, const ZTest
     result.fail_pixels += failed ? 1 : 0;
   }
   result.fail_fraction = double(result.fail_pixels) / double(a.pixel_count());
-  result.verdict = result.fail_fraction * 100 > params.allowed_fail_percent ? Verdict::fail
-                   : result.fail_pixels > 0                                  ? Verdict::warn
-                                                                             : Verdict::pass;
+  result.bias_z = finite_count > 0 ? z_sum / std::sqrt(double(finite_count)) : 0;
+  result.bias_p_value = two_sided_p_value(std::abs(result.bias_z));
+  result.verdict = z_test_verdict(result, params);
   return result;
 }
 

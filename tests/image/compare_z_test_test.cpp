@@ -104,6 +104,32 @@ TEST_CASE("z-test passes two noisy renders of one mean and fails a 5% shift") {
   CHECK(compare("same.exr", "--no-mc").out.find("\"mode\":\"threshold\"") != std::string::npos);
 }
 
+TEST_CASE("z-test bias option catches a 1% shift hidden in heavy noise") {
+  // Noise ten times the shift per pixel: no single value is significant, their sum is.
+  constexpr float heavy = 0.02f;
+  std::vector<float> mean = test::ramp_rgb(size, size);
+  auto noisy_image = [&](float scale, unsigned seed) {
+    CompareImage image;
+    image.path = "render";
+    image.width = image.height = size;
+    image.channel_names = {"R", "G", "B"};
+    image.values = test::with_noise(test::scaled(mean, scale), heavy, seed);
+    image.variance.assign(image.values.size(), heavy * heavy);
+    return image;
+  };
+  CompareImage reference = noisy_image(1.0f, 4), same = noisy_image(1.0f, 5);
+  CompareImage shifted = noisy_image(1.01f, 5);
+  ZTestParams params;
+  CHECK(run_z_test(shifted, reference, params).verdict != Verdict::fail);
+  params.bias_test = true;
+  ZTestResult bias = run_z_test(shifted, reference, params);
+  CHECK(bias.bias_z > 10);  // expected ≈ 0.005/0.028·√12288 ≈ 19
+  CHECK(bias.verdict == Verdict::fail);
+  ZTestResult equal = run_z_test(same, reference, params);
+  CHECK(std::abs(equal.bias_z) < 2.58);
+  CHECK(equal.verdict == Verdict::pass);
+}
+
 TEST_CASE("z-test takes a per-sample variance image divided by --spp") {
   ScratchDir dir("compare-mc-spp");
   std::vector<float> mean = test::ramp_rgb(size, size);
