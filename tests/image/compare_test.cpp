@@ -160,3 +160,26 @@ TEST_CASE("false color ramp runs black, red, yellow, white") {
 }
 
 }  // namespace radiant
+
+namespace radiant {
+
+TEST_CASE("compare fails a NaN or infinity against a number and passes equal infinities") {
+  CompareImage a;
+  a.path = "a";
+  a.width = 2;
+  a.height = 1;
+  a.channel_names = {"Y"};
+  a.values = {0.5f, INFINITY};
+  CompareImage nan = a;
+  nan.values = {NAN, INFINITY};
+  CompareMetrics m = compute_metrics(a, nan, {});
+  CHECK(m.fail_pixels == 1);
+  CHECK(threshold_verdict(m, {}) == Verdict::fail);
+  CHECK(std::isinf(pixel_max_difference(a, nan)[0]));
+  CHECK(pixel_max_difference(a, nan)[1] == 0);
+  CompareMetrics same = compute_metrics(a, a, {});
+  CHECK(same.fail_pixels == 0);
+  CHECK(threshold_verdict(same, {}) == Verdict::pass);
+}
+
+}  // namespace radiant
