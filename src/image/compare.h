@@ -3,6 +3,7 @@
 // docs/compare.md explains every metric and when to use which mode.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <stdexcept>
 #include <string>
@@ -51,6 +52,9 @@ std::vector<float> read_variance_image(const std::string& path, const CompareIma
 
 // Throws CompareError unless `a` and `b` have the same size and number of compared channels.
 void check_comparable(const CompareImage& a, const CompareImage& b);
+
+// Equal numbers, equal infinities, or NaN facing NaN: values that do not differ.
+inline bool same_value(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
 
 // -----------------------------------------------------------------------------------------------
 // Plain metrics and thresholds

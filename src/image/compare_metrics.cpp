@@ -100,7 +100,7 @@ std::vector<float> pixel_max_difference(const CompareImage& a, const CompareImag
   for (size_t p = 0; p < difference.size(); ++p)
     for (int c = 0; c < channels; ++c) {
       float x = a.values[p * channels + c], y = b.values[p * channels + c];
-      float d = x == y ? 0.0f : std::abs(x - y);  // equal infinities do not differ
+      float d = same_value(x, y) ? 0.0f : std::abs(x - y);
       difference[p] = std::isnan(d) ? std::numeric_limits<float>::infinity()
                                     : std::max(difference[p], d);
     }

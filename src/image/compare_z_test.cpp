@@ -9,9 +9,9 @@ namespace radiant {
 
 namespace {
 
-// The value's z: equal values (also equal infinities) give 0, NaN or unequal infinities +inf.
+// The value's z: values that do not differ give 0, any other non-finite pair +inf.
 double signed_z(double a, double b, double variance, double epsilon) {
-  if (a == b) return 0;
+  if (same_value(a, b)) return 0;
   if (!std::isfinite(a) || !std::isfinite(b)) return std::numeric_limits<double>::infinity();
   double floor = epsilon * (1 + (std::abs(a) + std::abs(b)) / 2);
   return (a - b) / std::sqrt(variance + floor * floor);

@@ -163,7 +163,7 @@ TEST_CASE("false color ramp runs black, red, yellow, white") {
 
 namespace radiant {
 
-TEST_CASE("compare fails a NaN or infinity against a number and passes equal infinities") {
+TEST_CASE("compare fails a NaN against a number and passes NaN against NaN and equal infinities") {
   CompareImage a;
   a.path = "a";
   a.width = 2;
@@ -177,9 +177,13 @@ TEST_CASE("compare fails a NaN or infinity against a number and passes equal inf
   CHECK(threshold_verdict(m, {}) == Verdict::fail);
   CHECK(std::isinf(pixel_max_difference(a, nan)[0]));
   CHECK(pixel_max_difference(a, nan)[1] == 0);
-  CompareMetrics same = compute_metrics(a, a, {});
+  CompareMetrics same = compute_metrics(nan, nan, {});
   CHECK(same.fail_pixels == 0);
   CHECK(threshold_verdict(same, {}) == Verdict::pass);
+  CHECK(pixel_max_difference(nan, nan) == std::vector<float>{0, 0});
+  nan.variance = {0.01f, 0.01f};
+  CHECK(run_z_test(nan, nan, {}).max_abs_z == 0);
+  CHECK(run_z_test(a, nan, {}).fail_pixels == 1);
 }
 
 }  // namespace radiant
