@@ -108,6 +108,17 @@ TEST_CASE("radiant compare --json prints one object whose numbers match the metr
   CHECK(same.out.find("\"verdict\":\"pass\"") != std::string::npos);
 }
 
+TEST_CASE("radiant compare warns on stderr when a linear EXR meets an sRGB PNG") {
+  ComparePair pair;
+  std::filesystem::path png = pair.dir.file("a.png");
+  test::write_rgb(png, 8, 4, test::ramp_rgb(8, 4));
+  test::CommandResult result = run_radiant(pair.args(png, "--json"));
+  CHECK(result.exit_code == 0);  // the same numbers up to 8-bit rounding
+  CHECK(result.err == "radiant compare: warning: " + pair.a.string() + " is Linear but " +
+                          png.string() + " is sRGB; the metrics compare the files' own encodings\n");
+  CHECK(result.out.find("\"verdict\"") != std::string::npos);
+}
+
 TEST_CASE("radiant compare --diff writes a false-color image of the inputs' size, none on error") {
   ComparePair pair;
   std::filesystem::path diff = pair.dir.file("diff.png");
