@@ -90,10 +90,10 @@ bool use_z_test(const CompareOptions& options, const CompareImage& a, const Comp
 }
 
 CompareReport compare_files(const CompareOptions& options) {
-  bool with_alpha = image_has_alpha(options.a) && image_has_alpha(options.b);
   CompareReport report;
-  report.a = read_compare_image(options.a, with_alpha);
-  report.b = read_compare_image(options.b, with_alpha);
+  report.a = read_compare_image(options.a);
+  report.b = read_compare_image(options.b);
+  match_alpha(report.a, report.b);
   check_comparable(report.a, report.b);
   if (!options.variance_file.empty())
     report.a.variance =

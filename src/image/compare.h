@@ -37,12 +37,12 @@ struct CompareImage {
 };
 
 // Reads `path` with OpenImageIO: its color channels (R,G,B by name, else the first three, else
-// all of a one- or two-channel image), its alpha when `with_alpha` and present, and its
-// variance AOV (channels variance.R, variance.G, variance.B) when it has one. Throws CompareError.
-CompareImage read_compare_image(const std::string& path, bool with_alpha);
+// all of a one- or two-channel image), its alpha when present, and its variance AOV (channels
+// variance.R, variance.G, variance.B) when it has one. Throws CompareError.
+CompareImage read_compare_image(const std::string& path);
 
-// True when the file has an alpha channel that read_compare_image would pick up.
-bool image_has_alpha(const std::string& path);
+// Alpha takes part only when both images have it: drops it from the one that has it otherwise.
+void match_alpha(CompareImage& a, CompareImage& b);
 
 // Reads a variance image for `image` from `path`, dividing by `samples_per_pixel` because the
 // file holds per-sample variance: its variance.R/G/B channels, else its color channels, else its

@@ -92,22 +92,13 @@ void copy_channels(const FileImage& file, const std::vector<int>& source, float 
 
 }  // namespace
 
-bool image_has_alpha(const std::string& path) {
-  OIIO::ImageBuf buffer(path);
-  if (!buffer.init_spec(path, 0, 0)) return false;
-  int alpha = alpha_channel(buffer.spec());
-  std::vector<int> color = color_channels(buffer.spec());
-  return alpha >= 0 && std::find(color.begin(), color.end(), alpha) == color.end();
-}
-
-CompareImage read_compare_image(const std::string& path, bool with_alpha) {
+CompareImage read_compare_image(const std::string& path) {
   FileImage file = read_file_image(path);
   std::vector<int> source = color_channels(file.spec);
   int color_count = int(source.size());
   int alpha = alpha_channel(file.spec);
   CompareImage image;
-  image.has_alpha =
-      with_alpha && alpha >= 0 && std::find(source.begin(), source.end(), alpha) == source.end();
+  image.has_alpha = alpha >= 0 && std::find(source.begin(), source.end(), alpha) == source.end();
   if (image.has_alpha) source.push_back(alpha);
   image.path = path;
   image.width = file.spec.width;
@@ -139,6 +130,31 @@ std::vector<float> read_variance_image(const std::string& path, const CompareIma
   std::vector<float> variance;
   copy_channels(file, source, 1.0f / float(samples_per_pixel), image, variance);
   return variance;
+}
+
+namespace {
+
+// Removes the last channel (alpha) of every pixel from `values`, if not empty.
+void drop_last_channel(std::vector<float>& values, int channels) {
+  if (values.empty()) return;
+  size_t kept = 0;
+  for (size_t i = 0; i < values.size(); ++i)
+    if (int(i % channels) != channels - 1) values[kept++] = values[i];
+  values.resize(kept);
+}
+
+void drop_alpha(CompareImage& image) {
+  drop_last_channel(image.values, image.channels());
+  drop_last_channel(image.variance, image.channels());
+  image.channel_names.pop_back();
+  image.has_alpha = false;
+}
+
+}  // namespace
+
+void match_alpha(CompareImage& a, CompareImage& b) {
+  if (a.has_alpha && !b.has_alpha) drop_alpha(a);
+  if (b.has_alpha && !a.has_alpha) drop_alpha(b);
 }
 
 void check_comparable(const CompareImage& a, const CompareImage& b) {

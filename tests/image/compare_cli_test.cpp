@@ -90,8 +90,8 @@ TEST_CASE("radiant compare --json prints one object whose numbers match the metr
   CHECK(json.find("\"mode\":\"threshold\"") != std::string::npos);
   CHECK(json.find("\"channels\":[\"R\",\"G\",\"B\"]") != std::string::npos);
   CHECK(json.find("\"z_test\":null") != std::string::npos);
-  CompareImage a = read_compare_image(pair.a.string(), false);
-  CompareImage b = read_compare_image(pair.bright.string(), false);
+  CompareImage a = read_compare_image(pair.a.string());
+  CompareImage b = read_compare_image(pair.bright.string());
   CompareMetrics m = compute_metrics(a, b, {});
   CHECK(json_value(json, "rmse") == doctest::Approx(m.rmse).epsilon(1e-8));
   CHECK(json_value(json, "psnr") == doctest::Approx(m.psnr).epsilon(1e-8));
