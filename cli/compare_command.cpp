@@ -37,19 +37,36 @@ struct CompareReport {
   Verdict verdict = Verdict::pass;
 };
 
+// CLI::Range lets NaN through (every comparison with it is false); thresholds must be numbers.
+CLI::Validator finite_range(double low, double high) {
+  std::ostringstream bounds;
+  bounds << "[" << low << ", " << high << "]";
+  std::string name = bounds.str();
+  return CLI::Validator(
+      [=](std::string& text) -> std::string {
+        double value = 0;
+        if (!CLI::detail::lexical_cast(text, value) || !std::isfinite(value) || value < low ||
+            value > high)
+          return "must be a number in " + name + ", not " + text;
+        return "";
+      },
+      name);
+}
+
 void add_options(CLI::App& app, CompareOptions& options) {
   app.add_option("A", options.a, "first image (e.g. the new render)")->required();
   app.add_option("B", options.b, "second image (e.g. the reference)")->required();
   CompareThresholds& t = options.thresholds;
-  auto non_negative = CLI::NonNegativeNumber;
+  const double huge = 1e30;
+  CLI::Validator non_negative = finite_range(0, huge), percent = finite_range(0, 100);
   app.add_option("--fail", t.fail, "a pixel fails when a channel differs by more")
       ->capture_default_str()->check(non_negative);
   app.add_option("--fail-percent", t.fail_percent, "fail when more than this % of pixels fail")
-      ->capture_default_str()->check(CLI::Range(0.0, 100.0));
+      ->capture_default_str()->check(percent);
   app.add_option("--warn", t.warn, "a pixel warns when a channel differs by more")
       ->capture_default_str()->check(non_negative);
   app.add_option("--warn-percent", t.warn_percent, "warn when more than this % of pixels warn")
-      ->capture_default_str()->check(CLI::Range(0.0, 100.0));
+      ->capture_default_str()->check(percent);
   app.add_option("--fail-relative", t.fail_relative, "fail when the mean relative error exceeds")
       ->capture_default_str()->check(non_negative);
   app.add_option("--warn-relative", t.warn_relative, "warn when the mean relative error exceeds")
@@ -60,10 +77,10 @@ void add_options(CLI::App& app, CompareOptions& options) {
       "--no-mc", [&](int64_t) { options.mc = McMode::off; }, "use plain thresholds even with a variance");
   mc->excludes(no_mc);
   app.add_option("--alpha", options.z_test.alpha, "z-test: chance that equal-mean renders fail")
-      ->capture_default_str()->check(CLI::Range(1e-12, 0.5));
+      ->capture_default_str()->check(finite_range(1e-12, 0.5));
   app.add_option("--mc-fail-percent", options.z_test.allowed_fail_percent,
                  "z-test: % of pixels allowed to fail")
-      ->capture_default_str()->check(CLI::Range(0.0, 100.0));
+      ->capture_default_str()->check(percent);
   app.add_option("--mc-epsilon", options.z_test.epsilon, "z-test: relative deviation floor")
       ->capture_default_str()->check(non_negative);
   app.add_flag("--mc-bias", options.z_test.bias_test,
@@ -71,13 +88,13 @@ void add_options(CLI::App& app, CompareOptions& options) {
   auto* variance = app.add_option("--variance", options.variance_file,
                                   "per-sample variance image of A (with --spp)");
   auto* spp = app.add_option("--spp", options.samples_per_pixel, "samples per pixel of A")
-                  ->check(CLI::PositiveNumber);
+                  ->check(CLI::Range(1, 1 << 30));
   variance->needs(spp);
   spp->needs(variance);
   app.add_option("--diff", options.diff_file, "write a false-color difference image");
   app.add_option("--diff-scale", options.diff_scale,
                  "difference mapped to white (default --fail, or the critical |z|)")
-      ->check(CLI::PositiveNumber);
+      ->check(finite_range(1e-30, huge));
   app.add_flag("--json", options.json, "print one JSON object on stdout");
 }
 

@@ -70,6 +70,10 @@ TEST_CASE("radiant compare exits 2 with one clear line on size mismatch, bad fil
   CHECK(flag.exit_code == 2);
   CHECK(flag.err.find("--bogus") != std::string::npos);
   CHECK(run_radiant(pair.args(pair.same, "--fail -1")).exit_code == 2);
+  test::CommandResult nan = run_radiant(pair.args(pair.same, "--fail nan"));
+  CHECK(nan.exit_code == 2);
+  CHECK(nan.err == "radiant compare: --fail: must be a number in [0, 1e+30], not nan\n");
+  CHECK(run_radiant(pair.args(pair.same, "--alpha 0")).exit_code == 2);
   CHECK(run_radiant(pair.args(pair.same, "--variance v.exr")).exit_code == 2);  // needs --spp
   CHECK(run_radiant("compare " + quoted(pair.a)).exit_code == 2);
   test::CommandResult no_variance = run_radiant(pair.args(pair.same, "--mc"));
