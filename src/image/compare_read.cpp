@@ -90,6 +90,22 @@ void copy_channels(const FileImage& file, const std::vector<int>& source, float 
       out[p * channels + c] = file.pixels[p * file_channels + source[c]] * scale;
 }
 
+// Removes the last channel (alpha) of every pixel from `values`, if not empty.
+void drop_last_channel(std::vector<float>& values, int channels) {
+  if (values.empty()) return;
+  size_t kept = 0;
+  for (size_t i = 0; i < values.size(); ++i)
+    if (int(i % channels) != channels - 1) values[kept++] = values[i];
+  values.resize(kept);
+}
+
+void drop_alpha(CompareImage& image) {
+  drop_last_channel(image.values, image.channels());
+  drop_last_channel(image.variance, image.channels());
+  image.channel_names.pop_back();
+  image.has_alpha = false;
+}
+
 }  // namespace
 
 CompareImage read_compare_image(const std::string& path) {
@@ -131,26 +147,6 @@ std::vector<float> read_variance_image(const std::string& path, const CompareIma
   copy_channels(file, source, 1.0f / float(samples_per_pixel), image, variance);
   return variance;
 }
-
-namespace {
-
-// Removes the last channel (alpha) of every pixel from `values`, if not empty.
-void drop_last_channel(std::vector<float>& values, int channels) {
-  if (values.empty()) return;
-  size_t kept = 0;
-  for (size_t i = 0; i < values.size(); ++i)
-    if (int(i % channels) != channels - 1) values[kept++] = values[i];
-  values.resize(kept);
-}
-
-void drop_alpha(CompareImage& image) {
-  drop_last_channel(image.values, image.channels());
-  drop_last_channel(image.variance, image.channels());
-  image.channel_names.pop_back();
-  image.has_alpha = false;
-}
-
-}  // namespace
 
 void match_alpha(CompareImage& a, CompareImage& b) {
   if (a.has_alpha && !b.has_alpha) drop_alpha(a);
