@@ -1,0 +1,110 @@
+// Plain error metrics: OpenImageIO's compare for RMSE, PSNR, max/mean error and the counts over
+// thresholds; here only what it lacks (the mean relative error, fractions, the verdict).
+#include <OpenImageIO/imagebufalgo.h>
+
+#include <cmath>
+#include <limits>
+
+#include "image/compare.h"
+
+namespace radiant {
+
+namespace {
+
+// An ImageBuf over the compared values, without copying them (compare only reads).
+OIIO::ImageBuf wrap(const CompareImage& image) {
+  OIIO::ImageSpec spec(image.width, image.height, image.channels(), OIIO::TypeDesc::FLOAT);
+  return OIIO::ImageBuf(spec, const_cast<float*>(image.values.data()));
+}
+
+// Σ|a−b| / Σ(|a|+|b|)/2 over finite pairs: black pixels do not dilute it, and a uniform scale by
+// s reads |s−1|/((1+s)/2) whatever the image shows.
+double mean_relative_error(const CompareImage& a, const CompareImage& b) {
+  double error = 0, level = 0;
+  for (size_t i = 0; i < a.values.size(); ++i) {
+    double x = a.values[i], y = b.values[i];
+    if (!std::isfinite(x) || !std::isfinite(y)) continue;  // OIIO's counts already fail them
+    error += std::abs(x - y);
+    level += (std::abs(x) + std::abs(y)) / 2;
+  }
+  return level > 0 ? error / level : 0;
+}
+
+// Pixels OIIO's counts miss: a NaN facing a non-NaN makes |a−b| NaN, which is over no threshold.
+size_t nan_only_pixels(const CompareImage& a, const CompareImage& b, double threshold) {
+  int channels = a.channels();
+  size_t count = 0;
+  for (size_t p = 0; p < a.pixel_count(); ++p) {
+    bool nan_mismatch = false, over = false;
+    for (int c = 0; c < channels; ++c) {
+      float x = a.values[p * channels + c], y = b.values[p * channels + c];
+      nan_mismatch = nan_mismatch || std::isnan(x) != std::isnan(y);
+      over = over || std::abs(x - y) > threshold;
+    }
+    count += nan_mismatch && !over ? 1 : 0;
+  }
+  return count;
+}
+
+}  // namespace
+
+const char* verdict_name(Verdict verdict) {
+  switch (verdict) {
+    case Verdict::pass: return "pass";
+    case Verdict::warn: return "warn";
+    case Verdict::fail: return "fail";
+  }
+  return "fail";
+}
+
+CompareMetrics compute_metrics(const CompareImage& a, const CompareImage& b,
+                               const CompareThresholds& thresholds) {
+  OIIO::ImageBuf buffer_a = wrap(a), buffer_b = wrap(b);
+  OIIO::ImageBufAlgo::CompareResults result = OIIO::ImageBufAlgo::compare(
+      buffer_a, buffer_b, float(thresholds.fail), float(thresholds.warn));
+  // result.error is set whenever pixels fail; only an ImageBuf error means the comparison broke.
+  if (buffer_a.has_error() || buffer_b.has_error())
+    throw CompareError("cannot compare " + a.path + " and " + b.path + ": " +
+                       buffer_a.geterror() + buffer_b.geterror());
+  CompareMetrics metrics;
+  metrics.pixels = a.pixel_count();
+  metrics.channels = a.channels();
+  metrics.rmse = result.rms_error;
+  metrics.psnr = result.rms_error > 0 ? result.PSNR : std::numeric_limits<double>::infinity();
+  metrics.max_error = result.maxerror;
+  metrics.max_x = result.maxx;
+  metrics.max_y = result.maxy;
+  metrics.max_channel = result.maxc;
+  metrics.mean_error = result.meanerror;
+  metrics.mean_relative_error = mean_relative_error(a, b);
+  metrics.fail_pixels = result.nfail + nan_only_pixels(a, b, thresholds.fail);
+  metrics.warn_pixels = result.nwarn + nan_only_pixels(a, b, thresholds.warn);
+  metrics.fail_fraction = double(metrics.fail_pixels) / double(metrics.pixels);
+  metrics.warn_fraction = double(metrics.warn_pixels) / double(metrics.pixels);
+  return metrics;
+}
+
+Verdict threshold_verdict(const CompareMetrics& metrics, const CompareThresholds& thresholds) {
+  if (metrics.fail_fraction * 100 > thresholds.fail_percent ||
+      metrics.mean_relative_error > thresholds.fail_relative)
+    return Verdict::fail;
+  if (metrics.warn_fraction * 100 > thresholds.warn_percent ||
+      metrics.mean_relative_error > thresholds.warn_relative)
+    return Verdict::warn;
+  return Verdict::pass;
+}
+
+std::vector<float> pixel_max_difference(const CompareImage& a, const CompareImage& b) {
+  int channels = a.channels();
+  std::vector<float> difference(a.pixel_count(), 0.0f);
+  for (size_t p = 0; p < difference.size(); ++p)
+    for (int c = 0; c < channels; ++c) {
+      float x = a.values[p * channels + c], y = b.values[p * channels + c];
+      float d = same_value(x, y) ? 0.0f : std::abs(x - y);
+      difference[p] = std::isnan(d) ? std::numeric_limits<float>::infinity()
+                                    : std::max(difference[p], d);
+    }
+  return difference;
+}
+
+}  // namespace radiant

@@ -1,0 +1,167 @@
+// Reading the channels that take part in a comparison: color (R,G,B by name), alpha, variance.
+#include <OpenImageIO/imagebuf.h>
+
+#include <algorithm>
+
+#include "image/compare.h"
+
+namespace radiant {
+
+namespace {
+
+// Refuse headers that would make us allocate more than 4 GiB of floats (hostile or absurd files).
+constexpr size_t max_values = size_t(1) << 30;
+
+// Every channel of subimage 0 as float, with the header it came from.
+struct FileImage {
+  OIIO::ImageSpec spec;
+  std::vector<float> pixels;  // spec.width*spec.height*spec.nchannels
+};
+
+// OIIO errors can span lines; the first one is the message.
+std::string first_line(const std::string& text) {
+  std::string line = text.substr(0, text.find('\n'));
+  return line.empty() ? "unknown error" : line;
+}
+
+FileImage read_file_image(const std::string& path) {
+  OIIO::ImageBuf buffer(path);
+  if (!buffer.init_spec(path, 0, 0))
+    throw CompareError(path + ": cannot read image: " + first_line(buffer.geterror()));
+  FileImage image;
+  image.spec = buffer.spec();
+  size_t count = size_t(image.spec.width) * image.spec.height * image.spec.nchannels;
+  if (image.spec.depth > 1 || image.spec.deep)
+    throw CompareError(path + ": volume and deep images cannot be compared");
+  if (count == 0 || count > max_values)
+    throw CompareError(path + ": image size " + std::to_string(image.spec.width) + "x" +
+                       std::to_string(image.spec.height) + "x" +
+                       std::to_string(image.spec.nchannels) + " is empty or too large");
+  if (!buffer.read(0, 0, true, OIIO::TypeDesc::FLOAT))
+    throw CompareError(path + ": cannot read image: " + first_line(buffer.geterror()));
+  image.pixels.resize(count);
+  if (!buffer.get_pixels(buffer.roi(), OIIO::TypeDesc::FLOAT, image.pixels.data()))
+    throw CompareError(path + ": cannot read pixels: " + first_line(buffer.geterror()));
+  return image;
+}
+
+int channel_index(const OIIO::ImageSpec& spec, const std::string& name) {
+  auto& names = spec.channelnames;
+  auto found = std::find(names.begin(), names.end(), name);
+  return found == names.end() ? -1 : int(found - names.begin());
+}
+
+// R,G,B by name; else the first three channels; else the non-alpha channels of a gray image.
+std::vector<int> color_channels(const OIIO::ImageSpec& spec) {
+  std::vector<int> rgb = {channel_index(spec, "R"), channel_index(spec, "G"), channel_index(spec, "B")};
+  if (std::count(rgb.begin(), rgb.end(), -1) == 0) return rgb;
+  if (spec.nchannels >= 3) return {0, 1, 2};
+  std::vector<int> gray;
+  for (int c = 0; c < spec.nchannels; ++c)
+    if (c != spec.alpha_channel) gray.push_back(c);
+  return gray;
+}
+
+int alpha_channel(const OIIO::ImageSpec& spec) {
+  int named = channel_index(spec, "A");
+  return named >= 0 ? named : spec.alpha_channel;
+}
+
+// Channel indices of "variance.<name>" for each color channel of `image`, or empty if any lacks.
+std::vector<int> variance_channels(const OIIO::ImageSpec& spec, const CompareImage& image,
+                                   int color_count) {
+  std::vector<int> found;
+  for (int c = 0; c < color_count; ++c) {
+    int index = channel_index(spec, "variance." + image.channel_names[c]);
+    if (index < 0) return {};
+    found.push_back(index);
+  }
+  return found;
+}
+
+// Copies channels `source` of `file` into `out` (laid out like `image`), scaled by `scale`;
+// the compared channels past source.size() (alpha) get zero.
+void copy_channels(const FileImage& file, const std::vector<int>& source, float scale,
+                   const CompareImage& image, std::vector<float>& out) {
+  int channels = image.channels(), file_channels = file.spec.nchannels;
+  out.assign(image.pixel_count() * channels, 0.0f);
+  for (size_t p = 0; p < image.pixel_count(); ++p)
+    for (size_t c = 0; c < source.size(); ++c)
+      out[p * channels + c] = file.pixels[p * file_channels + source[c]] * scale;
+}
+
+// Removes the last channel (alpha) of every pixel from `values`, if not empty.
+void drop_last_channel(std::vector<float>& values, int channels) {
+  if (values.empty()) return;
+  size_t kept = 0;
+  for (size_t i = 0; i < values.size(); ++i)
+    if (int(i % channels) != channels - 1) values[kept++] = values[i];
+  values.resize(kept);
+}
+
+void drop_alpha(CompareImage& image) {
+  drop_last_channel(image.values, image.channels());
+  drop_last_channel(image.variance, image.channels());
+  image.channel_names.pop_back();
+  image.has_alpha = false;
+}
+
+}  // namespace
+
+CompareImage read_compare_image(const std::string& path) {
+  FileImage file = read_file_image(path);
+  std::vector<int> source = color_channels(file.spec);
+  int color_count = int(source.size());
+  int alpha = alpha_channel(file.spec);
+  CompareImage image;
+  image.has_alpha = alpha >= 0 && std::find(source.begin(), source.end(), alpha) == source.end();
+  if (image.has_alpha) source.push_back(alpha);
+  image.path = path;
+  image.width = file.spec.width;
+  image.height = file.spec.height;
+  image.color_space = file.spec.get_string_attribute("oiio:ColorSpace");
+  for (int c : source) image.channel_names.push_back(file.spec.channelnames[c]);
+  copy_channels(file, source, 1.0f, image, image.values);
+  std::vector<int> variance = variance_channels(file.spec, image, color_count);
+  if (!variance.empty()) copy_channels(file, variance, 1.0f, image, image.variance);
+  return image;
+}
+
+std::vector<float> read_variance_image(const std::string& path, const CompareImage& image,
+                                       int samples_per_pixel) {
+  FileImage file = read_file_image(path);
+  if (file.spec.width != image.width || file.spec.height != image.height)
+    throw CompareError(path + ": variance image is " + std::to_string(file.spec.width) + "x" +
+                       std::to_string(file.spec.height) + " but " + image.path + " is " +
+                       std::to_string(image.width) + "x" + std::to_string(image.height));
+  int color_count = image.color_channels();
+  std::vector<int> source = variance_channels(file.spec, image, color_count);
+  if (source.empty()) source = color_channels(file.spec);
+  if (int(source.size()) != color_count) {
+    if (file.spec.nchannels != 1)
+      throw CompareError(path + ": variance image has " + std::to_string(file.spec.nchannels) +
+                         " channels; expected 1 or " + std::to_string(color_count));
+    source.assign(color_count, 0);
+  }
+  std::vector<float> variance;
+  copy_channels(file, source, 1.0f / float(samples_per_pixel), image, variance);
+  return variance;
+}
+
+void match_alpha(CompareImage& a, CompareImage& b) {
+  if (a.has_alpha && !b.has_alpha) drop_alpha(a);
+  if (b.has_alpha && !a.has_alpha) drop_alpha(b);
+}
+
+void check_comparable(const CompareImage& a, const CompareImage& b) {
+  if (a.width != b.width || a.height != b.height)
+    throw CompareError("image sizes differ: " + a.path + " is " + std::to_string(a.width) + "x" +
+                       std::to_string(a.height) + ", " + b.path + " is " +
+                       std::to_string(b.width) + "x" + std::to_string(b.height));
+  if (a.channels() != b.channels())
+    throw CompareError("channel counts differ: " + a.path + " has " +
+                       std::to_string(a.channels()) + " compared channels, " + b.path + " has " +
+                       std::to_string(b.channels()));
+}
+
+}  // namespace radiant
