@@ -33,12 +33,15 @@ inline std::string element(const std::string& name, size_t index) {
   return name + "[" + std::to_string(index) + "]";
 }
 
+// "meshes", "nodes": the plural of an element name, for messages.
+inline std::string plural(const std::string& what) { return what + (what.back() == 'h' ? "es" : "s"); }
+
 // Checks that `index` points into an array of `size` elements.
 inline void check_index(const GltfContext& context, int index, size_t size, const std::string& where,
                         const std::string& what) {
   if (index < 0 || size_t(index) >= size)
     context.fail(where, what + " " + std::to_string(index) + " out of range (" + std::to_string(size) +
-                            " " + what + "s)");
+                            " " + plural(what) + ")");
 }
 
 }  // namespace radiant

@@ -19,7 +19,7 @@ struct Checker {
   void index(int value, size_t size, bool optional, const std::string& where, const std::string& what) const {
     if (optional && value == -1) return;
     if (value < 0 || size_t(value) >= size)
-      fail(where, what + " " + std::to_string(value) + " out of range (" + std::to_string(size) + " " + what + "s)");
+      fail(where, what + " " + std::to_string(value) + " out of range (" + std::to_string(size) + " " + what + (what.back() == 'h' ? "es)" : "s)"));
   }
   void finite(float value, const std::string& where) const {
     if (!std::isfinite(value)) fail(where, "non-finite value");
