@@ -140,7 +140,9 @@ static bool load_image(tinygltf::Image* image, const int index, std::string* err
     return false;
   }
   access.bytes_charged += needed;
-  if (tinygltf::LoadImageData(image, index, err, warn, 0, 0, bytes, size, nullptr)) return true;
+  // Same layout as tinygltf's LoadImageDataOption, which only its implementation declares.
+  struct { bool preserve_channels = true; } keep_channels;
+  if (tinygltf::LoadImageData(image, index, err, warn, 0, 0, bytes, size, &keep_channels)) return true;
   refuse(access, where + ": the image could not be decoded");
   return false;
 }
