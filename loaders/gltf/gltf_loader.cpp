@@ -91,7 +91,9 @@ tinygltf::Model parse(const std::string& path, const std::string& bytes, const L
 
 }  // namespace
 
-SceneDesc load_gltf(const std::string& path, const LoadOptions& options) {
+SceneDesc load_gltf(const std::string& path, const LoadOptions& given) {
+  LoadOptions options = given;
+  if (options.max_memory_bytes == 0) options.max_memory_bytes = default_max_memory();  // called directly
   std::string bytes = read_file(path, options);
   if (bytes.size() > 0xFFFFFFFFull) throw LoadError(path + ": files over 4 GB are not supported");
   SceneDesc scene;

@@ -134,8 +134,10 @@ bool has_texcoords(const ObjData& data) { return !data.attrib.texcoords.empty();
 
 }  // namespace
 
-void append_obj(SceneDesc& scene, const std::string& path, const mat4& transform, const LoadOptions& options,
+void append_obj(SceneDesc& scene, const std::string& path, const mat4& transform, const LoadOptions& given,
                 int material_override) {
+  LoadOptions options = given;
+  if (options.max_memory_bytes == 0) options.max_memory_bytes = default_max_memory();  // called directly
   ObjData data = parse_obj(path, options, scene.warnings);
   std::vector<int> materials(data.materials.size(), material_override);
   if (material_override < 0) {
