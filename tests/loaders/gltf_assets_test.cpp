@@ -49,3 +49,47 @@ TEST_CASE("assets: the Cornell box has the measured layout, camera and light") {
   for (const MeshDesc& mesh : scene.meshes) check_winding_matches_normals(mesh);
   CHECK(scene.warnings.empty());
 }
+
+TEST_CASE("assets: the checker cube loads its external buffer and nearest-filtered texture") {
+  SceneDesc scene = load_scene(source_path("assets/models/checker-cube.gltf").string());
+  REQUIRE(scene.meshes.size() == 1);
+  CHECK(scene.meshes[0].triangle_count() == 12);
+  CHECK(scene.images.at(0).width == 64);
+  CHECK(scene.images.at(0).channels == 3);
+  CHECK(scene.textures.at(0).filter == TextureFilter::nearest);
+  CHECK(scene.cameras.size() == 1);
+  CHECK(scene.lights.at(0).kind == LightKind::point);
+  // The camera was aimed at the origin.
+  vec3 to_origin = normalize(-scene.cameras[0].position);
+  CHECK(dot(to_origin, scene.cameras[0].forward) == doctest::Approx(1));
+  for (const MeshDesc& mesh : scene.meshes) check_winding_matches_normals(mesh);
+}
+
+TEST_CASE("assets: the instanced GLB stores its box once and one mirrored copy") {
+  SceneDesc scene = load_scene(source_path("assets/models/instanced-boxes.glb").string());
+  CHECK(scene.meshes.size() == 3);  // box, ground, mirrored box
+  CHECK(scene.instances.size() == 11);
+  CHECK(scene.lights.at(0).kind == LightKind::directional);
+  CHECK(scene.cameras.size() == 1);
+}
+
+TEST_CASE("assets: the normal-mapped quad gets generated tangents") {
+  SceneDesc scene = load_scene(source_path("assets/models/normal-mapped-quad.gltf").string());
+  REQUIRE(scene.meshes.size() == 1);
+  CHECK(scene.meshes[0].tangents.size() == 4);
+  CHECK(scene.meshes[0].tangents[0].x == doctest::Approx(1));
+  CHECK(scene.materials.at(0).normal_texture.valid());
+  CHECK(scene.lights.at(0).kind == LightKind::spot);
+}
+
+TEST_CASE("assets: the textured OBJ cube maps its MTL texture") {
+  SceneDesc scene = load_scene(source_path("assets/models/textured-cube.obj").string());
+  REQUIRE(scene.meshes.size() == 1);
+  CHECK(scene.meshes[0].triangle_count() == 12);
+  CHECK(scene.materials.at(0).base_color_texture.valid());
+  CHECK(scene.images.at(0).width == 64);
+  // The OBJ and the glTF cube carry the same texture coordinates once v is flipped.
+  SceneDesc gltf = load_scene(source_path("assets/models/checker-cube.gltf").string());
+  CHECK(scene.meshes[0].texcoords0[0].y == doctest::Approx(gltf.meshes[0].texcoords0[0].y));
+  CHECK(scene.meshes[0].texcoords0[2].y == doctest::Approx(gltf.meshes[0].texcoords0[2].y));
+}
