@@ -129,7 +129,7 @@ void convert_meshes(GltfContext& context) {
     for (size_t p = 0; p < source.primitives.size(); ++p) {
       MeshDesc mesh;
       mesh.name = source.name.empty() ? element("meshes", m) : source.name;
-      if (source.primitives.size() > 1) mesh.name += "/" + std::to_string(p);
+      if (source.primitives.size() > 1) mesh.name += std::string("/").append(std::to_string(p));
       std::string where = element("meshes", m) + "." + element("primitives", p);
       if (!convert_primitive(context, source.primitives[p], where, mesh)) continue;
       context.mesh_parts[m].push_back(int(context.scene.meshes.size()));

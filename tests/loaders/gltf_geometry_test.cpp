@@ -124,3 +124,16 @@ TEST_CASE("gltf: a GLB with the same content loads the same mesh") {
   CHECK(scene.meshes.at(0).positions.size() == 4);
   CHECK(scene.meshes.at(0).indices.size() == 6);
 }
+
+TEST_CASE("gltf: unsigned int indices and non-indexed triangle lists") {
+  GltfBuilder b = quad_builder();
+  int wide = b.accessor(b.view(GltfBuilder::bytes_of(std::vector<uint32_t>{3, 2, 0})), 5125, 3, "SCALAR");
+  SceneDesc scene = load_text(b.gltf(one_primitive("{\"attributes\":{\"POSITION\":0},\"indices\":" +
+                                                   std::to_string(wide) + "}")));
+  CHECK(scene.meshes[0].indices == std::vector<uint32_t>{3, 2, 0});
+  // Without indices, vertices are taken three at a time; a trailing incomplete triangle is ignored.
+  GltfBuilder c;
+  c.floats({0, 0, 0, 1, 0, 0, 0, 1, 0, 5, 5, 5}, "VEC3", 3);
+  CHECK(load_text(c.gltf(one_primitive("{\"attributes\":{\"POSITION\":0}}"))).meshes[0].indices ==
+        std::vector<uint32_t>{0, 1, 2});
+}
