@@ -122,12 +122,12 @@ bool read_image_header(const unsigned char* bytes, size_t size, int& width, int&
   return false;
 }
 
-static bool load_image(tinygltf::Image* image, const int index, std::string* err, std::string* warn,
-                       int, int, const unsigned char* bytes, int size, void* user) {
-  auto& access = *static_cast<GltfFileAccess*>(user);
+// Charges the decoded size against the memory limit, then decodes with tinygltf's stb_image.
+static bool decode_image(GltfFileAccess& access, tinygltf::Image* image, int index, std::string* err,
+                         std::string* warn, const unsigned char* bytes, size_t size) {
   std::string where = access.file + ": " + element("images", size_t(index));
   int width = 0, height = 0, bytes_per_channel = 1;
-  if (size <= 0 || !read_image_header(bytes, size_t(size), width, height, bytes_per_channel)) {
+  if (size == 0 || size > 0x7fffffff || !read_image_header(bytes, size, width, height, bytes_per_channel)) {
     refuse(access, where + ": not a PNG or JPEG image");
     return false;
   }
@@ -142,9 +142,38 @@ static bool load_image(tinygltf::Image* image, const int index, std::string* err
   access.bytes_charged += needed;
   // Same layout as tinygltf's LoadImageDataOption, which only its implementation declares.
   struct { bool preserve_channels = true; } keep_channels;
-  if (tinygltf::LoadImageData(image, index, err, warn, 0, 0, bytes, size, &keep_channels)) return true;
+  if (tinygltf::LoadImageData(image, index, err, warn, 0, 0, bytes, int(size), &keep_channels)) return true;
   refuse(access, where + ": the image could not be decoded");
   return false;
+}
+
+// tinygltf 2.7 passes bufferView images without checking the view against its buffer, so those
+// wait for decode_buffer_view_images; files (read by read_whole_file) and data URIs are safe.
+static bool load_image(tinygltf::Image* image, const int index, std::string* err, std::string* warn,
+                       int, int, const unsigned char* bytes, int size, void* user) {
+  auto& access = *static_cast<GltfFileAccess*>(user);
+  if (image->bufferView >= 0) return true;
+  return decode_image(access, image, index, err, warn, bytes, size_t(std::max(size, 0)));
+}
+
+void decode_buffer_view_images(tinygltf::Model& model, GltfFileAccess& access) {
+  for (size_t i = 0; i < model.images.size(); ++i) {
+    tinygltf::Image& image = model.images[i];
+    if (image.bufferView < 0) continue;
+    std::string where = access.file + ": " + element("images", i) + ".bufferView";
+    if (size_t(image.bufferView) >= model.bufferViews.size())
+      throw LoadError(where + ": bufferView " + std::to_string(image.bufferView) + " out of range");
+    const tinygltf::BufferView& view = model.bufferViews[image.bufferView];
+    if (view.buffer < 0 || size_t(view.buffer) >= model.buffers.size())
+      throw LoadError(where + ": buffer " + std::to_string(view.buffer) + " out of range");
+    const std::vector<unsigned char>& data = model.buffers[view.buffer].data;
+    if (view.byteLength > data.size() || view.byteOffset > data.size() - view.byteLength)
+      throw LoadError(where + ": " + element("bufferViews", size_t(image.bufferView)) + " runs past the end of " +
+                      element("buffers", size_t(view.buffer)));
+    std::string error, warning;
+    if (!decode_image(access, &image, int(i), &error, &warning, data.data() + view.byteOffset, view.byteLength))
+      throw LoadError(access.error);
+  }
 }
 
 void install_file_access(tinygltf::TinyGLTF& gltf, GltfFileAccess& access) {

@@ -25,6 +25,9 @@ struct GltfFileAccess {
 // Points tinygltf's file system and image decoding at `access` (which must outlive `gltf`).
 void install_file_access(tinygltf::TinyGLTF& gltf, GltfFileAccess& access);
 
+// Decodes the images stored in bufferViews once their ranges are checked; throws LoadError.
+void decode_buffer_view_images(tinygltf::Model& model, GltfFileAccess& access);
+
 // Width, height and bytes per channel of a PNG or JPEG from its header; false when unknown.
 bool read_image_header(const unsigned char* bytes, size_t size, int& width, int& height,
                        int& bytes_per_channel);

@@ -86,6 +86,7 @@ tinygltf::Model parse(const std::string& path, const std::string& bytes, const L
   if (!access.error.empty()) throw LoadError(access.error);
   if (!ok) throw LoadError(path + ": " + (error.empty() ? "invalid glTF" : one_line(error)));
   if (!warning.empty()) scene.warnings.push_back(path + ": " + one_line(warning));
+  decode_buffer_view_images(model, access);
   return model;
 }
 
