@@ -62,7 +62,7 @@ ObjData parse_obj(const std::string& path, const LoadOptions& options, std::vect
   ObjData data;
   MtlReader reader(std::filesystem::absolute(path).parent_path(), path, options);
   std::string warning, error;
-  bool ok = tinyobj::LoadObj(&data.attrib, &data.shapes, &data.materials, &warning, &error, &in, &reader, true, false);
+  bool ok = tinyobj::LoadObj(&data.attrib, &data.shapes, &data.materials, &warning, &error, &in, &reader, false, false);
   if (!reader.refusal.empty()) throw LoadError(reader.refusal);
   if (!ok || !error.empty()) throw LoadError(path + ": " + (error.empty() ? "invalid OBJ" : one_line(error)));
   if (!warning.empty()) warnings.push_back(path + ": " + one_line(warning));
@@ -81,17 +81,51 @@ uint64_t pack(const tinyobj::index_t& i) {
          uint64_t(uint32_t(i.normal_index + 1));
 }
 
-void check_corner(const std::string& path, const tinyobj::attrib_t& a, const tinyobj::index_t& i, size_t face,
-                  const std::string& shape) {
+// The `f` lines tinyobjloader keeps (three corners or more), to report errors as file:line:col.
+struct FaceLine {
+  size_t line = 0;
+  std::string text;
+};
+
+std::vector<FaceLine> face_lines(const std::string& path) {
+  std::ifstream in(path);
+  std::vector<FaceLine> faces;
+  std::string text;
+  for (size_t line = 1; std::getline(in, text); ++line) {
+    std::istringstream tokens(text);
+    std::string keyword, corner;
+    int corners = 0;
+    if (!(tokens >> keyword) || keyword != "f") continue;
+    while (tokens >> corner) ++corners;
+    if (corners >= 3) faces.push_back({line, text});
+  }
+  return faces;
+}
+
+// "file:line:col" of corner `corner` of face `face` (counted over the whole file).
+std::string corner_location(const std::string& path, const std::vector<FaceLine>& faces, size_t face, size_t corner) {
+  if (face >= faces.size()) return path;
+  const std::string& text = faces[face].text;
+  size_t at = text.find('f');
+  for (size_t k = 0; k <= corner && at != std::string::npos; ++k) {
+    at = text.find_first_not_of(" \t", text.find_first_of(" \t", at));
+  }
+  std::string column = at == std::string::npos ? "" : ":" + std::to_string(at + 1);
+  return path + ":" + std::to_string(faces[face].line) + column;
+}
+
+void check_corner(const std::string& location, const tinyobj::attrib_t& a, const tinyobj::index_t& i) {
   auto fail = [&](const char* what, int index, size_t count) {
-    throw LoadError(path + ": face " + std::to_string(face) + " of '" + shape + "': " + what + " index " +
-                    std::to_string(index + 1) + " out of range (" + std::to_string(count) + ")");
+    std::string plural = what == std::string("vertex") ? "vertices" : what + std::string("s");
+    throw LoadError(location + ": " + what + " index " + std::to_string(index + 1) + " out of range (" +
+                    std::to_string(count) + " " + plural + ")");
   };
-  if (i.vertex_index < 0 || size_t(i.vertex_index) >= a.vertices.size() / 3) fail("vertex", i.vertex_index, a.vertices.size() / 3);
-  if (i.texcoord_index < -1 || (i.texcoord_index >= 0 && size_t(i.texcoord_index) >= a.texcoords.size() / 2))
-    fail("texcoord", i.texcoord_index, a.texcoords.size() / 2);
-  if (i.normal_index < -1 || (i.normal_index >= 0 && size_t(i.normal_index) >= a.normals.size() / 3))
-    fail("normal", i.normal_index, a.normals.size() / 3);
+  size_t positions = a.vertices.size() / 3, texcoords = a.texcoords.size() / 2, normals = a.normals.size() / 3;
+  if (i.vertex_index < 0 || size_t(i.vertex_index) >= positions) fail("vertex", i.vertex_index, positions);
+  if (i.texcoord_index < -1 || (i.texcoord_index >= 0 && size_t(i.texcoord_index) >= texcoords))
+    fail("texcoord", i.texcoord_index, texcoords);
+  if (i.normal_index < -1 || (i.normal_index >= 0 && size_t(i.normal_index) >= normals))
+    fail("normal", i.normal_index, normals);
 }
 
 uint32_t add_corner(MeshBuilder& builder, const tinyobj::attrib_t& a, const tinyobj::index_t& i) {
@@ -111,20 +145,32 @@ uint32_t add_corner(MeshBuilder& builder, const tinyobj::attrib_t& a, const tiny
   return it->second;
 }
 
+// Polygons become fans around their first corner (convex polygons, as OBJ exporters write them).
 std::map<int, MeshBuilder> build_meshes(const std::string& path, const ObjData& data) {
   std::map<int, MeshBuilder> builders;  // by MTL material index (-1 = none)
+  std::vector<FaceLine> lines;          // read only when an error needs a location
+  size_t face_in_file = 0;
   for (const tinyobj::shape_t& shape : data.shapes) {
     const auto& faces = shape.mesh;
-    size_t corner = 0;
-    for (size_t f = 0; f < faces.num_face_vertices.size(); ++f) {
+    size_t first = 0;
+    for (size_t f = 0; f < faces.num_face_vertices.size(); ++f, ++face_in_file) {
       size_t count = faces.num_face_vertices[f];
       int material = f < faces.material_ids.size() ? faces.material_ids[f] : -1;
       if (material >= int(data.materials.size())) material = -1;
       MeshBuilder& builder = builders[material];
-      for (size_t k = 0; k < count; ++k) check_corner(path, data.attrib, faces.indices[corner + k], f + 1, shape.name);
-      if (count == 3)
-        for (size_t k = 0; k < 3; ++k) builder.mesh.indices.push_back(add_corner(builder, data.attrib, faces.indices[corner + k]));
-      corner += count;
+      for (size_t k = 0; k < count; ++k) {
+        try {
+          check_corner(path, data.attrib, faces.indices[first + k]);
+        } catch (const LoadError&) {
+          if (lines.empty()) lines = face_lines(path);
+          check_corner(corner_location(path, lines, face_in_file, k), data.attrib, faces.indices[first + k]);
+        }
+      }
+      std::vector<uint32_t> corners(count);
+      for (size_t k = 0; k < count; ++k) corners[k] = add_corner(builder, data.attrib, faces.indices[first + k]);
+      for (size_t k = 1; k + 1 < count; ++k)
+        builder.mesh.indices.insert(builder.mesh.indices.end(), {corners[0], corners[k], corners[k + 1]});
+      first += count;
     }
   }
   return builders;

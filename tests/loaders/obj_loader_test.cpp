@@ -82,8 +82,11 @@ TEST_CASE("obj: a file with no light warns that the image will be black") {
 
 TEST_CASE("obj: out-of-range face indices are errors") {
   ScratchDir dir("obj-range");
-  std::string path = dir.write("a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n").string();
-  CHECK_THROWS_WITH_AS(load_scene(path), (path + ": face 1 of '': vertex index 9 out of range (3)").c_str(), LoadError);
+  std::string path = dir.write("a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1\n  f 1 2 3 9\n").string();
+  CHECK_THROWS_WITH_AS(load_scene(path), (path + ":6:11: vertex index 9 out of range (3 vertices)").c_str(), LoadError);
+  std::string normals = dir.write("b.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//2\n").string();
+  CHECK_THROWS_WITH_AS(load_scene(normals), (normals + ":5:13: normal index 2 out of range (1 normals)").c_str(),
+                       LoadError);
 }
 
 TEST_CASE("obj: append_obj places the meshes and can override their material") {
