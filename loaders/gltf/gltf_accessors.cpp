@@ -131,8 +131,12 @@ std::vector<float> read_elements(const GltfContext& context, const tinygltf::Acc
                                  const std::string& where) {
   size_t size = component_size(accessor.componentType);
   if (size == 0) context.fail(where, "unsupported " + component_type_name(accessor.componentType));
-  if (accessor.count > context.options.max_memory_bytes / (sizeof(float) * components))
-    context.fail(where, std::to_string(accessor.count) + " elements exceed the memory limit");
+  uint64_t limit = context.options.max_memory_bytes;
+  if (accessor.count > limit / (sizeof(float) * components) ||
+      context.bytes_charged + accessor.count * sizeof(float) * components > limit)
+    context.fail(where, std::to_string(accessor.count) + " elements exceed the memory limit of " +
+                            std::to_string(limit) + " bytes");
+  context.bytes_charged += accessor.count * sizeof(float) * components;
   std::vector<float> out(accessor.count * components, 0.0f);
   if (accessor.bufferView >= 0) {
     size_t element_size = size * components;

@@ -4,6 +4,7 @@
 
 #include <tiny_gltf.h>
 
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
@@ -20,6 +21,10 @@ struct GltfContext {
   std::vector<std::vector<int>> mesh_parts;  // glTF mesh -> its MeshDesc indices (one per primitive)
   std::map<int, int> mirrored_meshes;        // MeshDesc -> its copy with reversed winding
   int default_material = -1;                 // the glTF default material, made on first use
+  // Bytes charged against options.max_memory_bytes: the file and its buffers and images, then
+  // every accessor read (a hostile file may read one big accessor from many primitives).
+  // Mutable so that reading stays a const operation on the context.
+  mutable uint64_t bytes_charged = 0;
 
   // Throws `file: where: message`.
   [[noreturn]] void fail(const std::string& where, const std::string& message) const {

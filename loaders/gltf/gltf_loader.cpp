@@ -65,7 +65,7 @@ std::string one_line(const std::string& text) {
 }
 
 tinygltf::Model parse(const std::string& path, const std::string& bytes, const LoadOptions& options,
-                      SceneDesc& scene) {
+                      SceneDesc& scene, uint64_t& bytes_charged) {
   bool binary = bytes.compare(0, 4, "glTF") == 0;
   std::string json = binary ? glb_json_chunk(bytes, path) : bytes;
   GltfDeclarations declared = read_gltf_declarations(json, path);
@@ -87,6 +87,7 @@ tinygltf::Model parse(const std::string& path, const std::string& bytes, const L
   if (!ok) throw LoadError(path + ": " + (error.empty() ? "invalid glTF" : one_line(error)));
   if (!warning.empty()) scene.warnings.push_back(path + ": " + one_line(warning));
   decode_buffer_view_images(model, access);
+  bytes_charged = bytes.size() + access.bytes_charged;
   return model;
 }
 
@@ -99,8 +100,9 @@ SceneDesc load_gltf(const std::string& path, const LoadOptions& given) {
   if (bytes.size() > 0xFFFFFFFFull) throw LoadError(path + ": files over 4 GB are not supported");
   SceneDesc scene;
   scene.name = std::filesystem::path(path).stem().string();
-  tinygltf::Model model = parse(path, bytes, options, scene);
-  GltfContext context{model, path, options, scene, {}, {}, -1};
+  uint64_t bytes_charged = 0;
+  tinygltf::Model model = parse(path, bytes, options, scene, bytes_charged);
+  GltfContext context{model, path, options, scene, {}, {}, -1, bytes_charged};
   for (const std::string& name : model.extensionsUsed)
     if (!is_supported(name)) context.warn("extension " + name + " is not supported and is ignored");
   convert_images(context);

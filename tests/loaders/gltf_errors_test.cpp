@@ -124,3 +124,18 @@ TEST_CASE("gltf errors: a file with nothing placed has nothing to render") {
   CHECK(error_of(quad_builder().gltf(std::string(quad_mesh) + ",\"scenes\":[{\"nodes\":[]}]")) ==
         "file.gltf: scene: nothing to render (no meshes placed and no shapes)");
 }
+
+TEST_CASE("gltf errors: reading one accessor from many primitives is charged every time") {
+  GltfBuilder b = quad_builder();
+  std::string primitives;
+  for (int i = 0; i < 40; ++i) primitives += std::string(i ? "," : "") + "{\"attributes\":{\"POSITION\":0},\"indices\":1}";
+  std::string text = b.gltf("\"meshes\":[{\"primitives\":[" + primitives + "]}]" + placed);
+  LoadOptions options;
+  options.max_memory_bytes = text.size() + 60 + 1000;  // the file, its buffer, and about 20 reads
+  std::string message = error_of(text, "file.gltf", options);
+  CHECK(message.find("file.gltf: meshes[0].primitives[") == 0);
+  CHECK(message.find("elements exceed the memory limit of " + std::to_string(options.max_memory_bytes) + " bytes") !=
+        std::string::npos);
+  options.max_memory_bytes = text.size() + 60 + 40 * 72 + 16;
+  CHECK(error_of(text, "file.gltf", options) == "no error");
+}
