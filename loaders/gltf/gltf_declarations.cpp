@@ -129,6 +129,7 @@ std::vector<std::string> uris_of(const JsonValue* array) {
 
 GltfDeclarations read_gltf_declarations(const std::string& json, const std::string& file) {
   JsonReader reader{json, file};
+  if (json.compare(0, 3, "\xEF\xBB\xBF") == 0) reader.at = 3;  // a UTF-8 byte order mark, as tinygltf allows
   JsonValue root = reader.value(0);
   GltfDeclarations out;
   if (const JsonValue* buffers = member(root, "buffers")) {

@@ -26,6 +26,9 @@ TEST_CASE("gltf: an indexed quad becomes one mesh with generated +Z normals") {
   CHECK(scene.instances.size() == 1);
   CHECK(scene.materials.size() == 1);  // the glTF default material
   CHECK(scene.materials[0].name == "glTF default");
+  // A UTF-8 byte order mark is allowed.
+  std::string text = quad_builder().gltf(one_primitive("{\"attributes\":{\"POSITION\":0},\"indices\":1}"));
+  CHECK(load_text("\xEF\xBB\xBF" + text).meshes.size() == 1);
 }
 
 TEST_CASE("gltf: triangle strips alternate winding and fans share the first vertex") {
