@@ -3,9 +3,38 @@
 #include "load_scene.h"
 
 namespace radiant {
-// Placeholder so that callers link until path safety lands; it refuses every include.
-std::filesystem::path resolve_inside(const std::filesystem::path&, const std::string& uri, bool,
-                                     const std::string& where) {
-  throw LoadError(where + ": cannot include '" + uri + "': path resolution is not implemented yet");
+
+namespace fs = std::filesystem;
+
+// True when `path` (both sides canonical) lies inside `folder`.
+static bool is_inside(const fs::path& folder, const fs::path& path) {
+  auto f = folder.begin(), p = path.begin();
+  for (; f != folder.end(); ++f, ++p) {
+    if (f->empty()) continue;  // trailing separator of the folder
+    if (p == path.end() || *f != *p) return false;
+  }
+  return true;
 }
+
+fs::path resolve_inside(const fs::path& base_dir, const std::string& uri, bool allow_external,
+                        const std::string& where) {
+  if (uri.empty()) throw LoadError(where + ": empty file name");
+  if (uri.find('\0') != std::string::npos) throw LoadError(where + ": file name contains a NUL byte");
+  fs::path relative(uri);
+  if (allow_external) return (relative.is_absolute() ? relative : base_dir / relative).lexically_normal();
+  const std::string hint = " (use --allow-external-files to allow it)";
+  if (relative.is_absolute() || relative.has_root_name() || relative.has_root_directory())
+    throw LoadError(where + ": '" + uri + "' is an absolute path" + hint);
+  fs::path normal = relative.lexically_normal();
+  if (!normal.empty() && *normal.begin() == "..")
+    throw LoadError(where + ": '" + uri + "' leaves the scene's folder" + hint);
+  // Symlinks may still lead outside: compare the real locations.
+  std::error_code ec;
+  fs::path real_base = fs::weakly_canonical(fs::absolute(base_dir), ec);
+  fs::path real_file = fs::weakly_canonical(fs::absolute(base_dir / normal), ec);
+  if (ec || !is_inside(real_base, real_file))
+    throw LoadError(where + ": '" + uri + "' leads outside the scene's folder through a symlink" + hint);
+  return real_file;
+}
+
 }  // namespace radiant

@@ -1,10 +1,238 @@
 #include "obj/obj_loader.h"
 
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unordered_map>
+
+#include "file_access.h"
+#include "obj/obj_materials.h"
+#include "scene/mesh_ops.h"
+
 namespace radiant {
-void append_obj(SceneDesc&, const std::string& path, const mat4&, const LoadOptions&, int) {
-  throw LoadError(path + ": OBJ loading is not implemented yet");
+
+namespace {
+
+std::string one_line(const std::string& text) {
+  std::istringstream lines(text);
+  std::string line, out;
+  while (std::getline(lines, line)) {
+    while (!line.empty() && std::isspace((unsigned char)line.back())) line.pop_back();
+    if (!line.empty()) out += (out.empty() ? "" : "; ") + line;
+  }
+  return out;
 }
-SceneDesc load_obj(const std::string& path, const LoadOptions&) {
-  throw LoadError(path + ": OBJ loading is not implemented yet");
+
+// `mtllib` files resolve inside the OBJ's folder like every other file.
+struct MtlReader : tinyobj::MaterialReader {
+  std::filesystem::path base_dir;
+  const std::string& file;
+  const LoadOptions& options;
+  std::string refusal;
+  MtlReader(std::filesystem::path base, const std::string& f, const LoadOptions& o)
+      : base_dir(std::move(base)), file(f), options(o) {}
+  bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
+                  std::map<std::string, int>* names, std::string* warn, std::string* err) override {
+    try {
+      auto path = resolve_inside(base_dir, name, options.allow_external_files, file + ": mtllib");
+      std::ifstream in(path);
+      if (!in) throw LoadError(file + ": mtllib: cannot open '" + name + "'");
+      tinyobj::LoadMtl(names, materials, &in, warn, err);
+      return true;
+    } catch (const LoadError& error) {
+      if (refusal.empty()) refusal = error.what();
+      return false;
+    }
+  }
+};
+
+struct ObjData {
+  tinyobj::attrib_t attrib;
+  std::vector<tinyobj::shape_t> shapes;
+  std::vector<tinyobj::material_t> materials;
+};
+
+ObjData parse_obj(const std::string& path, const LoadOptions& options, std::vector<std::string>& warnings) {
+  std::error_code ec;
+  uint64_t size = std::filesystem::file_size(path, ec);
+  if (ec) throw LoadError(path + ": cannot open (" + ec.message() + ")");
+  if (size > options.max_memory_bytes / 8) throw LoadError(path + ": the file exceeds the memory limit");
+  std::ifstream in(path);
+  if (!in) throw LoadError(path + ": cannot open");
+  ObjData data;
+  MtlReader reader(std::filesystem::absolute(path).parent_path(), path, options);
+  std::string warning, error;
+  bool ok = tinyobj::LoadObj(&data.attrib, &data.shapes, &data.materials, &warning, &error, &in, &reader, false, false);
+  if (!reader.refusal.empty()) throw LoadError(reader.refusal);
+  if (!ok || !error.empty()) throw LoadError(path + ": " + (error.empty() ? "invalid OBJ" : one_line(error)));
+  if (!warning.empty()) warnings.push_back(path + ": " + one_line(warning));
+  return data;
 }
+
+// Builds one mesh per material, sharing a vertex wherever (position, texcoord, normal) repeat.
+struct MeshBuilder {
+  MeshDesc mesh;
+  std::unordered_map<uint64_t, uint32_t> vertices;  // packed index triple -> vertex
+  bool all_normals = true;
+};
+
+uint64_t pack(const tinyobj::index_t& i) {
+  return (uint64_t(uint32_t(i.vertex_index)) << 42) ^ (uint64_t(uint32_t(i.texcoord_index + 1)) << 21) ^
+         uint64_t(uint32_t(i.normal_index + 1));
+}
+
+// The `f` lines tinyobjloader keeps (three corners or more), to report errors as file:line:col.
+struct FaceLine {
+  size_t line = 0;
+  std::string text;
+};
+
+std::vector<FaceLine> face_lines(const std::string& path) {
+  std::ifstream in(path);
+  std::vector<FaceLine> faces;
+  std::string text;
+  for (size_t line = 1; std::getline(in, text); ++line) {
+    std::istringstream tokens(text);
+    std::string keyword, corner;
+    int corners = 0;
+    if (!(tokens >> keyword) || keyword != "f") continue;
+    while (tokens >> corner) ++corners;
+    if (corners >= 3) faces.push_back({line, text});
+  }
+  return faces;
+}
+
+// "file:line:col" of corner `corner` of face `face` (counted over the whole file).
+std::string corner_location(const std::string& path, const std::vector<FaceLine>& faces, size_t face, size_t corner) {
+  if (face >= faces.size()) return path;
+  const std::string& text = faces[face].text;
+  size_t at = text.find('f');
+  for (size_t k = 0; k <= corner && at != std::string::npos; ++k) {
+    at = text.find_first_not_of(" \t", text.find_first_of(" \t", at));
+  }
+  std::string column = at == std::string::npos ? "" : ":" + std::to_string(at + 1);
+  return path + ":" + std::to_string(faces[face].line) + column;
+}
+
+void check_corner(const std::string& location, const tinyobj::attrib_t& a, const tinyobj::index_t& i) {
+  auto fail = [&](const char* what, int index, size_t count) {
+    std::string plural = what == std::string("vertex") ? "vertices" : what + std::string("s");
+    throw LoadError(location + ": " + what + " index " + std::to_string(index + 1) + " out of range (" +
+                    std::to_string(count) + " " + plural + ")");
+  };
+  size_t positions = a.vertices.size() / 3, texcoords = a.texcoords.size() / 2, normals = a.normals.size() / 3;
+  if (i.vertex_index < 0 || size_t(i.vertex_index) >= positions) fail("vertex", i.vertex_index, positions);
+  if (i.texcoord_index < -1 || (i.texcoord_index >= 0 && size_t(i.texcoord_index) >= texcoords))
+    fail("texcoord", i.texcoord_index, texcoords);
+  if (i.normal_index < -1 || (i.normal_index >= 0 && size_t(i.normal_index) >= normals))
+    fail("normal", i.normal_index, normals);
+}
+
+uint32_t add_corner(MeshBuilder& builder, const tinyobj::attrib_t& a, const tinyobj::index_t& i) {
+  auto [it, inserted] = builder.vertices.try_emplace(pack(i), uint32_t(builder.mesh.positions.size()));
+  if (!inserted) return it->second;
+  MeshDesc& mesh = builder.mesh;
+  const auto& v = a.vertices;
+  mesh.positions.push_back({v[i.vertex_index * 3], v[i.vertex_index * 3 + 1], v[i.vertex_index * 3 + 2]});
+  // OBJ has v up, glTF (and radiant's sampler) v down.
+  vec2 uv = i.texcoord_index >= 0 ? vec2{a.texcoords[i.texcoord_index * 2], 1 - a.texcoords[i.texcoord_index * 2 + 1]}
+                                  : vec2{0, 0};
+  mesh.texcoords0.push_back(uv);
+  const auto& n = a.normals;
+  builder.all_normals = builder.all_normals && i.normal_index >= 0;
+  mesh.normals.push_back(i.normal_index >= 0 ? vec3{n[i.normal_index * 3], n[i.normal_index * 3 + 1], n[i.normal_index * 3 + 2]}
+                                             : vec3{0, 0, 0});
+  return it->second;
+}
+
+// Polygons become fans around their first corner (convex polygons, as OBJ exporters write them).
+std::map<int, MeshBuilder> build_meshes(const std::string& path, const ObjData& data) {
+  std::map<int, MeshBuilder> builders;  // by MTL material index (-1 = none)
+  std::vector<FaceLine> lines;          // read only when an error needs a location
+  size_t face_in_file = 0;
+  for (const tinyobj::shape_t& shape : data.shapes) {
+    const auto& faces = shape.mesh;
+    size_t first = 0;
+    for (size_t f = 0; f < faces.num_face_vertices.size(); ++f, ++face_in_file) {
+      size_t count = faces.num_face_vertices[f];
+      int material = f < faces.material_ids.size() ? faces.material_ids[f] : -1;
+      if (material >= int(data.materials.size())) material = -1;
+      MeshBuilder& builder = builders[material];
+      for (size_t k = 0; k < count; ++k) {
+        try {
+          check_corner(path, data.attrib, faces.indices[first + k]);
+        } catch (const LoadError&) {
+          if (lines.empty()) lines = face_lines(path);
+          check_corner(corner_location(path, lines, face_in_file, k), data.attrib, faces.indices[first + k]);
+        }
+      }
+      std::vector<uint32_t> corners(count);
+      for (size_t k = 0; k < count; ++k) corners[k] = add_corner(builder, data.attrib, faces.indices[first + k]);
+      for (size_t k = 1; k + 1 < count; ++k)
+        builder.mesh.indices.insert(builder.mesh.indices.end(), {corners[0], corners[k], corners[k + 1]});
+      first += count;
+    }
+  }
+  return builders;
+}
+
+bool has_texcoords(const ObjData& data) { return !data.attrib.texcoords.empty(); }
+
+}  // namespace
+
+void append_obj(SceneDesc& scene, const std::string& path, const mat4& transform, const LoadOptions& given,
+                int material_override) {
+  LoadOptions options = given;
+  if (options.max_memory_bytes == 0) options.max_memory_bytes = default_max_memory();  // called directly
+  ObjData data = parse_obj(path, options, scene.warnings);
+  std::vector<int> materials(data.materials.size(), material_override);
+  if (material_override < 0) {
+    ObjTextureLoader textures{scene, std::filesystem::absolute(path).parent_path(), path, options, {}, 0};
+    for (size_t m = 0; m < data.materials.size(); ++m) {
+      materials[m] = int(scene.materials.size());
+      scene.materials.push_back(convert_mtl_material(textures, data.materials[m]));
+    }
+  }
+  size_t dropped = 0;
+  for (auto& [material, builder] : build_meshes(path, data)) {
+    MeshDesc& mesh = builder.mesh;
+    if (material >= 0) {
+      mesh.material = materials[material];
+      mesh.name = data.materials[material].name;
+    } else if (material_override >= 0) {
+      mesh.material = material_override;
+    } else {
+      // Faces without `usemtl` get a plain grey diffuse material.
+      MaterialDesc plain;
+      plain.name = "default";
+      plain.kd = {0.8f, 0.8f, 0.8f};
+      mesh.material = int(scene.materials.size());
+      scene.materials.push_back(plain);
+    }
+    if (mesh.name.empty()) mesh.name = std::filesystem::path(path).stem().string();
+    dropped += drop_degenerate_triangles(mesh);
+    if (mesh.indices.empty()) continue;
+    if (!has_texcoords(data)) mesh.texcoords0.clear();
+    if (!builder.all_normals) generate_normals(mesh);
+    else if (size_t bad = repair_normals(mesh))
+      scene.warnings.push_back(path + ": " + std::to_string(bad) + " zero-length normals recomputed");
+    if (scene.materials[mesh.material].normal_texture.valid()) generate_tangents(mesh);
+    scene.instances.push_back({int(scene.meshes.size()), transform, mesh.name});
+    scene.meshes.push_back(std::move(mesh));
+  }
+  if (dropped > 0) scene.warnings.push_back(path + ": " + std::to_string(dropped) + " degenerate triangles dropped");
+  scene.degenerate_triangles_dropped += dropped;
+}
+
+SceneDesc load_obj(const std::string& path, const LoadOptions& options) {
+  SceneDesc scene;
+  scene.name = std::filesystem::path(path).stem().string();
+  append_obj(scene, path, mat4{}, options);
+  bool emissive = false;
+  for (const MaterialDesc& material : scene.materials) emissive = emissive || !is_black(material.emission);
+  if (scene.lights.empty() && !emissive)
+    scene.warnings.push_back(path + ": no lights or emissive materials: the image will be black unless --env-color is given");
+  return scene;
+}
+
 }  // namespace radiant

@@ -1,5 +1,136 @@
 #include "scene/validate.h"
 
+#include <cmath>
+
+#include "load_scene.h"
+
 namespace radiant {
-void validate_scene(const SceneDesc&) {}
+
+namespace {
+
+struct Checker {
+  const SceneDesc& scene;
+
+  [[noreturn]] void fail(const std::string& where, const std::string& message) const {
+    throw LoadError(scene.source_path + ": " + where + ": " + message);
+  }
+  static std::string at(const std::string& name, size_t index) { return name + "[" + std::to_string(index) + "]"; }
+
+  void index(int value, size_t size, bool optional, const std::string& where, const std::string& what) const {
+    if (optional && value == -1) return;
+    if (value < 0 || size_t(value) >= size)
+      fail(where, what + " " + std::to_string(value) + " out of range (" + std::to_string(size) + " " + what + (what.back() == 'h' ? "es)" : "s)"));
+  }
+  void finite(float value, const std::string& where) const {
+    if (!std::isfinite(value)) fail(where, "non-finite value");
+  }
+  void finite(vec3 value, const std::string& where) const {
+    if (!is_finite(value)) fail(where, "non-finite value");
+  }
+  void unit(vec3 value, const std::string& where) const {
+    finite(value, where);
+    if (!(length(value) > 0)) fail(where, "zero-length direction");
+  }
+  template <typename T>
+  void sized(const std::vector<T>& values, size_t vertices, const std::string& where) const {
+    if (!values.empty() && values.size() != vertices)
+      fail(where, std::to_string(values.size()) + " values for " + std::to_string(vertices) + " vertices");
+  }
+
+  void texture_ref(const TextureRef& ref, const std::string& where) const {
+    index(ref.texture, scene.textures.size(), true, where + ".texture", "texture");
+    finite({ref.offset.x, ref.offset.y, ref.rotation}, where + ".transform");
+    finite({ref.scale.x, ref.scale.y, 0}, where + ".transform");
+  }
+
+  void material(const MaterialDesc& m, const std::string& where) const {
+    for (vec3 c : {m.ka, m.kd, m.ks, m.kr, m.kt, m.base_color, m.emission}) finite(c, where);
+    for (float f : {m.shininess, m.ior, m.alpha, m.metallic, m.roughness, m.transmission, m.normal_scale,
+                    m.alpha_cutoff})
+      finite(f, where);
+    texture_ref(m.base_color_texture, where + ".base_color_texture");
+    texture_ref(m.metallic_roughness_texture, where + ".metallic_roughness_texture");
+    texture_ref(m.normal_texture, where + ".normal_texture");
+    texture_ref(m.transmission_texture, where + ".transmission_texture");
+    texture_ref(m.specular_texture, where + ".specular_texture");
+    texture_ref(m.alpha_texture, where + ".alpha_texture");
+    texture_ref(m.emission_texture, where + ".emission_texture");
+  }
+
+  void mesh(const MeshDesc& m, const std::string& where) const {
+    index(m.material, scene.materials.size(), false, where + ".material", "material");
+    size_t vertices = m.positions.size();
+    sized(m.normals, vertices, where + ".normals");
+    sized(m.tangents, vertices, where + ".tangents");
+    sized(m.texcoords0, vertices, where + ".texcoords0");
+    sized(m.texcoords1, vertices, where + ".texcoords1");
+    sized(m.colors, vertices, where + ".colors");
+    if (m.indices.size() % 3 != 0) fail(where + ".indices", "not a multiple of 3");
+    for (size_t i = 0; i < m.indices.size(); ++i)
+      if (m.indices[i] >= vertices)
+        fail(at(where + ".indices", i), "index " + std::to_string(m.indices[i]) + " out of range (" +
+                                           std::to_string(vertices) + " vertices)");
+    for (size_t i = 0; i < vertices; ++i) finite(m.positions[i], at(where + ".positions", i));
+    for (size_t i = 0; i < m.normals.size(); ++i) unit(m.normals[i], at(where + ".normals", i));
+  }
+
+  void image(const ImageDesc& image, const std::string& where) const {
+    if (image.width <= 0 || image.height <= 0 || image.channels <= 0 || image.channels > 4)
+      fail(where, "invalid size " + std::to_string(image.width) + "x" + std::to_string(image.height) + "x" +
+                      std::to_string(image.channels));
+    size_t texels = size_t(image.width) * size_t(image.height) * size_t(image.channels);
+    if (image.texels8.size() != texels && image.texels_float.size() != texels)
+      fail(where, "texel count does not match the size");
+  }
+
+  void camera(const CameraDesc& c, const std::string& where) const {
+    finite(c.position, where + ".position");
+    unit(c.forward, where + ".forward");
+    unit(c.up, where + ".up");
+    if (!(c.vertical_fov_degrees > 0 && c.vertical_fov_degrees < 180)) fail(where, "field of view out of (0, 180)");
+    if (!(c.ortho_height > 0) || !std::isfinite(c.ortho_height)) fail(where, "orthographic height must be positive");
+    if (!(c.aspect >= 0) || !std::isfinite(c.aspect)) fail(where, "aspect must be positive");
+  }
+
+  void light(const LightDesc& l, const std::string& where) const {
+    finite(l.intensity, where + ".intensity");
+    finite(l.position, where + ".position");
+    if (l.kind == LightKind::directional || l.kind == LightKind::spot) unit(l.direction, where + ".direction");
+    for (float f : {l.kc, l.kl, l.kq, l.spot_exponent, l.inner_cone, l.outer_cone, l.range})
+      finite(f, where);
+  }
+
+  void shape(const ShapeDesc& s, const std::string& where) const {
+    index(s.material, scene.materials.size(), false, where + ".material", "material");
+    finite(s.center, where + ".center");
+    if (s.kind != ShapeKind::sphere) unit(s.axis, where + ".axis");
+    if (!(s.radius > 0) || !std::isfinite(s.radius)) fail(where + ".radius", "must be positive");
+    if (s.kind == ShapeKind::cylinder && (!(s.height > 0) || !std::isfinite(s.height)))
+      fail(where + ".height", "must be positive");
+  }
+
+  void run() const {
+    for (size_t i = 0; i < scene.images.size(); ++i) image(scene.images[i], at("images", i));
+    for (size_t i = 0; i < scene.textures.size(); ++i)
+      index(scene.textures[i].image, scene.images.size(), false, at("textures", i) + ".image", "image");
+    for (size_t i = 0; i < scene.materials.size(); ++i) material(scene.materials[i], at("materials", i));
+    for (size_t i = 0; i < scene.meshes.size(); ++i) mesh(scene.meshes[i], at("meshes", i));
+    for (size_t i = 0; i < scene.instances.size(); ++i) {
+      std::string where = at("instances", i);
+      index(scene.instances[i].mesh, scene.meshes.size(), false, where + ".mesh", "mesh");
+      if (!is_finite(scene.instances[i].transform)) fail(where + ".transform", "non-finite value");
+    }
+    for (size_t i = 0; i < scene.shapes.size(); ++i) shape(scene.shapes[i], at("shapes", i));
+    for (size_t i = 0; i < scene.cameras.size(); ++i) camera(scene.cameras[i], at("cameras", i));
+    for (size_t i = 0; i < scene.lights.size(); ++i) light(scene.lights[i], at("lights", i));
+    finite(scene.environment.color, "environment.color");
+    finite(scene.environment.map_scale, "environment.map_scale");
+    if (scene.instances.empty() && scene.shapes.empty()) fail("scene", "nothing to render (no meshes placed and no shapes)");
+  }
+};
+
+}  // namespace
+
+void validate_scene(const SceneDesc& scene) { Checker{scene}.run(); }
+
 }  // namespace radiant

@@ -1,0 +1,52 @@
+// State shared by the parts of the glTF loader: the parsed model, the scene being filled, and
+// the maps from glTF indices to SceneDesc indices.
+#pragma once
+
+#include <tiny_gltf.h>
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "load_scene.h"
+
+namespace radiant {
+
+struct GltfContext {
+  const tinygltf::Model& model;
+  const std::string& file;  // the path as given, prefixed to every message
+  const LoadOptions& options;
+  SceneDesc& scene;
+  std::vector<std::vector<int>> mesh_parts;  // glTF mesh -> its MeshDesc indices (one per primitive)
+  std::map<int, int> mirrored_meshes;        // MeshDesc -> its copy with reversed winding
+  int default_material = -1;                 // the glTF default material, made on first use
+  // Bytes charged against options.max_memory_bytes: the file and its buffers and images, then
+  // every accessor read (a hostile file may read one big accessor from many primitives).
+  // Mutable so that reading stays a const operation on the context.
+  mutable uint64_t bytes_charged = 0;
+
+  // Throws `file: where: message`.
+  [[noreturn]] void fail(const std::string& where, const std::string& message) const {
+    throw LoadError(file + ": " + where + ": " + message);
+  }
+  void warn(const std::string& message) { scene.warnings.push_back(file + ": " + message); }
+};
+
+// "name[index]", the JSON path of an array element.
+inline std::string element(const std::string& name, size_t index) {
+  return name + "[" + std::to_string(index) + "]";
+}
+
+// "meshes", "nodes": the plural of an element name, for messages.
+inline std::string plural(const std::string& what) { return what + (what.back() == 'h' ? "es" : "s"); }
+
+// Checks that `index` points into an array of `size` elements.
+inline void check_index(const GltfContext& context, int index, size_t size, const std::string& where,
+                        const std::string& what) {
+  if (index < 0 || size_t(index) >= size)
+    context.fail(where, what + " " + std::to_string(index) + " out of range (" + std::to_string(size) +
+                            " " + plural(what) + ")");
+}
+
+}  // namespace radiant

@@ -1,0 +1,168 @@
+#include "gltf/gltf_declarations.h"
+
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <memory>
+
+#include "load_scene.h"
+
+namespace radiant {
+
+// ---------------------------------------------------------------- a minimal JSON reader
+
+namespace {
+
+struct JsonValue {
+  enum class Kind { null, boolean, number, string, array, object } kind = Kind::null;
+  double number = 0;
+  std::string text;
+  std::vector<JsonValue> items;
+  std::map<std::string, JsonValue> members;
+};
+
+// Recursive descent with a depth limit, so hostile nesting cannot overflow the stack.
+struct JsonReader {
+  const std::string& in;
+  const std::string& file;
+  size_t at = 0;
+  static constexpr int max_depth = 128;
+
+  [[noreturn]] void fail(const std::string& message) const {
+    throw LoadError(file + ": invalid JSON at byte " + std::to_string(at) + ": " + message);
+  }
+  void skip_space() {
+    while (at < in.size() && (in[at] == ' ' || in[at] == '\t' || in[at] == '\n' || in[at] == '\r')) ++at;
+  }
+  bool take(char c) {
+    skip_space();
+    if (at < in.size() && in[at] == c) return ++at, true;
+    return false;
+  }
+  void expect(char c) {
+    if (!take(c)) fail(std::string("expected '") + c + "'");
+  }
+
+  JsonValue value(int depth) {
+    if (depth > max_depth) fail("nested too deeply");
+    skip_space();
+    if (at >= in.size()) fail("unexpected end");
+    JsonValue v;
+    char c = in[at];
+    if (c == '{') {
+      v.kind = JsonValue::Kind::object;
+      ++at;
+      if (take('}')) return v;
+      do {
+        skip_space();
+        std::string key = string();
+        expect(':');
+        v.members[key] = value(depth + 1);
+      } while (take(','));
+      expect('}');
+    } else if (c == '[') {
+      v.kind = JsonValue::Kind::array;
+      ++at;
+      if (take(']')) return v;
+      do v.items.push_back(value(depth + 1));
+      while (take(','));
+      expect(']');
+    } else if (c == '"') {
+      v.kind = JsonValue::Kind::string;
+      v.text = string();
+    } else if (literal("true") || literal("false")) {
+      v.kind = JsonValue::Kind::boolean;
+    } else if (literal("null")) {
+    } else {
+      v.kind = JsonValue::Kind::number;
+      v.number = number();
+    }
+    return v;
+  }
+  bool literal(const char* word) {
+    size_t n = std::strlen(word);
+    if (in.compare(at, n, word) != 0) return false;
+    at += n;
+    return true;
+  }
+  double number() {
+    size_t start = at;
+    while (at < in.size() && std::strchr("+-0123456789.eE", in[at])) ++at;
+    if (start == at) fail("unexpected character");
+    return std::strtod(in.substr(start, at - start).c_str(), nullptr);
+  }
+  // Escapes other than \" and \\ are kept as written: the reader only compares URIs.
+  std::string string() {
+    if (at >= in.size() || in[at] != '"') fail("expected a string");
+    std::string out;
+    for (++at; at < in.size() && in[at] != '"'; ++at) {
+      if (in[at] == '\\' && at + 1 < in.size()) {
+        char e = in[++at];
+        if (e == '"' || e == '\\' || e == '/') out += e;
+        else out += '\\', out += e;
+      } else {
+        out += in[at];
+      }
+    }
+    if (at >= in.size()) fail("unterminated string");
+    ++at;
+    return out;
+  }
+};
+
+const JsonValue* member(const JsonValue& object, const std::string& key) {
+  auto it = object.members.find(key);
+  return it == object.members.end() ? nullptr : &it->second;
+}
+
+std::vector<std::string> uris_of(const JsonValue* array) {
+  std::vector<std::string> uris;
+  if (!array) return uris;
+  for (const JsonValue& item : array->items) {
+    const JsonValue* uri = member(item, "uri");
+    uris.push_back(uri ? uri->text : "");
+  }
+  return uris;
+}
+
+}  // namespace
+
+GltfDeclarations read_gltf_declarations(const std::string& json, const std::string& file) {
+  JsonReader reader{json, file};
+  if (json.compare(0, 3, "\xEF\xBB\xBF") == 0) reader.at = 3;  // a UTF-8 byte order mark, as tinygltf allows
+  JsonValue root = reader.value(0);
+  GltfDeclarations out;
+  if (const JsonValue* buffers = member(root, "buffers")) {
+    for (size_t i = 0; i < buffers->items.size(); ++i) {
+      const JsonValue* length = member(buffers->items[i], "byteLength");
+      double bytes = length ? length->number : 0;
+      if (!(bytes >= 0 && bytes < 1.8e19))
+        throw LoadError(file + ": buffers[" + std::to_string(i) + "].byteLength: invalid size");
+      out.buffer_byte_lengths.push_back(uint64_t(bytes));
+    }
+  }
+  out.buffer_uris = uris_of(member(root, "buffers"));
+  out.image_uris = uris_of(member(root, "images"));
+  if (const JsonValue* required = member(root, "extensionsRequired"))
+    for (const JsonValue& name : required->items) out.extensions_required.push_back(name.text);
+  return out;
+}
+
+// ---------------------------------------------------------------- GLB container
+
+static uint32_t read_u32(const std::string& bytes, size_t offset) {
+  uint32_t v = 0;
+  std::memcpy(&v, bytes.data() + offset, 4);
+  return v;  // GLB is little-endian, as is every platform radiant builds on
+}
+
+std::string glb_json_chunk(const std::string& bytes, const std::string& file) {
+  if (bytes.size() < 20 || bytes.compare(0, 4, "glTF") != 0)
+    throw LoadError(file + ": not a GLB file (bad header)");
+  uint32_t chunk_length = read_u32(bytes, 12), chunk_type = read_u32(bytes, 16);
+  if (chunk_type != 0x4E4F534Au || chunk_length > bytes.size() - 20)
+    throw LoadError(file + ": GLB: the first chunk is not a complete JSON chunk");
+  return bytes.substr(20, chunk_length);
+}
+
+}  // namespace radiant

@@ -1,0 +1,185 @@
+#include "gltf/gltf_files.h"
+
+#include <fstream>
+
+#include "file_access.h"
+#include "gltf/gltf_context.h"
+
+namespace radiant {
+
+namespace fs = std::filesystem;
+
+static std::string percent_decoded(const std::string& uri) {
+  std::string out;
+  for (size_t i = 0; i < uri.size(); ++i) {
+    if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit((unsigned char)uri[i + 1]) &&
+        std::isxdigit((unsigned char)uri[i + 2])) {
+      out += char(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
+      i += 2;
+    } else {
+      out += uri[i];
+    }
+  }
+  return out;
+}
+
+// The JSON path of the element whose URI tinygltf asks for, for messages.
+static std::string where_of(const GltfFileAccess& access, const std::string& uri) {
+  auto find = [&](const std::vector<std::string>& uris, const char* name) -> std::string {
+    for (size_t i = 0; i < uris.size(); ++i)
+      if (uris[i] == uri || percent_decoded(uris[i]) == uri) return element(name, i) + ".uri";
+    return "";
+  };
+  std::string where = find(access.declarations->buffer_uris, "buffers");
+  if (where.empty()) where = find(access.declarations->image_uris, "images");
+  if (where.empty()) where = "uri '" + uri + "'";
+  return access.file + ": " + where;
+}
+
+static void refuse(GltfFileAccess& access, const std::string& message) {
+  if (access.error.empty()) access.error = message;
+}
+
+static bool file_exists(const std::string& path, void*) {
+  std::error_code ec;
+  return !path.empty() && fs::is_regular_file(path, ec);
+}
+
+// tinygltf asks for "<uri>" (base dir "") and then "./<uri>"; both resolve inside the scene folder.
+static std::string expand_file_path(const std::string& path, void* user) {
+  auto& access = *static_cast<GltfFileAccess*>(user);
+  std::string uri = path.rfind("./", 0) == 0 ? path.substr(2) : path;
+  try {
+    return resolve_inside(access.base_dir, uri, access.options->allow_external_files,
+                          where_of(access, uri))
+        .string();
+  } catch (const LoadError& error) {
+    refuse(access, error.what());
+    return "";
+  }
+}
+
+static bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                            void* user) {
+  auto& access = *static_cast<GltfFileAccess*>(user);
+  std::error_code ec;
+  uint64_t size = fs::file_size(path, ec);
+  if (ec) return *err = ec.message(), false;
+  if (access.bytes_charged + size > access.options->max_memory_bytes) {
+    refuse(access, access.file + ": '" + path + "' (" + std::to_string(size) +
+                       " bytes) exceeds the memory limit of " +
+                       std::to_string(access.options->max_memory_bytes) + " bytes");
+    return false;
+  }
+  access.bytes_charged += size;
+  std::ifstream in(path, std::ios::binary);
+  out->resize(size);
+  if (!in.read(reinterpret_cast<char*>(out->data()), std::streamsize(size)))
+    return *err = "read failed", false;
+  return true;
+}
+
+static bool write_whole_file(std::string* err, const std::string&, const std::vector<unsigned char>&,
+                             void*) {
+  *err = "radiant never writes glTF files";
+  return false;
+}
+
+// ---------------------------------------------------------------- images
+
+static uint32_t big_endian(const unsigned char* p, int bytes) {
+  uint32_t v = 0;
+  for (int i = 0; i < bytes; ++i) v = (v << 8) | p[i];
+  return v;
+}
+
+bool read_image_header(const unsigned char* bytes, size_t size, int& width, int& height,
+                       int& bytes_per_channel) {
+  static const unsigned char png[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  if (size >= 25 && std::equal(png, png + 8, bytes) && std::equal(bytes + 12, bytes + 16, "IHDR")) {
+    width = int(std::min<uint32_t>(big_endian(bytes + 16, 4), 1u << 30));
+    height = int(std::min<uint32_t>(big_endian(bytes + 20, 4), 1u << 30));
+    bytes_per_channel = bytes[24] == 16 ? 2 : 1;
+    return true;
+  }
+  if (size < 4 || bytes[0] != 0xFF || bytes[1] != 0xD8) return false;
+  // JPEG: walk the segments up to the first start-of-frame marker.
+  for (size_t at = 2; at + 9 < size;) {
+    if (bytes[at] != 0xFF) return false;
+    unsigned char marker = bytes[at + 1];
+    if (marker == 0xFF) { ++at; continue; }
+    bool start_of_frame = marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 &&
+                          marker != 0xCC;
+    if (start_of_frame) {
+      height = int(big_endian(bytes + at + 5, 2));
+      width = int(big_endian(bytes + at + 7, 2));
+      bytes_per_channel = bytes[at + 4] > 8 ? 2 : 1;
+      return true;
+    }
+    if ((marker >= 0xD0 && marker <= 0xD9) || marker == 0x01) { at += 2; continue; }
+    at += 2 + big_endian(bytes + at + 2, 2);
+  }
+  return false;
+}
+
+// Charges the decoded size against the memory limit, then decodes with tinygltf's stb_image.
+static bool decode_image(GltfFileAccess& access, tinygltf::Image* image, int index, std::string* err,
+                         std::string* warn, const unsigned char* bytes, size_t size) {
+  std::string where = access.file + ": " + element("images", size_t(index));
+  int width = 0, height = 0, bytes_per_channel = 1;
+  if (size == 0 || size > 0x7fffffff || !read_image_header(bytes, size, width, height, bytes_per_channel)) {
+    refuse(access, where + ": not a PNG or JPEG image");
+    return false;
+  }
+  // Four channels is the most stb_image decodes into.
+  uint64_t needed = uint64_t(width) * uint64_t(height) * 4 * uint64_t(bytes_per_channel);
+  if (access.bytes_charged + needed > access.options->max_memory_bytes) {
+    refuse(access, where + ": a " + std::to_string(width) + "x" + std::to_string(height) +
+                       " image exceeds the memory limit of " +
+                       std::to_string(access.options->max_memory_bytes) + " bytes");
+    return false;
+  }
+  access.bytes_charged += needed;
+  // Same layout as tinygltf's LoadImageDataOption, which only its implementation declares.
+  struct { bool preserve_channels = true; } keep_channels;
+  if (tinygltf::LoadImageData(image, index, err, warn, 0, 0, bytes, int(size), &keep_channels)) return true;
+  refuse(access, where + ": the image could not be decoded");
+  return false;
+}
+
+// tinygltf 2.7 passes bufferView images without checking the view against its buffer, so those
+// wait for decode_buffer_view_images; files (read by read_whole_file) and data URIs are safe.
+static bool load_image(tinygltf::Image* image, const int index, std::string* err, std::string* warn,
+                       int, int, const unsigned char* bytes, int size, void* user) {
+  auto& access = *static_cast<GltfFileAccess*>(user);
+  if (image->bufferView >= 0) return true;
+  return decode_image(access, image, index, err, warn, bytes, size_t(std::max(size, 0)));
+}
+
+void decode_buffer_view_images(tinygltf::Model& model, GltfFileAccess& access) {
+  for (size_t i = 0; i < model.images.size(); ++i) {
+    tinygltf::Image& image = model.images[i];
+    if (image.bufferView < 0) continue;
+    std::string where = access.file + ": " + element("images", i) + ".bufferView";
+    if (size_t(image.bufferView) >= model.bufferViews.size())
+      throw LoadError(where + ": bufferView " + std::to_string(image.bufferView) + " out of range");
+    const tinygltf::BufferView& view = model.bufferViews[image.bufferView];
+    if (view.buffer < 0 || size_t(view.buffer) >= model.buffers.size())
+      throw LoadError(where + ": buffer " + std::to_string(view.buffer) + " out of range");
+    const std::vector<unsigned char>& data = model.buffers[view.buffer].data;
+    if (view.byteLength > data.size() || view.byteOffset > data.size() - view.byteLength)
+      throw LoadError(where + ": " + element("bufferViews", size_t(image.bufferView)) + " runs past the end of " +
+                      element("buffers", size_t(view.buffer)));
+    std::string error, warning;
+    if (!decode_image(access, &image, int(i), &error, &warning, data.data() + view.byteOffset, view.byteLength))
+      throw LoadError(access.error);
+  }
+}
+
+void install_file_access(tinygltf::TinyGLTF& gltf, GltfFileAccess& access) {
+  gltf.SetFsCallbacks({&file_exists, &expand_file_path, &read_whole_file, &write_whole_file, &access});
+  gltf.SetImageLoader(&load_image, &access);
+  gltf.SetPreserveImageChannels(true);
+}
+
+}  // namespace radiant

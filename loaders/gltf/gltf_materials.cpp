@@ -1,0 +1,167 @@
+#include "gltf/gltf_materials.h"
+
+#include <cmath>
+
+namespace radiant {
+
+// ---------------------------------------------------------------- images and textures
+
+void convert_images(GltfContext& context) {
+  for (size_t i = 0; i < context.model.images.size(); ++i) {
+    const tinygltf::Image& source = context.model.images[i];
+    ImageDesc image;
+    image.name = source.name.empty() ? (source.uri.rfind("data:", 0) == 0 ? element("images", i) : source.uri)
+                                     : source.name;
+    image.width = source.width;
+    image.height = source.height;
+    image.channels = source.component;
+    size_t texels = size_t(std::max(0, source.width)) * size_t(std::max(0, source.height)) *
+                    size_t(std::max(0, source.component));
+    size_t bytes_per_channel = source.bits == 16 ? 2 : 1;
+    if (texels == 0 || source.image.size() != texels * bytes_per_channel)
+      context.fail(element("images", i), "the image could not be decoded");
+    image.texels8.resize(texels);
+    // 16-bit PNGs keep their high byte: textures are 8-bit in radiant.
+    for (size_t t = 0; t < texels; ++t)
+      image.texels8[t] = bytes_per_channel == 2 ? source.image[t * 2 + 1] : source.image[t];
+    context.scene.images.push_back(std::move(image));
+  }
+}
+
+static TextureWrap wrap_mode(int mode) {
+  switch (mode) {
+    case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE: return TextureWrap::clamp_to_edge;
+    case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT: return TextureWrap::mirrored_repeat;
+    default: return TextureWrap::repeat;
+  }
+}
+
+void convert_textures(GltfContext& context) {
+  const auto& model = context.model;
+  for (size_t i = 0; i < model.textures.size(); ++i) {
+    const tinygltf::Texture& source = model.textures[i];
+    std::string where = element("textures", i);
+    TextureDesc texture;
+    if (source.source < 0) context.fail(where, "texture has no image source");
+    check_index(context, source.source, model.images.size(), where + ".source", "image");
+    texture.image = source.source;
+    if (source.sampler >= 0) {
+      check_index(context, source.sampler, model.samplers.size(), where + ".sampler", "sampler");
+      const tinygltf::Sampler& sampler = model.samplers[source.sampler];
+      texture.wrap_s = wrap_mode(sampler.wrapS);
+      texture.wrap_t = wrap_mode(sampler.wrapT);
+      if (sampler.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST) texture.filter = TextureFilter::nearest;
+    }
+    context.scene.textures.push_back(texture);
+  }
+}
+
+// ---------------------------------------------------------------- materials
+
+static double number(const tinygltf::Value& object, const char* key, double fallback) {
+  if (!object.IsObject() || !object.Has(key) || !object.Get(key).IsNumber()) return fallback;
+  return object.Get(key).GetNumberAsDouble();
+}
+
+static const tinygltf::Value* extension(const tinygltf::ExtensionMap& extensions, const char* name) {
+  auto it = extensions.find(name);
+  return it == extensions.end() ? nullptr : &it->second;
+}
+
+static vec2 pair_of(const tinygltf::Value& object, const char* key, vec2 fallback) {
+  if (!object.Has(key)) return fallback;
+  const tinygltf::Value& v = object.Get(key);
+  if (!v.IsArray() || v.ArrayLen() != 2 || !v.Get(0).IsNumber() || !v.Get(1).IsNumber()) return fallback;
+  return {float(v.Get(0).GetNumberAsDouble()), float(v.Get(1).GetNumberAsDouble())};
+}
+
+static TextureRef texture_ref(const GltfContext& context, int index, int texcoord,
+                              const tinygltf::ExtensionMap& extensions, const std::string& where) {
+  TextureRef ref;
+  if (index < 0) return ref;
+  check_index(context, index, context.model.textures.size(), where + ".index", "texture");
+  ref.texture = index;
+  ref.texcoord = texcoord;
+  if (const tinygltf::Value* transform = extension(extensions, "KHR_texture_transform")) {
+    ref.offset = pair_of(*transform, "offset", ref.offset);
+    ref.scale = pair_of(*transform, "scale", ref.scale);
+    ref.rotation = float(number(*transform, "rotation", 0));
+    ref.texcoord = int(number(*transform, "texCoord", texcoord));
+  }
+  if (ref.texcoord < 0 || ref.texcoord > 1)
+    context.fail(where + ".texCoord", "TEXCOORD_" + std::to_string(ref.texcoord) + " is not supported (0 or 1)");
+  return ref;
+}
+
+static color3 color_of(const std::vector<double>& factor, color3 fallback) {
+  if (factor.size() < 3) return fallback;
+  return {float(factor[0]), float(factor[1]), float(factor[2])};
+}
+
+static MaterialDesc convert_material(const GltfContext& context, const tinygltf::Material& source,
+                                     const std::string& where) {
+  MaterialDesc material;
+  material.name = source.name;
+  material.model = MaterialModel::metallic_roughness;
+  const auto& pbr = source.pbrMetallicRoughness;
+  material.base_color = color_of(pbr.baseColorFactor, {1, 1, 1});
+  if (pbr.baseColorFactor.size() == 4) material.alpha = float(pbr.baseColorFactor[3]);
+  material.metallic = float(pbr.metallicFactor);
+  material.roughness = float(pbr.roughnessFactor);
+  std::string pbr_where = where + ".pbrMetallicRoughness";
+  material.base_color_texture = texture_ref(context, pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
+                                            pbr.baseColorTexture.extensions, pbr_where + ".baseColorTexture");
+  material.metallic_roughness_texture =
+      texture_ref(context, pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
+                  pbr.metallicRoughnessTexture.extensions, pbr_where + ".metallicRoughnessTexture");
+  material.normal_texture = texture_ref(context, source.normalTexture.index, source.normalTexture.texCoord,
+                                        source.normalTexture.extensions, where + ".normalTexture");
+  material.normal_scale = float(source.normalTexture.scale);
+  material.emission_texture = texture_ref(context, source.emissiveTexture.index, source.emissiveTexture.texCoord,
+                                          source.emissiveTexture.extensions, where + ".emissiveTexture");
+  float strength = 1;
+  if (const tinygltf::Value* emissive = extension(source.extensions, "KHR_materials_emissive_strength"))
+    strength = float(number(*emissive, "emissiveStrength", 1));
+  material.emission = color_of(source.emissiveFactor, {0, 0, 0}) * strength;
+  if (source.alphaMode == "MASK") material.alpha_mode = AlphaMode::mask;
+  else if (source.alphaMode == "BLEND") material.alpha_mode = AlphaMode::blend;
+  material.alpha_cutoff = float(source.alphaCutoff);
+  material.double_sided = source.doubleSided;
+  if (const tinygltf::Value* transmission = extension(source.extensions, "KHR_materials_transmission")) {
+    material.transmission = float(number(*transmission, "transmissionFactor", 0));
+    if (transmission->Has("transmissionTexture")) {
+      const tinygltf::Value& info = transmission->Get("transmissionTexture");
+      material.transmission_texture = texture_ref(context, int(number(info, "index", -1)),
+                                                  int(number(info, "texCoord", 0)), {},
+                                                  where + ".extensions.KHR_materials_transmission.transmissionTexture");
+    }
+  }
+  if (const tinygltf::Value* ior = extension(source.extensions, "KHR_materials_ior"))
+    material.ior = float(number(*ior, "ior", 1.5));
+  material.unlit = extension(source.extensions, "KHR_materials_unlit") != nullptr;
+  return material;
+}
+
+void convert_materials(GltfContext& context) {
+  for (size_t i = 0; i < context.model.materials.size(); ++i)
+    context.scene.materials.push_back(convert_material(context, context.model.materials[i], element("materials", i)));
+}
+
+int scene_material(GltfContext& context, int index, const std::string& where) {
+  if (index >= 0) {
+    check_index(context, index, context.model.materials.size(), where, "material");
+    return index;
+  }
+  if (context.default_material < 0) {
+    // glTF 2.0 section 3.9.6: white, fully metallic and rough, opaque, single-sided.
+    MaterialDesc material;
+    material.name = "glTF default";
+    material.model = MaterialModel::metallic_roughness;
+    material.double_sided = false;
+    context.default_material = int(context.scene.materials.size());
+    context.scene.materials.push_back(material);
+  }
+  return context.default_material;
+}
+
+}  // namespace radiant

@@ -1,0 +1,17 @@
+// glTF images, textures (with samplers) and metallic-roughness materials to SceneDesc.
+#pragma once
+
+#include "gltf/gltf_context.h"
+
+namespace radiant {
+
+// Appends every glTF image, texture and material, keeping glTF indices (offset by what the scene
+// already held; for glTF files that is zero).
+void convert_images(GltfContext& context);
+void convert_textures(GltfContext& context);
+void convert_materials(GltfContext& context);
+
+// The SceneDesc material for glTF material `index` (-1 = the shared glTF default material).
+int scene_material(GltfContext& context, int index, const std::string& where);
+
+}  // namespace radiant

@@ -1,0 +1,84 @@
+// glTF materials, textures and samplers to MaterialDesc.
+#include <doctest/doctest.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include "loaders/gltf_builder.h"
+#include "load_scene.h"
+#include "support/test_support.h"
+
+using namespace radiant;
+using namespace radiant::test;
+
+// A 2x1 RGB PNG: red then blue.
+static void write_png(const std::filesystem::path& path) {
+  const unsigned char texels[6] = {255, 0, 0, 0, 0, 255};
+  auto out = OIIO::ImageOutput::create(path.string());
+  REQUIRE(out);
+  out->open(path.string(), OIIO::ImageSpec(2, 1, 3, OIIO::TypeDesc::UINT8));
+  out->write_image(OIIO::TypeDesc::UINT8, texels);
+  out->close();
+}
+
+TEST_CASE("gltf materials: factors, textures, samplers and the supported extensions") {
+  ScratchDir dir("gltf-materials");
+  write_png(dir.file("albedo.png"));
+  GltfBuilder b = quad_builder();
+  b.floats({0, 1, 1, 1, 1, 0, 0, 0}, "VEC2", 2);  // glTF v runs down the image
+  std::string body =
+      "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0,\"TEXCOORD_0\":2},\"indices\":1,\"material\":0},"
+      "{\"attributes\":{\"POSITION\":0},\"indices\":1}]}],"
+      "\"nodes\":[{\"mesh\":0}],\"scenes\":[{\"nodes\":[0]}],"
+      "\"images\":[{\"uri\":\"albedo.png\"}],\"samplers\":[{\"magFilter\":9728,\"wrapS\":33071,\"wrapT\":33648}],"
+      "\"textures\":[{\"source\":0,\"sampler\":0}],"
+      "\"materials\":[{\"name\":\"paint\",\"pbrMetallicRoughness\":{\"baseColorFactor\":[0.5,0.25,1,0.75],"
+      "\"metallicFactor\":0.1,\"roughnessFactor\":0.3,\"baseColorTexture\":{\"index\":0,\"extensions\":{"
+      "\"KHR_texture_transform\":{\"offset\":[0.5,0],\"scale\":[2,2],\"rotation\":0.25,\"texCoord\":1}}}},"
+      "\"normalTexture\":{\"index\":0,\"scale\":0.5},\"emissiveFactor\":[1,0.5,0],\"alphaMode\":\"MASK\","
+      "\"alphaCutoff\":0.25,\"doubleSided\":true,\"extensions\":{\"KHR_materials_emissive_strength\":"
+      "{\"emissiveStrength\":4},\"KHR_materials_transmission\":{\"transmissionFactor\":0.9},"
+      "\"KHR_materials_ior\":{\"ior\":1.33},\"KHR_materials_unlit\":{}}}]";
+  SceneDesc scene = load_scene(dir.write("m.gltf", b.gltf(body)).string());
+  REQUIRE(scene.materials.size() == 2);
+  const MaterialDesc& m = scene.materials[0];
+  CHECK(m.model == MaterialModel::metallic_roughness);
+  CHECK(m.base_color.y == 0.25f);
+  CHECK(m.alpha == 0.75f);
+  CHECK(m.metallic == doctest::Approx(0.1));
+  CHECK(m.roughness == doctest::Approx(0.3));
+  CHECK(m.base_color_texture.texture == 0);
+  CHECK(m.base_color_texture.texcoord == 1);
+  CHECK(m.base_color_texture.offset.x == 0.5f);
+  CHECK(m.base_color_texture.scale.y == 2);
+  CHECK(m.base_color_texture.rotation == 0.25f);
+  CHECK(m.normal_scale == 0.5f);
+  CHECK(m.emission.x == 4);
+  CHECK(m.emission.y == 2);
+  CHECK(m.alpha_mode == AlphaMode::mask);
+  CHECK(m.alpha_cutoff == 0.25f);
+  CHECK(m.transmission == doctest::Approx(0.9));
+  CHECK(m.ior == doctest::Approx(1.33));
+  CHECK(m.unlit);
+  CHECK(scene.materials[1].name == "glTF default");
+  CHECK(scene.meshes[1].material == 1);
+  REQUIRE(scene.textures.size() == 1);
+  CHECK(scene.textures[0].filter == TextureFilter::nearest);
+  CHECK(scene.textures[0].wrap_s == TextureWrap::clamp_to_edge);
+  CHECK(scene.textures[0].wrap_t == TextureWrap::mirrored_repeat);
+  REQUIRE(scene.images.size() == 1);
+  CHECK(scene.images[0].width == 2);
+  CHECK(scene.images[0].channels == 3);
+  CHECK(scene.images[0].texels8 == std::vector<uint8_t>{255, 0, 0, 0, 0, 255});
+  // The normal map asks for tangents: generated along +u, right-handed.
+  REQUIRE(scene.meshes[0].tangents.size() == 4);
+  CHECK(scene.meshes[0].tangents[0].x == doctest::Approx(1));
+  CHECK(scene.meshes[0].tangents[0].w == -1);  // v grows along -y: a left-handed frame
+}
+
+TEST_CASE("gltf materials: an image that is not PNG or JPEG is refused by name") {
+  ScratchDir dir("gltf-bad-image");
+  dir.write("fake.png", "not an image at all");
+  std::string path = dir.write("m.gltf", quad_builder().gltf(std::string(quad_mesh) +
+      ",\"nodes\":[{\"mesh\":0}],\"scenes\":[{\"nodes\":[0]}],\"images\":[{\"uri\":\"fake.png\"}]")).string();
+  CHECK_THROWS_WITH_AS(load_scene(path), (path + ": images[0]: not a PNG or JPEG image").c_str(), LoadError);
+}

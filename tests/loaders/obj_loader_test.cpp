@@ -1,0 +1,102 @@
+// OBJ/MTL to SceneDesc: one mesh per material, Phong mapping, v flipped to the glTF convention.
+#include <doctest/doctest.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include "load_scene.h"
+#include "obj/obj_loader.h"
+#include "support/test_support.h"
+
+using namespace radiant;
+using namespace radiant::test;
+
+static const char* two_material_obj =
+    "mtllib m.mtl\n"
+    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+    "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+    "vn 0 0 1\n"
+    "g left\nusemtl glass\nf 1/1/1 2/2/1 3/3/1 4/4/1\n"
+    "g right\nusemtl mirror\nf 1/1/1 2/2/1 3/3/1\n"
+    "usemtl glass\nf 1/1/1 3/3/1 4/4/1\n";
+
+static const char* materials_mtl =
+    "newmtl glass\nKd 0.1 0.2 0.3\nKs 0.5 0.5 0.5\nNs 64\nNi 1.45\nd 0.25\nillum 7\n"
+    "newmtl mirror\nKd 0 0 0\nKs 0.9 0.8 0.7\nillum 3\nKe 2 2 2\nmap_Kd tex.png\nmap_bump tex.png\nmap_d tex.png\n";
+
+static void write_texture(const std::filesystem::path& path) {
+  const unsigned char texels[4] = {10, 20, 30, 40};
+  auto out = OIIO::ImageOutput::create(path.string());
+  REQUIRE(out);
+  out->open(path.string(), OIIO::ImageSpec(2, 2, 1, OIIO::TypeDesc::UINT8));
+  out->write_image(OIIO::TypeDesc::UINT8, texels);
+  out->close();
+}
+
+TEST_CASE("obj: polygons are triangulated into one mesh per material with the MTL mapping") {
+  ScratchDir dir("obj-materials");
+  dir.write("m.mtl", materials_mtl);
+  write_texture(dir.file("tex.png"));
+  SceneDesc scene = load_scene(dir.write("a.obj", two_material_obj).string());
+  REQUIRE(scene.meshes.size() == 2);
+  REQUIRE(scene.materials.size() == 2);
+  const MeshDesc& glass_mesh = scene.meshes[0];
+  CHECK(glass_mesh.name == "glass");
+  CHECK(glass_mesh.triangle_count() == 3);  // the quad's two triangles and the last face
+  CHECK(glass_mesh.positions.size() == 4);  // corners shared across faces
+  CHECK(glass_mesh.texcoords0[2].y == 0);   // vt 1 1 -> v' = 1 - 1
+  CHECK(glass_mesh.texcoords0[0].y == 1);
+  CHECK(glass_mesh.normals[0].z == 1);
+  const MaterialDesc& glass = scene.materials[glass_mesh.material];
+  CHECK(glass.model == MaterialModel::phong);
+  CHECK(glass.kd.z == doctest::Approx(0.3));
+  CHECK(glass.shininess == 64);
+  CHECK(glass.ior == doctest::Approx(1.45));
+  CHECK(glass.kt.x == doctest::Approx(0.75));  // 1 - d
+  CHECK(glass.kr.x == doctest::Approx(0.5));   // illum 7 reflects too
+  CHECK(glass.alpha == 1);
+  const MaterialDesc& mirror = scene.materials[scene.meshes[1].material];
+  CHECK(mirror.kr.y == doctest::Approx(0.8));
+  CHECK(is_black(mirror.kt));
+  CHECK(mirror.emission.x == 2);
+  CHECK(mirror.base_color_texture.valid());
+  CHECK(mirror.normal_texture.texture == mirror.base_color_texture.texture);  // one texture per file
+  CHECK(mirror.alpha_texture.valid());
+  CHECK(mirror.alpha_mode == AlphaMode::mask);
+  REQUIRE(scene.images.size() == 1);
+  CHECK(scene.images[0].channels == 1);
+  CHECK(scene.images[0].texels8 == std::vector<uint8_t>{10, 20, 30, 40});
+  CHECK(scene.meshes[1].tangents.size() == scene.meshes[1].positions.size());
+  CHECK(scene.warnings.empty());
+}
+
+TEST_CASE("obj: a file with no light warns that the image will be black") {
+  ScratchDir dir("obj-dark");
+  std::string path = dir.write("a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").string();
+  SceneDesc scene = load_scene(path);
+  CHECK(scene.meshes.at(0).normals.at(0).z == doctest::Approx(1));
+  CHECK(scene.materials.at(0).kd.x == doctest::Approx(0.8));
+  REQUIRE(scene.warnings.size() == 1);
+  CHECK(scene.warnings[0] ==
+        path + ": no lights or emissive materials: the image will be black unless --env-color is given");
+}
+
+TEST_CASE("obj: out-of-range face indices are errors") {
+  ScratchDir dir("obj-range");
+  std::string path = dir.write("a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1\n  f 1 2 3 9\n").string();
+  CHECK_THROWS_WITH_AS(load_scene(path), (path + ":6:11: vertex index 9 out of range (3 vertices)").c_str(), LoadError);
+  std::string normals = dir.write("b.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//2\n").string();
+  CHECK_THROWS_WITH_AS(load_scene(normals), (normals + ":5:13: normal index 2 out of range (1 normals)").c_str(),
+                       LoadError);
+}
+
+TEST_CASE("obj: append_obj places the meshes and can override their material") {
+  ScratchDir dir("obj-append");
+  std::string path = dir.write("a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").string();
+  SceneDesc scene;
+  scene.materials.push_back({});
+  append_obj(scene, path, translation({0, 0, 5}), {}, 0);
+  REQUIRE(scene.instances.size() == 1);
+  CHECK(scene.instances[0].transform.m[2][3] == 5);
+  CHECK(scene.meshes[0].material == 0);
+  CHECK(scene.materials.size() == 1);
+}
