@@ -199,9 +199,11 @@ void refine_shape_point(const ShapeDesc& s, vec3 approximate, vec3 normal, vec3&
     }
   }
   point = to_float(p);
-  // The only error left is rounding the double result to float (plus margin for the
-  // shape parameters themselves being floats).
-  error = abs(point) * rounding_gamma(4) + vec3{1, 1, 1} * (std::abs(s.radius) * rounding_gamma(4));
+  // The only error left is rounding the double result to float (plus margin for the shape
+  // parameters being floats), taken on every axis as for triangles.
+  float largest = max_component(abs(point)) * rounding_gamma(4);
+  if (s.kind != ShapeKind::plane) largest += std::abs(s.radius) * rounding_gamma(4);
+  error = {largest, largest, largest};
 }
 
 }  // namespace radiant

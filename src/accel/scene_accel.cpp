@@ -133,10 +133,12 @@ RTCScene build_mesh_scene(SceneAccel& accel, int mesh_index) {
 void attach_instances(SceneAccel& accel) {
   const SceneDesc& scene = *accel.scene;
   accel.instance_inverse.resize(scene.instances.size());
+  accel.instance_orientation.resize(scene.instances.size());
   for (size_t i = 0; i < scene.instances.size(); ++i) {
     const InstanceDesc& instance = scene.instances[i];
     if (!inverse_affine(instance.transform, accel.instance_inverse[i]))
       throw std::runtime_error("instances[" + std::to_string(i) + "]: singular transform");
+    accel.instance_orientation[i] = determinant3(instance.transform) < 0 ? -1.0f : 1.0f;
     RTCGeometry geometry = rtcNewGeometry(accel.device, RTC_GEOMETRY_TYPE_INSTANCE);
     rtcSetGeometryInstancedScene(geometry, accel.mesh_scenes[instance.mesh]);
     float rows[12];

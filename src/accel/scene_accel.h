@@ -30,6 +30,7 @@ struct SceneAccel {
   RTCScene top = nullptr;
   std::vector<RTCScene> mesh_scenes;
   std::vector<mat4> instance_inverse;  // world to object, per instance
+  std::vector<float> instance_orientation;  // sign of the transform's determinant
   unsigned shape_geometry = RTC_INVALID_GEOMETRY_ID;
   // Alpha-mask filter data, one per mesh (a material in MASK mode only).
   struct AlphaMask {

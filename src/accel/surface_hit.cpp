@@ -40,11 +40,18 @@ void fill_triangle_hit(const SceneAccel& accel, const HitId& id, SurfaceHit& hit
   vec3 object_error = rounding_gamma(7) * (abs(b0 * p0) + abs(b1 * p1) + abs(b2 * p2));
   hit.position = transform_point(to_world, object_point);
   vec3 translation = {to_world.m[0][3], to_world.m[1][3], to_world.m[2][3]};
-  hit.position_error = (1 + rounding_gamma(3)) * abs_transform_vector(to_world, object_error) +
-                       rounding_gamma(3) * (abs_transform_vector(to_world, abs(object_point)) + abs(translation));
+  vec3 error = (1 + rounding_gamma(3)) * abs_transform_vector(to_world, object_error) +
+               rounding_gamma(3) * (abs_transform_vector(to_world, abs(object_point)) + abs(translation));
+  // Embree's own ray-plane arithmetic mixes all three coordinates, so a surface lying in a
+  // coordinate plane (error 0 along its normal) still needs an offset: use the largest bound
+  // on every axis.
+  float largest = max_component(error);
+  hit.position_error = {largest, largest, largest};
 
-  // The inverse transpose keeps the authored front side even for mirroring transforms.
-  hit.geometric_normal = normalize(transform_normal(to_object, cross(p1 - p0, p2 - p0)));
+  // The front side is where the world-space winding is counter-clockwise (glTF): the inverse
+  // transpose of the object normal, flipped for mirroring transforms.
+  hit.geometric_normal =
+      normalize(transform_normal(to_object, cross(p1 - p0, p2 - p0))) * accel.instance_orientation[id.instance];
   hit.shading_normal = hit.geometric_normal;
   if (!mesh.normals.empty()) {
     vec3 n = normalize(transform_normal(to_object, interpolate(mesh.normals, tri, b0, b1, b2)));

@@ -53,7 +53,9 @@ void add_emissive_triangles(const SceneDesc& scene, LightTable& table) {
       light.p2 = transform_point(instance.transform, mesh.positions[mesh.indices[3 * t + 2]]);
       vec3 object_normal = cross(mesh.positions[mesh.indices[3 * t + 1]] - mesh.positions[mesh.indices[3 * t]],
                                  mesh.positions[mesh.indices[3 * t + 2]] - mesh.positions[mesh.indices[3 * t]]);
-      light.normal = normalize(transform_normal(inverse, object_normal));
+      // World-space winding decides the front side, as in make_surface_hit.
+      light.normal = normalize(transform_normal(inverse, object_normal)) *
+                     (determinant3(instance.transform) < 0 ? -1.0f : 1.0f);
       light.area = 0.5f * length(cross(light.p1 - light.p0, light.p2 - light.p0));
       light.material = mesh.material;
       light.two_sided = scene.materials[mesh.material].double_sided;

@@ -340,8 +340,7 @@ TEST_CASE("@mesh matrix is row-major, 12 or 16 numbers") {
   check_vec3(transform_point(full, {1, 1, 1}), {3, 2, 2});
 }
 
-// Enabled by the lead once resolve_inside and append_obj land (they are stubs in this branch).
-TEST_CASE("@mesh includes an OBJ file with its transform and a material override" * doctest::skip()) {
+TEST_CASE("@mesh includes an OBJ file with its transform and a material override") {
   test::ScratchDir dir("scene-mesh");
   dir.write("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
   std::istringstream in("@mesh\nfile tri.obj\ntranslate 0 0 -5\nkd 0.5\n");

@@ -99,3 +99,21 @@ TEST_CASE("whitted: an opaque occluder leaves exactly the ambient term; kt = 0.5
     CHECK(pixel_mean(r.film.at(2, 5)).x == doctest::Approx(ambient_term + kt * direct).epsilon(1e-4));
   }
 }
+
+TEST_CASE("whitted: a triangle mesh lying in the plane y = 0 is lit, not shadowed by itself") {
+  // Regression: the error bound of a point with y exactly 0 was 0 along the normal, so shadow
+  // rays started on the surface and Embree hit it again at t = 0.
+  SceneDesc scene;
+  int m = add_diffuse(scene, {1, 1, 1});
+  add_quad(scene, {-3, 0, 3}, {3, 0, 3}, {3, 0, -3}, {-3, 0, -3}, m);
+  scene.lights.push_back(point_light({0, 2, 0}, {4, 4, 4}));
+  scene.cameras.push_back(ortho_camera({0, 5, 0}, {0, -1, 0}, {0, 0, -1}, 4));
+  RenderResult r = render_scene(scene, one_sample_whitted());
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 8; ++x) {
+      vec3 p = plane_point(x, y);
+      vec3 to_light = vec3{0, 2, 0} - p;
+      float d = length(to_light);
+      CHECK(pixel_mean(r.film.at(x, y)).x == doctest::Approx(4 * (2 / d) / (d * d) / pi).epsilon(1e-4));
+    }
+}
