@@ -48,10 +48,11 @@ struct RenderContext {
 using RadianceFunction = color3 (*)(const RenderContext& ctx, const Ray& ray, const SampleContext& sample,
                                     RayCounts& counts, FirstHit* first_hit);
 
-// The material at a hit: resolved per hit when textures are on, looked up once otherwise.
+// The material at a hit: resolved per hit when textures or normal maps are on (both read
+// texels), looked up once otherwise.
 template <uint32_t E>
 SurfaceMaterial material_at(const RenderContext& ctx, const SurfaceHit& hit) {
-  if (enabled<E>(ctx.effects, effect_textures))
+  if (enabled<E>(ctx.effects, effect_textures) || enabled<E>(ctx.effects, effect_normal_maps))
     return resolve_material(*ctx.scene, ctx.scene->materials[hit.material], hit.attributes);
   else
     return ctx.flat_materials[hit.material];

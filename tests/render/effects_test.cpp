@@ -1,6 +1,8 @@
 // Effect analysis, specialised integrators and switching effects off.
 #include <doctest/doctest.h>
 
+#include <cmath>
+
 #include "load_scene.h"
 #include "scene/effects.h"
 #include "support/scene_builders.h"
@@ -91,4 +93,29 @@ TEST_CASE("effects: switching shadows off brightens exactly the shadowed pixels;
     without_reflection += pixel_mean(unreflected.pixels[i]).x;
   }
   CHECK(without_reflection < with_reflection);
+}
+
+TEST_CASE("effects: a normal map alone (no other texture) perturbs shading; -normal-maps flattens it") {
+  // Regression: with normal maps but no color textures the material was resolved once per
+  // render, so every pixel used the normal-map texel at uv (0, 0).
+  SceneDesc scene = load_scene(source_path("assets/models/normal-mapped-quad.gltf").string());
+  CHECK(effect_names(analyze_effects(scene).mask) == "direct,shadows,reflection,normal-maps,indirect");
+  RenderOptions o;
+  o.width = 48, o.height = 48, o.spp = 1, o.mode = RenderMode::whitted;
+  Film bumpy = render_scene(scene, o).film;
+  o.effects = "-normal-maps";
+  Film flat = render_scene(scene, o).film;
+  int changed = 0, lit = 0;
+  for (size_t i = 0; i < bumpy.pixels.size(); ++i) {
+    float a = pixel_mean(bumpy.pixels[i]).x, b = pixel_mean(flat.pixels[i]).x;
+    if (b > 0.05f) ++lit, changed += std::abs(a - b) > 0.05f * b;
+  }
+  CHECK(lit > 500);
+  CHECK(changed > lit / 4);
+}
+
+TEST_CASE("effects: glTF and OBJ assets call for the effects their content needs") {
+  CHECK(effect_names(asset_effects("assets/cornell.gltf")) == "shadows,emission,indirect");
+  CHECK(effect_names(asset_effects("assets/models/checker-cube.gltf")) == "direct,shadows,reflection,textures,indirect");
+  CHECK(effect_names(asset_effects("assets/models/textured-cube.obj")) == "textures");
 }
