@@ -1,5 +1,5 @@
 // Translation and scale invariance: the same scene at the origin, 1e5 and 1e6 units away, and
-// scaled by 1e-4 and 1e4, renders the same image, and its lit plane shows the exact analytic
+// scaled by 1e-4 and 1e4, renders the same image, and every lit surface shows the exact analytic
 // value with no shadow acne and no light leaking into shadows (docs/stability.md, case 1).
 #include <doctest/doctest.h>
 
@@ -55,27 +55,27 @@ ReferenceScene unit_reference() {
   return r;
 }
 
-struct PlaneCheck {
+struct SurfaceCheck {
   int lit = 0, shadowed = 0;
   int dark_speckles = 0;   // lit pixels below half their analytic value (shadow acne)
   int light_leaks = 0;     // shadowed pixels brighter than the ambient term
   float max_lit_relative_error = 0;
 };
 
-PlaneCheck check_plane(const Film& film, float margin) {
+SurfaceCheck check_surfaces(const Film& film, float margin) {
   SceneDesc unit = sphere_and_box_on_plane({0, 0, 0}, 1);
   CameraFrame frame = make_camera_frame(unit.cameras[0], image_size, image_size);
   ReferenceScene reference = unit_reference();
-  PlaneCheck check;
+  SurfaceCheck check;
   for (int y = 0; y < image_size; ++y)
     for (int x = 0; x < image_size; ++x) {
       ReferencePixel expected = reference_pixel(reference, generate_camera_ray(frame, x + 0.5f, y + 0.5f), margin);
       float got = pixel_mean(film.at(x, y)).x;
-      if (expected.kind == ReferenceKind::lit_plane) {
+      if (expected.kind == ReferenceKind::lit) {
         ++check.lit;
         check.dark_speckles += got < 0.5f * expected.value;
         check.max_lit_relative_error = std::max(check.max_lit_relative_error, std::abs(got - expected.value) / expected.value);
-      } else if (expected.kind == ReferenceKind::shadowed_plane) {
+      } else if (expected.kind == ReferenceKind::shadowed) {
         ++check.shadowed;
         check.light_leaks += std::abs(got - expected.value) > 1e-6f;
       }
@@ -88,9 +88,10 @@ struct Placement {
   const char* name;
   vec3 offset;
   float scale;
-  // Lit plane pixels against the analytic value. At the origin and under pure scaling only float
-  // rounding of the shading remains (~1e-7); far away, hit points are quantised to the float
-  // spacing there (1/128 unit at 1e5, 1/16 at 1e6), which moves d^2 and cos by ~|offset| * 2^-24.
+  // Lit pixels against the analytic value. At the origin and under pure scaling only float
+  // rounding remains (measured 5e-6, mostly in the float reference itself); far away, hit points
+  // are quantised to the float spacing there (1/128 unit at 1e5, 1/16 at 1e6), which moves d^2
+  // and cos by ~spacing / distance / cos: measured 0.75% at 1e5 and 2.9% at 1e6, at grazing light.
   float lit_relative_tolerance;
   // Keep-out distance around silhouettes and shadow edges (unit-scene units): the ray-origin
   // offset, sized by the error bound, is ~0.25 units at 1e6, and moves shadow edges by as much.
@@ -102,12 +103,12 @@ struct Placement {
 };
 
 constexpr Placement placements[] = {
-    {"origin", {0, 0, 0}, 1, 1e-5f, 0.02f, 0, 0},
-    {"offset 1e5", {1e5f, 1e5f, 1e5f}, 1, 0.005f, 0.02f, 1e-3, 0.01},
-    {"offset 1e6", {1e6f, 1e6f, 1e6f}, 1, 0.03f, 0.1f, 1e-2, 0.1},
-    {"offset (1e6, -1e6, 0)", {1e6f, -1e6f, 0}, 1, 0.03f, 0.1f, 1e-2, 0.1},
-    {"scale 1e-4", {0, 0, 0}, 1e-4f, 1e-5f, 0.02f, 1e-4, 0.01},
-    {"scale 1e4", {0, 0, 0}, 1e4f, 1e-5f, 0.02f, 1e-4, 0.01},
+    {"origin", {0, 0, 0}, 1, 5e-5f, 0.02f, 0, 0},
+    {"offset 1e5", {1e5f, 1e5f, 1e5f}, 1, 0.02f, 0.02f, 1e-3, 0.01},
+    {"offset 1e6", {1e6f, 1e6f, 1e6f}, 1, 0.08f, 0.1f, 1e-2, 0.1},
+    {"offset (1e6, -1e6, 0)", {1e6f, -1e6f, 0}, 1, 0.08f, 0.1f, 1e-2, 0.1},
+    {"scale 1e-4", {0, 0, 0}, 1e-4f, 5e-5f, 0.02f, 1e-4, 0.01},
+    {"scale 1e4", {0, 0, 0}, 1e4f, 5e-5f, 0.02f, 1e-4, 0.01},
 };
 
 }  // namespace
@@ -115,15 +116,15 @@ constexpr Placement placements[] = {
 TEST_CASE("stability: a sphere and a box on a plane render the same at the origin, 1e5 and 1e6 away, and scaled by 1e-4 and 1e4") {
   RenderResult origin = render_finite(sphere_and_box_on_plane({0, 0, 0}, 1), whitted_options(image_size));
   for (const Placement& placement : placements) {
-    CAPTURE(placement.name);
+    CAPTURE(std::string(placement.name));
     RenderResult r = render_finite(sphere_and_box_on_plane(placement.offset, placement.scale), whitted_options(image_size));
-    PlaneCheck plane = check_plane(r.film, placement.edge_margin);
+    SurfaceCheck surfaces = check_surfaces(r.film, placement.edge_margin);
     // The reference must actually cover both regions, or the checks below prove nothing.
-    CHECK(plane.lit > 400);
-    CHECK(plane.shadowed > 100);
-    CHECK(plane.dark_speckles == 0);
-    CHECK(plane.light_leaks == 0);
-    CHECK(plane.max_lit_relative_error <= placement.lit_relative_tolerance);
+    CHECK(surfaces.lit > 400);
+    CHECK(surfaces.shadowed > 100);
+    CHECK(surfaces.dark_speckles == 0);
+    CHECK(surfaces.light_leaks == 0);
+    CHECK(surfaces.max_lit_relative_error <= placement.lit_relative_tolerance);
     FilmDifference d = compare_films(origin.film, r.film, 0.01, 0.05);
     CHECK(d.mean_absolute <= placement.mean_difference_tolerance);
     CHECK(d.fraction_over <= placement.differing_fraction_tolerance);
