@@ -24,7 +24,9 @@ constexpr float fixed_epsilon = 1e-4f;
 constexpr float min_cos_into_sphere = 0.5f;
 constexpr float min_far_side_distance = 0.25f;
 
-enum class Surface { sphere, plane, instanced_quad };
+// exact_quad: axis-aligned in y = 0 under a pure translation, so that at the origin its hit
+// points are exact and their error bound is zero (the case offset_ray_origin's floor is for).
+enum class Surface { sphere, plane, instanced_quad, exact_quad };
 
 SceneDesc single_surface(Surface kind, vec3 offset) {
   SceneDesc scene;
@@ -32,7 +34,8 @@ SceneDesc single_surface(Surface kind, vec3 offset) {
   switch (kind) {
     case Surface::sphere: add_sphere(scene, offset, 1, m); break;
     case Surface::plane: add_plane(scene, offset, {1, 2, 3}, m); break;
-    case Surface::instanced_quad: {
+    case Surface::instanced_quad:
+    case Surface::exact_quad: {
       MeshDesc quad;
       quad.material = m;
       quad.positions = {{-1, 0, -1}, {-1, 0, 1}, {1, 0, 1}, {1, 0, -1}};
@@ -40,7 +43,8 @@ SceneDesc single_surface(Surface kind, vec3 offset) {
       scene.meshes.push_back(quad);
       InstanceDesc instance;
       instance.mesh = 0;
-      instance.transform = translation(offset) * rotation_axis({1, 1, 0}, 30);
+      instance.transform = translation(offset);
+      if (kind == Surface::instanced_quad) instance.transform = instance.transform * rotation_axis({1, 1, 0}, 30);
       scene.instances.push_back(instance);
       break;
     }
@@ -114,11 +118,12 @@ std::string surface_name(Surface kind) {
     case Surface::sphere: return "sphere";
     case Surface::plane: return "plane";
     case Surface::instanced_quad: return "instanced quad";
+    case Surface::exact_quad: return "axis-aligned quad";
   }
   return "";
 }
 
-constexpr Surface all_surfaces[] = {Surface::sphere, Surface::plane, Surface::instanced_quad};
+constexpr Surface all_surfaces[] = {Surface::sphere, Surface::plane, Surface::instanced_quad, Surface::exact_quad};
 const vec3 placements[] = {{0, 0, 0}, {1e5f, -1e5f, 1e5f}, {1e6f, 1e6f, -1e6f}};
 
 }  // namespace
