@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "accel/ray.h"
+#include "film/film.h"
+#include "render/camera.h"
 
 namespace radiant::test {
 
@@ -142,6 +144,35 @@ inline ReferencePixel reference_pixel(const ReferenceScene& scene, const Ray& ra
     pixel.value = scene.ambient;
   }
   return pixel;
+}
+
+struct ReferenceCheck {
+  int lit = 0, shadowed = 0;
+  int dark_speckles = 0;  // lit pixels below half their analytic value (shadow acne)
+  int light_leaks = 0;    // shadowed pixels not exactly the ambient term
+  float max_lit_relative_error = 0;
+};
+
+// Compares a one-sample-per-pixel Whitted film (samples through pixel centres) taken with
+// `camera` against the reference, pixel by pixel.
+inline ReferenceCheck check_against_reference(const Film& film, const CameraDesc& camera,
+                                              const ReferenceScene& reference, float margin) {
+  CameraFrame frame = make_camera_frame(camera, film.width, film.height);
+  ReferenceCheck check;
+  for (int y = 0; y < film.height; ++y)
+    for (int x = 0; x < film.width; ++x) {
+      ReferencePixel expected = reference_pixel(reference, generate_camera_ray(frame, x + 0.5f, y + 0.5f), margin);
+      float got = pixel_mean(film.at(x, y)).x;
+      if (expected.kind == ReferenceKind::lit) {
+        ++check.lit;
+        check.dark_speckles += got < 0.5f * expected.value;
+        check.max_lit_relative_error = std::max(check.max_lit_relative_error, std::abs(got - expected.value) / expected.value);
+      } else if (expected.kind == ReferenceKind::shadowed) {
+        ++check.shadowed;
+        check.light_leaks += std::abs(got - expected.value) > 1e-6f;
+      }
+    }
+  return check;
 }
 
 }  // namespace radiant::test
