@@ -60,7 +60,7 @@ TEST_CASE("shapes: a ray tangent to a sphere touches it once at the tangent poin
   }
 }
 
-TEST_CASE("shapes: a ray lying in a plane or parallel to it never hits; a nearly parallel ray hits far away") {
+TEST_CASE("shapes: a ray lying in a plane or parallel to it never hits, and a nearly parallel ray hits far away") {
   ShapeHit hit;
   ShapeDesc ground = plane({0, 0, 0}, {0, 1, 0});
   CHECK_FALSE(intersect_shape(ground, {{0, 0, 0}, {1, 0, 0}}, 0, hit));

@@ -71,7 +71,7 @@ TEST_CASE("transmission: inside glass (ior 1.5) beyond the critical angle all of
   }
 }
 
-TEST_CASE("transmission: inside a glass sphere a ray beyond the critical angle stays inside; below it leaves") {
+TEST_CASE("transmission: inside a glass sphere a ray beyond the critical angle stays inside and below it leaves") {
   SceneDesc scene;
   add_sphere(scene, {0, 0, 0}, 1, add_glass(scene, 1, 0, 1.5f));
   // From (0, 0.8, 0) along +x the ray meets the sphere at (0.6, 0.8) with sin(incidence) = 0.8
