@@ -1,6 +1,7 @@
 // A ray and the robust spawning of secondary rays from a surface.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -24,13 +25,15 @@ constexpr float rounding_gamma(int n) {
 // the per-axis error bound `error` onto the normal, then one more ulp away from the surface:
 // the spawned ray cannot re-hit the surface it leaves, wherever that surface is.
 inline vec3 offset_ray_origin(vec3 p, vec3 error, vec3 n, vec3 w) {
-  float d = dot(abs(n), error);
-  vec3 offset = n * d;
-  if (dot(w, n) < 0) offset = -offset;
-  vec3 po = p + offset;
+  vec3 away = dot(w, n) < 0 ? -n : n;
+  // An exact hit (a zero coordinate of an axis-aligned surface) has a zero error bound; the
+  // floor keeps its step out of the denormals, which Embree's kernels flush to zero (t = -0 hits).
+  constexpr float min_offset = 1e-20f;
+  vec3 po = p + away * std::max(dot(abs(n), error), min_offset);
+  // The ulp step follows the normal, not the offset, so that it is never skipped.
   for (int i = 0; i < 3; ++i) {
-    if (offset[i] > 0) po[i] = std::nextafter(po[i], std::numeric_limits<float>::infinity());
-    else if (offset[i] < 0) po[i] = std::nextafter(po[i], -std::numeric_limits<float>::infinity());
+    if (away[i] > 0) po[i] = std::nextafter(po[i], std::numeric_limits<float>::infinity());
+    else if (away[i] < 0) po[i] = std::nextafter(po[i], -std::numeric_limits<float>::infinity());
   }
   return po;
 }

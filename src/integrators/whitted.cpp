@@ -57,7 +57,9 @@ color3 trace(const RenderContext& ctx, const Ray& ray, int depth, color3 weight,
   radiance += direct_phong<E>(ctx, hit, m, f, counts);
 
   if (depth + 1 >= ctx.max_depth) return radiance;
-  color3 reflected_weight = m.kr;
+  // Total internal reflection is part of refraction: its share reflects even when no material in
+  // the scene has kr, i.e. when the reflection effect is off.
+  color3 reflected_weight = enabled<E>(ctx.effects, effect_reflection) ? m.kr : color3{};
   if (enabled<E>(ctx.effects, effect_refraction)) {
     if (!is_black(m.kt)) {
       float eta = f.entering ? m.ior : 1 / m.ior;
@@ -71,12 +73,10 @@ color3 trace(const RenderContext& ctx, const Ray& ray, int depth, color3 weight,
       }
     }
   }
-  if (enabled<E>(ctx.effects, effect_reflection)) {
-    color3 w = weight * reflected_weight;
-    if (!is_black(reflected_weight) && max_component(w) >= ctx.contribution_cutoff)
-      radiance += reflected_weight * trace<E>(ctx, spawn_ray(hit, reflect(f.wo, f.normal)), depth + 1, w,
-                                              RayKind::reflection, counts, nullptr);
-  }
+  color3 w = weight * reflected_weight;
+  if (!is_black(reflected_weight) && max_component(w) >= ctx.contribution_cutoff)
+    radiance += reflected_weight * trace<E>(ctx, spawn_ray(hit, reflect(f.wo, f.normal)), depth + 1, w,
+                                            RayKind::reflection, counts, nullptr);
   if (enabled<E>(ctx.effects, effect_alpha)) {
     if (m.opacity < 1) {
       Ray through = spawn_ray(hit, ray.direction);
