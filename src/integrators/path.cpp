@@ -174,7 +174,10 @@ struct PathVariant {
       if (bsdf->delta) {
         bool refracted = bsdf->transmitted;
         if (refracted && !enabled<E>(ctx.effects, effect_refraction)) break;
-        if (!refracted && !enabled<E>(ctx.effects, effect_reflection)) break;
+        // A transmissive surface's mirror share (Fresnel, total internal reflection) belongs to
+        // refraction: switching reflection off must not make glass lose it.
+        bool transmissive = !is_black(m.kt) || m.transmission > 0;
+        if (!refracted && !transmissive && !enabled<E>(ctx.effects, effect_reflection)) break;
         refracted ? counts.refraction++ : counts.reflection++;
       } else {
         counts.indirect++;

@@ -78,6 +78,7 @@ void add_emissive_spheres(const SceneDesc& scene, LightTable& table) {
     light.radius = shape.radius;
     light.area = 4 * pi * shape.radius * shape.radius;
     light.material = shape.material;
+    light.two_sided = scene.materials[shape.material].double_sided;  // emits inward too
     light.shape_index = int(s);
     table.shape_light[s] = int(table.area_lights.size());
     table.area_lights.push_back(light);

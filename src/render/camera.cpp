@@ -80,6 +80,7 @@ void apply_camera_override(CameraDesc& camera, const CameraOverride& o) {
     if (length(d) == 0 || !is_finite(d)) throw std::invalid_argument("--look-at equals the camera position");
     camera.forward = normalize(d);
   }
+  if (o.up && !(length(*o.up) > 0 && is_finite(*o.up))) throw std::invalid_argument("--up must be a non-zero vector");
   vec3 up = o.up ? *o.up : camera.up;
   if (o.fov_degrees) {
     if (!(*o.fov_degrees > 0 && *o.fov_degrees < 180)) throw std::invalid_argument("--fov must be in (0, 180) degrees");
@@ -87,7 +88,7 @@ void apply_camera_override(CameraDesc& camera, const CameraOverride& o) {
     camera.projection = Projection::perspective;
   }
   vec3 right = cross(camera.forward, up);
-  if (length(right) < 1e-6f * length(up)) {
+  if (!(length(right) > 1e-6f * length(up))) {
     if (o.up) throw std::invalid_argument("--up is parallel to the view direction");
     // Keep the authored up's intent when only the direction changed: fall back to +z or +x.
     up = std::abs(camera.forward.y) < 0.999f ? vec3{0, 1, 0} : vec3{0, 0, -1};

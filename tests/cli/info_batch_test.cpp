@@ -42,7 +42,7 @@ TEST_CASE("info: a bad file exits 1 with the loader's located message") {
   CHECK(r.err.find("bad.scene:2:8:") != std::string::npos);
 }
 
-TEST_CASE("batch: one load renders every view; views differ where the camera moved") {
+TEST_CASE("batch: one load renders every view, views differ where the camera moved") {
   ScratchDir dir("batch");
   fs::copy_file(source_path("assets/first-render.scene"), dir.file("s.scene"));
   fs::path script = dir.write("views.txt",

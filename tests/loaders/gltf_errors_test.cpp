@@ -86,7 +86,7 @@ TEST_CASE("gltf errors: non-finite positions and normals") {
         "file.gltf: meshes[0].primitives[0].attributes.NORMAL: non-finite value in element 2");
 }
 
-TEST_CASE("gltf errors: a required extension radiant lacks is named; optional ones warn") {
+TEST_CASE("gltf errors: a required extension radiant lacks is named, optional ones warn") {
   GltfBuilder b = quad_builder();
   std::string body = std::string(quad_mesh) + placed;
   CHECK(error_of(b.gltf(body + ",\"extensionsUsed\":[\"KHR_draco_mesh_compression\"],"

@@ -245,7 +245,7 @@ TEST_CASE("a convex pentagon is fan-triangulated into 3 triangles") {
   CHECK(scene.meshes[0].indices == std::vector<uint32_t>{0, 1, 2, 0, 2, 3, 0, 3, 4});
 }
 
-TEST_CASE("faces sharing a material share one mesh; other materials get their own") {
+TEST_CASE("faces sharing a material share one mesh, other materials get their own") {
   SceneDesc scene = test::load_scene_text(
       "@material white\nkd 1\n"
       "@triangle\nvertices 0 0 0 1 0 0 0 1 0\nmaterial white\n"
@@ -300,7 +300,7 @@ TEST_CASE("@render fills the settings and the background (0-255)") {
   check_vec3(scene.environment.color, {1, 0.2f, 0});
 }
 
-TEST_CASE("@render mode and sampler names map to their enums; absent settings stay unset") {
+TEST_CASE("@render mode and sampler names map to their enums, absent settings stay unset") {
   auto mode = [](const std::string& name) { return test::load_scene_text("@render\nmode " + name + "\n").settings.mode; };
   CHECK(mode("auto") == RenderMode::auto_select);
   CHECK(mode("whitted") == RenderMode::whitted);

@@ -59,7 +59,7 @@ TEST_CASE("effects: the specialised integrator and the generic one (--effects=al
   }
 }
 
-TEST_CASE("effects: switching shadows off brightens exactly the shadowed pixels; -reflection removes mirror images") {
+TEST_CASE("effects: switching shadows off brightens exactly the shadowed pixels, -reflection removes mirror images") {
   SceneDesc scene;
   add_plane(scene, {0, 0, 0}, {0, 1, 0}, add_diffuse(scene, {0.5f, 0.5f, 0.5f}));
   MaterialDesc mirror;
@@ -95,7 +95,7 @@ TEST_CASE("effects: switching shadows off brightens exactly the shadowed pixels;
   CHECK(without_reflection < with_reflection);
 }
 
-TEST_CASE("effects: a normal map alone (no other texture) perturbs shading; -normal-maps flattens it") {
+TEST_CASE("effects: a normal map alone (no other texture) perturbs shading, -normal-maps flattens it") {
   // Regression: with normal maps but no color textures the material was resolved once per
   // render, so every pixel used the normal-map texel at uv (0, 0).
   SceneDesc scene = load_scene(source_path("assets/models/normal-mapped-quad.gltf").string());

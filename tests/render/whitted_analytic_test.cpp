@@ -71,7 +71,7 @@ TEST_CASE("whitted: a spot light scales the point-light term by cos(angle to its
   }
 }
 
-TEST_CASE("whitted: an opaque occluder leaves exactly the ambient term; kt = 0.5 halves the direct term") {
+TEST_CASE("whitted: an opaque occluder leaves exactly the ambient term, kt = 0.5 halves the direct term") {
   for (float kt : {0.0f, 0.5f}) {
     int m;
     SceneDesc scene = lit_plane(&m, {0.5f, 0.5f, 0.5f});

@@ -78,10 +78,7 @@ TEST_CASE("camera up: a scene camera with up parallel to its view renders the sa
   CHECK(d.max_absolute == 0);
 }
 
-// KNOWN FAILURE (reported to the lead; remove should_fail once fixed): `--up 0,0,0` passes the
-// parallel test (|right| < 1e-6 |up| is 0 < 0) and leaves a zero up vector, so make_camera_frame
-// gives a zero right and up and every pixel shoots the same ray.
-TEST_CASE("camera up: an explicit zero --up is an error" * doctest::should_fail()) {
+TEST_CASE("camera up: an explicit zero --up is an error") {
   CameraDesc camera;
   CameraOverride o;
   o.up = vec3{0, 0, 0};
