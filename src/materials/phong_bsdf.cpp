@@ -56,13 +56,16 @@ float phong_lobe(const Lobes& l, vec3 wi) {
 
 color3 eval_local(const Lobes& l, vec3 wi) {
   if (!l.valid || wi.z < 1e-7f) return {0, 0, 0};
-  color3 glossy = l.ks * ((l.exponent + 2) / (2 * pi) * phong_lobe(l, wi));
-  return (l.kd * inv_pi + glossy) * wi.z;
+  color3 f = l.kd * inv_pi;
+  if (l.p_glossy > 0) f += l.ks * ((l.exponent + 2) / (2 * pi) * phong_lobe(l, wi));  // skip pow for matte
+  return f * wi.z;
 }
 
 float pdf_local(const Lobes& l, vec3 wi) {
   if (!l.valid || wi.z < 1e-7f) return 0;
-  return l.p_diffuse * wi.z * inv_pi + l.p_glossy * (l.exponent + 1) / (2 * pi) * phong_lobe(l, wi);
+  float pdf = l.p_diffuse * wi.z * inv_pi;
+  if (l.p_glossy > 0) pdf += l.p_glossy * (l.exponent + 1) / (2 * pi) * phong_lobe(l, wi);
+  return pdf;
 }
 
 BsdfSample delta_sample(const Lobes& l, vec3 wi_local, color3 weight, float selection) {

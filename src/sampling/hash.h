@@ -23,6 +23,11 @@ constexpr uint32_t hash4(uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
   return hash_combine(hash_combine(hash_combine(mix_bits(a), b), c), d);
 }
 
+// One mixing round over three values: cheap enough to run for every sample dimension.
+constexpr uint32_t hash3(uint32_t a, uint32_t b, uint32_t c) {
+  return mix_bits(a * 0x9e3779b1U ^ (b + 0x7f4a7c15U) * 0x85ebca77U ^ (c + 0x165667b1U) * 0xc2b2ae3dU);
+}
+
 // Maps 32 random bits to a float in [0, 1).
 constexpr float bits_to_unit_float(uint32_t bits) { return float(bits >> 8) * 0x1p-24f; }
 

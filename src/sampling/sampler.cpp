@@ -73,7 +73,7 @@ struct PaddedSobolPair {
   uint32_t index, scramble;
 };
 PaddedSobolPair padded_sobol_pair(const SampleContext& c, uint32_t dimension) {
-  uint32_t scramble = hash4(c.pixel, dimension, c.seed, 0x52u);
+  uint32_t scramble = hash3(c.pixel, dimension, c.seed);
   uint32_t index = dimension == 0 ? c.index
                                   : permutation_element(c.index, std::max(c.samples, c.index + 1), mix_bits(scramble ^ 0x9e37u));
   return {index, scramble};
