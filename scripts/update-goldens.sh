@@ -15,13 +15,19 @@ radiant=${RADIANT:-$root/build/radiant}
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 
-# Keep in step with tests/golden/golden_test.cpp: the golden's seed and the stored channels.
+# Keep in step with tests/golden/golden_cases.h: the golden's seed and the stored channels.
 golden_seed=1
 
 picks=" $* "
 trim() { printf '%s' "$1" | sed 's/^ *//; s/ *$//'; }
 
-grep -v '^[[:space:]]*\(#\|$\)' "$root/golden/cases.txt" | while IFS='|' read -r name check scene flags golden_spp test_spp; do
+cases=$(grep -v '^[[:space:]]*\(#\|$\)' "$root/golden/cases.txt")
+for pick in "$@"; do
+  printf '%s\n' "$cases" | grep -q "^$pick *|" || { echo "update-goldens: no case $pick" >&2; exit 2; }
+done
+
+# The last column, the test's spp, is the test's business.
+printf '%s\n' "$cases" | while IFS='|' read -r name check scene flags golden_spp _; do
   name=$(trim "$name"); check=$(trim "$check"); scene=$(trim "$scene")
   flags=$(trim "$flags"); golden_spp=$(trim "$golden_spp")
   [ "$picks" = "  " ] || case $picks in *" $name "*) ;; *) continue ;; esac
