@@ -115,8 +115,9 @@ struct PathVariant {
     float previous_pdf = 0;
     vec3 previous_position, previous_normal;
     int depth = 0, max_depth = ctx.max_depth;
-    counts.camera++;
+    uint64_t* ray_counter = &counts.camera;  // the kind of the next ray traced, counted when traced
     for (int transparent_steps = 0; transparent_steps < 256;) {
+      ++*ray_counter;
       HitId id = intersect_nearest(*ctx.accel, ray);
       if (!id.valid()) {
         if (enabled<E>(ctx.effects, effect_environment)) {
@@ -178,9 +179,9 @@ struct PathVariant {
         // refraction: switching reflection off must not make glass lose it.
         bool transmissive = !is_black(m.kt) || m.transmission > 0;
         if (!refracted && !transmissive && !enabled<E>(ctx.effects, effect_reflection)) break;
-        refracted ? counts.refraction++ : counts.reflection++;
+        ray_counter = refracted ? &counts.refraction : &counts.reflection;
       } else {
-        counts.indirect++;
+        ray_counter = &counts.indirect;
       }
       throughput *= bsdf->weight;
       specular_bounce = bsdf->delta;
