@@ -1,0 +1,47 @@
+// --time-limit: the whole command ends near the limit, writes the image and says where it stopped.
+#include <doctest/doctest.h>
+
+#include <chrono>
+#include <filesystem>
+#include <string>
+
+#include "support/test_support.h"
+
+using namespace radiant::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+// The number after `"key": ` in a flat JSON text (the stats file's layout), or -1.
+double json_value(const std::string& json, const std::string& key) {
+  size_t at = json.find("\"" + key + "\": ");
+  if (at == std::string::npos) return -1;
+  return std::stod(json.substr(at + key.size() + 4));
+}
+
+std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
+
+}  // namespace
+
+TEST_CASE("time limit: render --time-limit 1.5 --spp 100000 ends within the limit plus write time plus 0.75 s") {
+  ScratchDir dir("time-limit");
+  fs::path out = dir.file("cornell.png"), stats = dir.file("stats.json");
+  auto start = std::chrono::steady_clock::now();
+  CommandResult r = run_radiant("render " + quoted(source_path("assets/cornell.gltf")) + " -o " + quoted(out) +
+                                " --width 64 --height 64 --mode path --time-limit 1.5 --spp 100000 --quiet --stats " +
+                                quoted(stats));
+  double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  REQUIRE(r.exit_code == 0);
+  REQUIRE(fs::exists(out));
+  std::string json = read_bytes(stats);
+  double write_seconds = json_value(json, "write");
+  REQUIRE(write_seconds >= 0);
+  CHECK(wall <= 1.5 + write_seconds + 0.75);
+  CHECK(wall >= 1.0);  // it used the time it was given
+  CHECK(json.find("\"stopped_by_time_limit\": true") != std::string::npos);
+  double samples = json_value(json, "samples");
+  CHECK(samples / (64 * 64) >= 1);
+  CHECK(samples / (64 * 64) < 100000);
+  CHECK(json_value(json, "min") == json_value(json, "max"));  // every pixel reached the same spp
+  CHECK(read_image(out).width == 64);
+}
