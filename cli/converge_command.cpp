@@ -39,6 +39,7 @@ struct ConvergeFlags {
   std::string out = ".", reference_file, spp_ladder, samplers = "grid,random,jittered,sobol";
   int width = 0, height = 0, max_spp = default_max_spp, reference_spp = 0;
   double target_error = 0, edge_fraction = default_edge_fraction;
+  TimingPolicy timing;
   bool supersampling = false;
 };
 
@@ -97,9 +98,16 @@ void choose_default_size(const PreparedScene& prepared, RenderOptions& options) 
   options.height = std::max(1, int(std::lround(s.height * scale)));
 }
 
-RenderMode resolve_mode(const PreparedScene& prepared, RenderOptions options, RenderMode mode) {
-  options.mode = mode;
-  return resolve_settings(prepared, options).mode;
+// The modes in the order given, auto resolved to the mode it picks, each once; none = auto.
+std::vector<RenderMode> resolve_modes(const PreparedScene& prepared, RenderOptions options, std::vector<RenderMode> given) {
+  if (given.empty()) given.push_back(RenderMode::auto_select);
+  std::vector<RenderMode> modes;
+  for (RenderMode mode : given) {
+    options.mode = mode;
+    RenderMode resolved = resolve_settings(prepared, options).mode;
+    if (std::find(modes.begin(), modes.end(), resolved) == modes.end()) modes.push_back(resolved);
+  }
+  return modes;
 }
 
 std::string scene_title(const std::string& scene_path) { return fs::path(scene_path).filename().string(); }
@@ -138,7 +146,7 @@ ConvergeReport ladder_report(const PreparedScene& prepared, const RenderOptions&
       report.references.push_back(note_for(references[key], key, flags.reference_file));
     }
     progress(options, std::string("ladder of ") + mode_name(mode));
-    std::vector<LadderStep> steps = run_ladder(prepared, mode_options, ladder, references[key]);
+    std::vector<LadderStep> steps = run_ladder(prepared, mode_options, ladder, references[key], flags.timing);
     report.series.push_back(make_series(mode_name(mode), std::move(steps), flags.target_error));
   }
   return report;
@@ -163,7 +171,7 @@ ConvergeReport supersampling_report(const PreparedScene& prepared, const RenderO
     progress(options, std::string("ladder of the ") + sampler_name(sampler) + " sampler");
     mode_options.sampler = sampler;
     report.series.push_back(
-        make_series(sampler_name(sampler), run_ladder(prepared, mode_options, ladder, reference), flags.target_error));
+        make_series(sampler_name(sampler), run_ladder(prepared, mode_options, ladder, reference, flags.timing), flags.target_error));
   }
   return report;
 }
@@ -232,6 +240,8 @@ void bind_flags(CLI::App& app, ConvergeFlags& flags) {
   app.add_option("--target-error", flags.target_error, "Predict the spp and time that reach this RMSE")->check(CLI::PositiveNumber);
   app.add_option("--edge-fraction", flags.edge_fraction, "Fraction of pixels counted as edges (default 0.1)")
       ->check(CLI::Range(0.001, 1.0));
+  app.add_option("--timing-runs", flags.timing.min_runs, "Time each step as the fastest of at least N runs (default 1; short steps run more)")
+      ->check(CLI::Range(1, 100));
   app.add_flag("--supersampling", flags.supersampling, "The anti-aliasing table: 1, 81 and 324 spp for each sampler, edge error");
   app.add_option("--samplers", flags.samplers, "Samplers of --supersampling (default grid,random,jittered,sobol)");
 }
@@ -285,9 +295,7 @@ int converge_main(int argc, char** argv) {
       if (flags.width) options.width = flags.width;
       if (flags.height) options.height = flags.height;
       if (!flags.width && !flags.height) choose_default_size(prepared, options);
-      if (modes.empty()) modes.push_back(RenderMode::auto_select);
-      for (RenderMode& mode : modes) mode = resolve_mode(prepared, options, mode);
-      std::sort(modes.begin(), modes.end()), modes.erase(std::unique(modes.begin(), modes.end()), modes.end());
+      modes = resolve_modes(prepared, options, modes);
       ResolvedSettings size = resolve_settings(prepared, options);
       if (file_reference && (size.width != file_reference->image.width || size.height != file_reference->image.height))
         throw std::invalid_argument("--reference " + flags.reference_file + " is " + std::to_string(file_reference->image.width) +

@@ -64,7 +64,8 @@ LadderStep run_step(const PreparedScene& prepared, RenderOptions options, int sp
   options.spp = spp;
   RenderResult result = render_prepared(prepared, options);
   double fastest = result.stats.render_seconds, total = fastest;
-  for (int run = 1; run < timing.max_runs && total < timing.min_total_seconds; ++run) {
+  int most = std::max(timing.min_runs, timing.max_runs);
+  for (int run = 1; run < most && (run < timing.min_runs || total < timing.min_total_seconds); ++run) {
     double seconds = render_prepared(prepared, options).stats.render_seconds;
     fastest = std::min(fastest, seconds);
     total += seconds;

@@ -57,7 +57,8 @@ struct LadderStep {
 // Short renders are timed several times because their time is mostly noise and overhead.
 struct TimingPolicy {
   double min_total_seconds = 0.5;  // run again while the runs so far took less than this
-  int max_runs = 5;
+  int max_runs = 100;
+  int min_runs = 1;  // at least this many runs however long they take (--timing-runs)
 };
 
 // 1, 2, 4, ... up to `max_spp` (and `max_spp` itself when it is not a power of two).
