@@ -175,3 +175,29 @@ TEST_CASE("converge cli: usage errors exit 2 with one line, a missing scene exit
   CHECK(missing.err.rfind("radiant: ", 0) == 0);
   CHECK(std::count(missing.err.begin(), missing.err.end(), '\n') == 1);
 }
+
+TEST_CASE("converge cli: --reference measures against a given EXR, takes its size, and refuses another size") {
+  ScratchDir dir("converge-reference");
+  std::string cornell = quoted(source_path("assets/cornell.gltf"));
+  fs::path reference = dir.file("reference.exr");
+  REQUIRE(run_radiant("render " + cornell + " -o " + quoted(reference) + " --width 20 --height 16 --spp 64 --quiet --seed 7")
+              .exit_code == 0);
+  CommandResult r = run_radiant("converge " + cornell + " --reference " + quoted(reference) + " --spp-ladder 1,4 --out " +
+                                quoted(dir.path));
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.out.find("(20x16)") != std::string::npos);
+  CHECK(r.out.find("reference: " + reference.string()) != std::string::npos);
+  auto rows = read_csv(dir.file("converge.csv"));
+  REQUIRE(rows.size() == 3);
+  CHECK(std::stod(rows[2][6]) < std::stod(rows[1][6]));  // 4 spp is closer to it than 1
+
+  CommandResult wrong = run_radiant("converge " + cornell + " --reference " + quoted(reference) +
+                                    " --width 32 --height 32 --spp-ladder 1 --out " + quoted(dir.path));
+  CHECK(wrong.exit_code == 2);
+  CHECK(wrong.err == "radiant converge: --reference " + reference.string() + " is 20x16 but the renders are 32x32\n");
+  CommandResult mixed = run_radiant("converge " + cornell + " --reference " + quoted(reference) +
+                                    " --mode path,whitted --spp-ladder 1 --out " + quoted(dir.path));
+  CHECK(mixed.exit_code == 2);
+  CHECK(mixed.err.find("Whitted and path/naive converge to different ones") != std::string::npos);
+}
