@@ -246,6 +246,49 @@ void bind_flags(CLI::App& app, ConvergeFlags& flags) {
   app.add_option("--samplers", flags.samplers, "Samplers of --supersampling (default grid,random,jittered,sobol)");
 }
 
+// Loads the scene, settles size and modes, runs the ladders and writes the report. Throws
+// std::invalid_argument for settings that contradict each other (usage), else std::exception.
+void run_converge(const std::string& scene_path, ConvergeFlags& flags, std::vector<RenderMode> modes,
+                  const std::vector<int>& ladder) {
+  RenderOptions& options = flags.render.options;
+  std::optional<Reference> file_reference;
+  if (!flags.reference_file.empty()) {
+    file_reference = load_reference(flags.reference_file, flags.edge_fraction);
+    if (!flags.width && !flags.height) flags.width = file_reference->image.width, flags.height = file_reference->image.height;
+  }
+  LoadOptions load_options;
+  load_options.allow_external_files = flags.render.allow_external_files;
+  load_options.max_memory_bytes = size_t(flags.render.max_memory_gb * double(size_t(1) << 30));
+  load_options.gltf_scene = flags.render.gltf_scene;
+  SceneDesc scene = load_scene(scene_path, load_options);
+  PreparedScene prepared = prepare_scene(scene);
+
+  if (flags.width) options.width = flags.width;
+  if (flags.height) options.height = flags.height;
+  if (!flags.width && !flags.height) choose_default_size(prepared, options);
+  modes = resolve_modes(prepared, options, modes);
+  ResolvedSettings size = resolve_settings(prepared, options);
+  if (file_reference && (size.width != file_reference->image.width || size.height != file_reference->image.height))
+    throw std::invalid_argument("--reference " + flags.reference_file + " is " + std::to_string(file_reference->image.width) +
+                                "x" + std::to_string(file_reference->image.height) + " but the renders are " +
+                                std::to_string(size.width) + "x" + std::to_string(size.height));
+  bool whitted = std::count(modes.begin(), modes.end(), RenderMode::whitted) > 0;
+  if (file_reference && whitted && modes.size() > 1)
+    throw std::invalid_argument("--reference is one converged answer, but Whitted and path/naive converge to different ones");
+
+  ConvergeReport report = flags.supersampling
+                              ? supersampling_report(prepared, options, flags, modes.front(), ladder, file_reference)
+                              : ladder_report(prepared, options, flags, modes, ladder, file_reference);
+  report.scene = scene_path;
+  report.width = size.width;
+  report.height = size.height;
+  report.edge_fraction = flags.edge_fraction;
+  report.target_error = flags.target_error;
+  report.title = scene_title(scene_path) + (flags.supersampling ? ": anti-aliasing error at edges against render time"
+                                                                : ": RMSE against render time");
+  write_outputs(report, flags.out, flags.supersampling ? "supersampling" : "converge", options.quiet);
+}
+
 }  // namespace
 
 int converge_main(int argc, char** argv) {
@@ -274,50 +317,12 @@ int converge_main(int argc, char** argv) {
     std::cerr << "radiant converge: " << e.what() << "\n";
     return exit_usage;
   }
-  RenderOptions& options = flags.render.options;
-  options.progress = isatty(STDERR_FILENO) && !options.quiet;
-
+  flags.render.options.progress = isatty(STDERR_FILENO) && !flags.render.options.quiet;
   try {
-    std::optional<Reference> file_reference;
-    if (!flags.reference_file.empty()) {
-      file_reference = load_reference(flags.reference_file, flags.edge_fraction);
-      if (!flags.width && !flags.height) flags.width = file_reference->image.width, flags.height = file_reference->image.height;
-    }
-    LoadOptions load_options;
-    load_options.allow_external_files = flags.render.allow_external_files;
-    load_options.max_memory_bytes = size_t(flags.render.max_memory_gb * double(size_t(1) << 30));
-    load_options.gltf_scene = flags.render.gltf_scene;
-    SceneDesc scene = load_scene(scene_path, load_options);
-    PreparedScene prepared = prepare_scene(scene);
-
-    ConvergeReport report;
-    try {
-      if (flags.width) options.width = flags.width;
-      if (flags.height) options.height = flags.height;
-      if (!flags.width && !flags.height) choose_default_size(prepared, options);
-      modes = resolve_modes(prepared, options, modes);
-      ResolvedSettings size = resolve_settings(prepared, options);
-      if (file_reference && (size.width != file_reference->image.width || size.height != file_reference->image.height))
-        throw std::invalid_argument("--reference " + flags.reference_file + " is " + std::to_string(file_reference->image.width) +
-                                    "x" + std::to_string(file_reference->image.height) + " but the renders are " +
-                                    std::to_string(size.width) + "x" + std::to_string(size.height));
-      bool whitted = std::count(modes.begin(), modes.end(), RenderMode::whitted) > 0;
-      if (file_reference && whitted && modes.size() > 1)
-        throw std::invalid_argument("--reference is one converged answer, but Whitted and path/naive converge to different ones");
-      report = flags.supersampling ? supersampling_report(prepared, options, flags, modes.front(), ladder, file_reference)
-                                   : ladder_report(prepared, options, flags, modes, ladder, file_reference);
-      report.width = size.width;
-      report.height = size.height;
-    } catch (const std::invalid_argument& e) {
-      std::cerr << "radiant converge: " << e.what() << "\n";
-      return exit_usage;
-    }
-    report.scene = scene_path;
-    report.edge_fraction = flags.edge_fraction;
-    report.target_error = flags.target_error;
-    report.title = scene_title(scene_path) + (flags.supersampling ? ": anti-aliasing error at edges against render time"
-                                                                  : ": RMSE against render time");
-    write_outputs(report, flags.out, flags.supersampling ? "supersampling" : "converge", options.quiet);
+    run_converge(scene_path, flags, modes, ladder);
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "radiant converge: " << e.what() << "\n";
+    return exit_usage;
   } catch (const std::exception& e) {
     std::cerr << "radiant: " << e.what() << "\n";
     return exit_failure;
