@@ -1,13 +1,333 @@
-// `radiant converge` — not built yet.
+// `radiant converge SCENE [--out DIR]`: what accuracy costs in time. Renders a reference, then a
+// ladder of samples per pixel per mode (or, with --supersampling, per sampler), and writes the
+// table, converge.csv, converge.json and a log-log chart of error against time.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
 #include <iostream>
+#include <map>
+#include <sstream>
 
 #include "commands.h"
+#include "converge_report.h"
+#include "load_scene.h"
+#include "option_parsing.h"
+#include "render_job.h"
 
 namespace radiant::cli {
 
-int converge_main(int, char**) {
-  std::cerr << "radiant converge: not implemented yet\n";
-  return exit_failure;
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* converge_examples =
+    "\nExamples:\n"
+    "  radiant converge assets/cornell.gltf --mode path,naive --out report\n"
+    "  radiant converge assets/cornell.gltf --spp-ladder 1,4,16,64 --target-error 0.01\n"
+    "  radiant converge assets/showcase.scene --supersampling --width 96 --height 54\n"
+    "  radiant converge scene.gltf --reference converged.exr --mode path\n";
+
+constexpr int default_max_spp = 256;
+constexpr int max_reference_spp = 4096;  // the default reference's cap (16x the ladder's top)
+constexpr int default_converge_size = 128;  // the larger side when no size is given
+
+struct ConvergeFlags {
+  RenderFlags render;
+  std::string out = ".", reference_file, spp_ladder, samplers = "grid,random,jittered,sobol";
+  int width = 0, height = 0, max_spp = default_max_spp, reference_spp = 0;
+  double target_error = 0, edge_fraction = default_edge_fraction;
+  TimingPolicy timing;
+  bool supersampling = false;
+};
+
+std::vector<std::string> split_list(const std::string& text) {
+  std::vector<std::string> parts;
+  std::stringstream in(text);
+  std::string part;
+  while (std::getline(in, part, ','))
+    if (!part.empty()) parts.push_back(part);
+  return parts;
+}
+
+std::vector<int> parse_spp_list(const std::string& flag, const std::string& text) {
+  std::vector<int> list;
+  for (const std::string& part : split_list(text)) {
+    size_t used = 0;
+    int value = 0;
+    try {
+      value = std::stoi(part, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != part.size() || value < 1 || value > (1 << 24))
+      throw CLI::ValidationError(flag, "'" + part + "' is not a sample count (1 to 16777216)");
+    list.push_back(value);
+  }
+  if (list.empty()) throw CLI::ValidationError(flag, "expected a comma-separated list of sample counts");
+  std::sort(list.begin(), list.end());
+  list.erase(std::unique(list.begin(), list.end()), list.end());
+  return list;
+}
+
+// --mode as a comma-separated list; "auto" becomes the mode auto picks for the scene.
+std::vector<RenderMode> parse_modes(const std::string& text) {
+  std::vector<RenderMode> modes;
+  for (const std::string& part : split_list(text)) {
+    RenderMode mode = parse_mode("--mode", part);
+    if (std::find(modes.begin(), modes.end(), mode) == modes.end()) modes.push_back(mode);
+  }
+  return modes;
+}
+
+std::vector<SamplerKind> parse_samplers(const std::string& text) {
+  std::vector<SamplerKind> samplers;
+  for (const std::string& part : split_list(text)) samplers.push_back(parse_sampler("--samplers", part));
+  if (samplers.empty()) throw CLI::ValidationError("--samplers", "expected a comma-separated list of samplers");
+  return samplers;
+}
+
+// The scene's own image size scaled down so its larger side is default_converge_size.
+void choose_default_size(const PreparedScene& prepared, RenderOptions& options) {
+  ResolvedSettings s = resolve_settings(prepared, options);
+  double scale = double(default_converge_size) / std::max(s.width, s.height);
+  if (scale >= 1) return;
+  options.width = std::max(1, int(std::lround(s.width * scale)));
+  options.height = std::max(1, int(std::lround(s.height * scale)));
+}
+
+// The modes in the order given, auto resolved to the mode it picks, each once; none = auto.
+std::vector<RenderMode> resolve_modes(const PreparedScene& prepared, RenderOptions options, std::vector<RenderMode> given) {
+  if (given.empty()) given.push_back(RenderMode::auto_select);
+  std::vector<RenderMode> modes;
+  for (RenderMode mode : given) {
+    options.mode = mode;
+    RenderMode resolved = resolve_settings(prepared, options).mode;
+    if (std::find(modes.begin(), modes.end(), resolved) == modes.end()) modes.push_back(resolved);
+  }
+  return modes;
+}
+
+std::string scene_title(const std::string& scene_path) { return fs::path(scene_path).filename().string(); }
+
+ConvergeSeries make_series(std::string name, std::vector<LadderStep> steps, double target_error) {
+  ConvergeSeries series{std::move(name), std::move(steps), {}, {}};
+  Prediction prediction = predict_target(series.steps, target_error);
+  series.error_by_spp = prediction.error_by_spp;
+  if (target_error > 0) series.prediction = prediction;
+  return series;
+}
+
+ReferenceNote note_for(const Reference& reference, RenderMode mode, const std::string& file) {
+  return {file.empty() ? mode_name(mode) : "file", file, reference.spp, reference.seconds};
+}
+
+void progress(const RenderOptions& options, const std::string& text) {
+  if (options.progress) std::cerr << "converge: " << text << "\n";
+}
+
+// One series per mode; path and naive share the path tracer's reference, Whitted has its own.
+ConvergeReport ladder_report(const PreparedScene& prepared, const RenderOptions& options, const ConvergeFlags& flags,
+                             const std::vector<RenderMode>& modes, const std::vector<int>& ladder,
+                             const std::optional<Reference>& file_reference) {
+  ConvergeReport report;
+  report.kind = "ladder";
+  report.metric = "rmse";
+  std::map<RenderMode, Reference> references;
+  for (RenderMode mode : modes) {
+    RenderOptions mode_options = options;
+    mode_options.mode = mode;
+    RenderMode key = reference_mode(mode);
+    if (!references.count(key)) {
+      progress(options, std::string("rendering the ") + mode_name(key) + " reference");
+      references[key] = file_reference ? *file_reference : render_reference(prepared, mode_options, flags.reference_spp, flags.edge_fraction);
+      report.references.push_back(note_for(references[key], key, flags.reference_file));
+    }
+    progress(options, std::string("ladder of ") + mode_name(mode));
+    std::vector<LadderStep> steps = run_ladder(prepared, mode_options, ladder, references[key], flags.timing);
+    report.series.push_back(make_series(mode_name(mode), std::move(steps), flags.target_error));
+  }
+  return report;
+}
+
+// One series per sampler, one mode, measured at edges against one high-sample reference.
+ConvergeReport supersampling_report(const PreparedScene& prepared, const RenderOptions& options,
+                                    const ConvergeFlags& flags, RenderMode mode, const std::vector<int>& ladder,
+                                    const std::optional<Reference>& file_reference) {
+  ConvergeReport report;
+  report.kind = "supersampling";
+  report.metric = "edge_rmse";
+  RenderOptions mode_options = options;
+  mode_options.mode = mode;
+  RenderOptions reference_options = mode_options;
+  reference_options.sampler = SamplerKind::jittered;  // stratified: the fastest to converge at edges
+  progress(options, "rendering the reference");
+  Reference reference =
+      file_reference ? *file_reference : render_reference(prepared, reference_options, flags.reference_spp, flags.edge_fraction);
+  report.references.push_back(note_for(reference, mode, flags.reference_file));
+  for (SamplerKind sampler : parse_samplers(flags.samplers)) {
+    progress(options, std::string("ladder of the ") + sampler_name(sampler) + " sampler");
+    mode_options.sampler = sampler;
+    report.series.push_back(
+        make_series(sampler_name(sampler), run_ladder(prepared, mode_options, ladder, reference, flags.timing), flags.target_error));
+  }
+  return report;
+}
+
+// The plotting script: beside the executable's tree (build/radiant → scripts/), else in the
+// source tree this file was compiled from.
+std::optional<fs::path> find_plot_script() {
+  std::vector<fs::path> roots;
+  std::error_code error;
+  fs::path exe = fs::read_symlink("/proc/self/exe", error);
+  if (!error) roots.push_back(exe.parent_path().parent_path());
+  roots.push_back(fs::path(__FILE__).parent_path().parent_path());
+  for (const fs::path& root : roots)
+    if (fs::exists(root / "scripts" / "plot_convergence.py")) return root / "scripts" / "plot_convergence.py";
+  return std::nullopt;
+}
+
+std::string shell_quote(const std::string& text) {
+  std::string quoted = "'";
+  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+// Runs the script with python3, then with the system's python3 (a virtualenv or pyenv
+// python3 may lack matplotlib). Returns "" when the chart was written, else why not.
+std::string plot_chart(const fs::path& json, const fs::path& png) {
+  std::optional<fs::path> script = find_plot_script();
+  if (!script) return "scripts/plot_convergence.py not found";
+  std::string why = "python3 not found";
+  for (const char* python : {"python3", "/usr/bin/python3"}) {
+    std::string command = std::string(python) + " " + shell_quote(script->string()) + " " + shell_quote(json.string()) +
+                          " " + shell_quote(png.string());
+    int status = std::system(command.c_str());
+    int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    if (code == 0) return "";
+    if (code == 3) why = "python3 has no matplotlib (apt-get install python3-matplotlib)";
+    else if (code != 127) return "the plotting script failed (exit " + std::to_string(code) + ")";
+  }
+  return why;
+}
+
+void write_outputs(const ConvergeReport& report, const fs::path& out, const std::string& stem, bool quiet) {
+  fs::create_directories(out);
+  write_text_file_atomically((out / (stem + ".csv")).string(), converge_csv(report));
+  write_text_file_atomically((out / (stem + ".json")).string(), converge_json(report));
+  if (!quiet) std::cout << converge_table(report) << std::flush;
+  std::string why = plot_chart(out / (stem + ".json"), out / (stem + ".png"));
+  if (!why.empty())
+    std::cerr << "radiant converge: warning: no chart " << (out / (stem + ".png")).string() << ": " << why
+              << "; wrote the CSV and JSON\n";
+  else if (!quiet)
+    std::cerr << "radiant: wrote " << (out / (stem + ".csv")).string() << ", .json and .png\n";
+}
+
+void bind_flags(CLI::App& app, ConvergeFlags& flags) {
+  flags.render.bind(app, false);
+  app.add_option("--width", flags.width, "Image width (default: the scene's, scaled to 128 on the larger side)")
+      ->check(CLI::Range(1, 65536));
+  app.add_option("--height", flags.height, "Image height")->check(CLI::Range(1, 65536));
+  app.add_option("--out", flags.out, "Folder for converge.csv/.json/.png (supersampling.* with --supersampling)");
+  app.add_option("--reference", flags.reference_file, "Measure against this image instead of rendering a reference");
+  app.add_option("--reference-spp", flags.reference_spp, "Samples per pixel of the rendered reference (default 16x the ladder's top, at most 4096)")
+      ->check(CLI::Range(1, 1 << 24));
+  app.add_option("--max-spp", flags.max_spp, "Top of the default ladder 1, 2, 4, ... (default 256)")->check(CLI::Range(1, 1 << 24));
+  app.add_option("--spp-ladder", flags.spp_ladder, "The ladder as a list, e.g. 1,4,16,64");
+  app.add_option("--target-error", flags.target_error, "Predict the spp and time that reach this RMSE")->check(CLI::PositiveNumber);
+  app.add_option("--edge-fraction", flags.edge_fraction, "Fraction of pixels counted as edges (default 0.1)")
+      ->check(CLI::Range(0.001, 1.0));
+  app.add_option("--timing-runs", flags.timing.min_runs, "Time each step as the fastest of at least N runs (default 1; short steps run more)")
+      ->check(CLI::Range(1, 100));
+  app.add_flag("--supersampling", flags.supersampling, "The anti-aliasing table: 1, 81 and 324 spp for each sampler, edge error");
+  app.add_option("--samplers", flags.samplers, "Samplers of --supersampling (default grid,random,jittered,sobol)");
+}
+
+// Loads the scene, settles size and modes, runs the ladders and writes the report. Throws
+// std::invalid_argument for settings that contradict each other (usage), else std::exception.
+void run_converge(const std::string& scene_path, ConvergeFlags& flags, std::vector<RenderMode> modes,
+                  const std::vector<int>& ladder) {
+  RenderOptions& options = flags.render.options;
+  std::optional<Reference> file_reference;
+  if (!flags.reference_file.empty()) {
+    file_reference = load_reference(flags.reference_file, flags.edge_fraction);
+    if (!flags.width && !flags.height) flags.width = file_reference->image.width, flags.height = file_reference->image.height;
+  }
+  LoadOptions load_options;
+  load_options.allow_external_files = flags.render.allow_external_files;
+  load_options.max_memory_bytes = size_t(flags.render.max_memory_gb * double(size_t(1) << 30));
+  load_options.gltf_scene = flags.render.gltf_scene;
+  SceneDesc scene = load_scene(scene_path, load_options);
+  PreparedScene prepared = prepare_scene(scene);
+
+  if (flags.width) options.width = flags.width;
+  if (flags.height) options.height = flags.height;
+  if (!flags.width && !flags.height) choose_default_size(prepared, options);
+  modes = resolve_modes(prepared, options, modes);
+  ResolvedSettings size = resolve_settings(prepared, options);
+  if (file_reference && (size.width != file_reference->image.width || size.height != file_reference->image.height))
+    throw std::invalid_argument("--reference " + flags.reference_file + " is " + std::to_string(file_reference->image.width) +
+                                "x" + std::to_string(file_reference->image.height) + " but the renders are " +
+                                std::to_string(size.width) + "x" + std::to_string(size.height));
+  bool whitted = std::count(modes.begin(), modes.end(), RenderMode::whitted) > 0;
+  if (file_reference && whitted && modes.size() > 1)
+    throw std::invalid_argument("--reference is one converged answer, but Whitted and path/naive converge to different ones");
+
+  ConvergeReport report = flags.supersampling
+                              ? supersampling_report(prepared, options, flags, modes.front(), ladder, file_reference)
+                              : ladder_report(prepared, options, flags, modes, ladder, file_reference);
+  report.scene = scene_path;
+  report.width = size.width;
+  report.height = size.height;
+  report.edge_fraction = flags.edge_fraction;
+  report.target_error = flags.target_error;
+  report.title = scene_title(scene_path) + (flags.supersampling ? ": anti-aliasing error at edges against render time"
+                                                                : ": RMSE against render time");
+  write_outputs(report, flags.out, flags.supersampling ? "supersampling" : "converge", options.quiet);
+}
+
+}  // namespace
+
+int converge_main(int argc, char** argv) {
+  CLI::App app{"Accuracy against time: a reference, a ladder of spp per mode, error and render time of each step."};
+  app.footer(converge_examples);
+  std::string scene_path;
+  ConvergeFlags flags;
+  app.add_option("SCENE", scene_path, "Scene file (.scene, .gltf, .glb, .obj)")->required();
+  bind_flags(app, flags);
+  std::vector<RenderMode> modes;
+  std::vector<int> ladder;
+  try {
+    app.parse(argc, argv);
+    modes = parse_modes(flags.render.mode);  // a list here: finish() parses only one mode
+    flags.render.mode.clear();
+    flags.render.finish();
+    parse_samplers(flags.samplers);
+    if (flags.supersampling && modes.size() > 1)
+      throw CLI::ValidationError("--mode", "--supersampling compares samplers of one mode");
+    ladder = !flags.spp_ladder.empty() ? parse_spp_list("--spp-ladder", flags.spp_ladder)
+             : flags.supersampling     ? std::vector<int>{1, 81, 324}
+                                       : doubling_ladder(flags.max_spp);
+    if (!flags.reference_spp) flags.reference_spp = std::min(max_reference_spp, 16 * ladder.back());
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);
+    std::cerr << "radiant converge: " << e.what() << "\n";
+    return exit_usage;
+  }
+  flags.render.options.progress = isatty(STDERR_FILENO) && !flags.render.options.quiet;
+  try {
+    run_converge(scene_path, flags, modes, ladder);
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "radiant converge: " << e.what() << "\n";
+    return exit_usage;
+  } catch (const std::exception& e) {
+    std::cerr << "radiant: " << e.what() << "\n";
+    return exit_failure;
+  }
+  return exit_ok;
 }
 
 }  // namespace radiant::cli
