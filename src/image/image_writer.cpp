@@ -33,6 +33,8 @@ void write_with_oiio(const std::string& file, const OutputImage& image, bool as_
   int channels = as_float ? int(image.channels.size()) : 3;
   OIIO::ImageSpec spec(image.width, image.height, channels, as_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
   spec.channelnames.assign(image.channels.begin(), image.channels.begin() + channels);
+  // No time stamp: the same render must give the same bytes.
+  spec.attribute("DateTime", "");
   if (as_float) {
     spec.attribute("oiio:ColorSpace", "Linear");
     spec.attribute("compression", "zip");

@@ -102,9 +102,14 @@ vec2 sample_pixel(const SampleContext& c) {
       if (c.samples <= 1) return {0.5f, 0.5f};
       uint32_t nx, ny;
       strata(c.samples, nx, ny);
-      uint32_t cell = c.index % (nx * ny);
+      // Strata in a per-pixel random order, so that the first k samples of a render stopped
+      // early (time limit, noise threshold) are spread over the pixel, not its top rows. The
+      // jitter belongs to the stratum, so the full set of positions does not depend on the order.
+      uint32_t cells = nx * ny;
+      uint32_t cell = permutation_element(c.index % cells, cells, hash3(c.pixel, c.seed, 0x5354u));
       vec2 offset = {0.5f, 0.5f};
-      if (c.kind == SamplerKind::jittered) offset = {random_value(c, 0), random_value(c, 1)};
+      if (c.kind == SamplerKind::jittered)
+        offset = {bits_to_unit_float(hash4(c.pixel, cell, 0, c.seed)), bits_to_unit_float(hash4(c.pixel, cell, 1, c.seed))};
       return {(float(cell % nx) + offset.x) / float(nx), (float(cell / nx) + offset.y) / float(ny)};
     }
     case SamplerKind::random:

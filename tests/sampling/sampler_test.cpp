@@ -1,0 +1,68 @@
+// Samplers: strata coverage, progressive prefixes, and purity.
+#include <doctest/doctest.h>
+
+#include <set>
+
+#include "sampling/sampler.h"
+
+using namespace radiant;
+
+namespace {
+
+SampleContext context(SamplerKind kind, uint32_t index, uint32_t samples, uint32_t pixel = 7) {
+  return {kind, pixel, index, samples, 3};
+}
+
+std::pair<int, int> cell_of(vec2 p, int n) { return {int(p.x * n), int(p.y * n)}; }
+
+}  // namespace
+
+TEST_CASE("sampler: one sample per pixel goes through the centre for grid and jittered") {
+  for (SamplerKind kind : {SamplerKind::grid, SamplerKind::jittered}) {
+    vec2 p = sample_pixel(context(kind, 0, 1));
+    CHECK(p.x == 0.5f);
+    CHECK(p.y == 0.5f);
+  }
+}
+
+TEST_CASE("sampler: grid and jittered put exactly one of 16 samples in each 4x4 stratum") {
+  for (SamplerKind kind : {SamplerKind::grid, SamplerKind::jittered}) {
+    std::set<std::pair<int, int>> cells;
+    for (uint32_t i = 0; i < 16; ++i) cells.insert(cell_of(sample_pixel(context(kind, i, 16)), 4));
+    CHECK(cells.size() == 16);
+  }
+}
+
+TEST_CASE("sampler: the first samples of a stratified render are spread over the pixel, not its top rows") {
+  // A render stopped early keeps only a prefix of the samples; raster-ordered strata would
+  // put all of them in the top rows and bias the pixel.
+  int top_half = 0, total = 0;
+  for (uint32_t pixel = 0; pixel < 200; ++pixel)
+    for (uint32_t i = 0; i < 8; ++i, ++total) top_half += sample_pixel(context(SamplerKind::jittered, i, 64, pixel)).y < 0.5f;
+  CHECK(double(top_half) / total == doctest::Approx(0.5).epsilon(0.08));
+}
+
+TEST_CASE("sampler: the first 16 Sobol pixel samples form a (0,4,2)-net: one per 4x4 and per 16x1 cell") {
+  std::set<std::pair<int, int>> square, columns;
+  for (uint32_t i = 0; i < 16; ++i) {
+    vec2 p = sample_pixel(context(SamplerKind::sobol, i, 64));
+    square.insert(cell_of(p, 4));
+    columns.insert({int(p.x * 16), 0});
+  }
+  CHECK(square.size() == 16);
+  CHECK(columns.size() == 16);
+}
+
+TEST_CASE("sampler: every value is a pure function of (pixel, index, dimension, seed) in [0, 1)") {
+  for (SamplerKind kind : {SamplerKind::random, SamplerKind::jittered, SamplerKind::sobol}) {
+    for (uint32_t i = 0; i < 32; ++i) {
+      SampleContext c = context(kind, i, 32);
+      vec2 a = sample_2d(c, 5), b = sample_2d(c, 5);
+      CHECK(a.x == b.x);
+      CHECK(a.y == b.y);
+      float v = sample_1d(c, 9);
+      CHECK(v >= 0.0f);
+      CHECK(v < 1.0f);
+    }
+  }
+}
