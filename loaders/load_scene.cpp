@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 
 #include "gltf/gltf_loader.h"
 #include "obj/obj_loader.h"
@@ -13,6 +14,16 @@
 #include "scene_format/scene_format_loader.h"
 
 namespace radiant {
+
+std::string one_line(const std::string& text) {
+  std::istringstream lines(text);
+  std::string line, out;
+  while (std::getline(lines, line)) {
+    while (!line.empty() && std::isspace((unsigned char)line.back())) line.pop_back();
+    if (!line.empty()) out += (out.empty() ? "" : "; ") + line;
+  }
+  return out;
+}
 
 size_t default_max_memory() {
   long pages = sysconf(_SC_PHYS_PAGES), page_size = sysconf(_SC_PAGE_SIZE);

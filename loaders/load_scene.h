@@ -21,6 +21,9 @@ struct LoadOptions {
   int gltf_scene = -1;                // glTF scene index; -1 = the file's default scene
 };
 
+// Joins a library's multi-line message into one line ("; " between non-empty lines).
+std::string one_line(const std::string& text);
+
 // A quarter of physical memory: the default for LoadOptions::max_memory_bytes.
 size_t default_max_memory();
 

@@ -53,17 +53,6 @@ void check_declarations(const GltfDeclarations& declared, const std::string& pat
   }
 }
 
-// tinygltf reports several lines; radiant shows one.
-std::string one_line(const std::string& text) {
-  std::istringstream lines(text);
-  std::string line, out;
-  while (std::getline(lines, line)) {
-    while (!line.empty() && std::isspace((unsigned char)line.back())) line.pop_back();
-    if (!line.empty()) out += (out.empty() ? "" : "; ") + line;
-  }
-  return out;
-}
-
 tinygltf::Model parse(const std::string& path, const std::string& bytes, const LoadOptions& options,
                       SceneDesc& scene, uint64_t& bytes_charged) {
   bool binary = bytes.compare(0, 4, "glTF") == 0;

@@ -13,16 +13,6 @@ namespace radiant {
 
 namespace {
 
-std::string one_line(const std::string& text) {
-  std::istringstream lines(text);
-  std::string line, out;
-  while (std::getline(lines, line)) {
-    while (!line.empty() && std::isspace((unsigned char)line.back())) line.pop_back();
-    if (!line.empty()) out += (out.empty() ? "" : "; ") + line;
-  }
-  return out;
-}
-
 // `mtllib` files resolve inside the OBJ's folder like every other file.
 struct MtlReader : tinyobj::MaterialReader {
   std::filesystem::path base_dir;

@@ -6,29 +6,15 @@
 #include <limits>
 #include <stdexcept>
 
-#include "accel/analytic_shapes.h"
+#include "scene/scene_bounds.h"
 
 namespace radiant {
 
 namespace {
 
 void scene_bounding_sphere(const SceneDesc& scene, vec3& center, float& radius) {
-  constexpr float inf = std::numeric_limits<float>::infinity();
-  vec3 lower = {inf, inf, inf}, upper = -lower;
-  for (const InstanceDesc& instance : scene.instances)
-    for (vec3 p : scene.meshes[instance.mesh].positions) {
-      vec3 w = transform_point(instance.transform, p);
-      lower = min(lower, w);
-      upper = max(upper, w);
-    }
-  for (const ShapeDesc& s : scene.shapes) {
-    if (s.kind == ShapeKind::plane || s.kind == ShapeKind::tube) continue;
-    vec3 lo, hi;
-    shape_bounds(s, 0, lo, hi);
-    lower = min(lower, lo);
-    upper = max(upper, hi);
-  }
-  if (!(lower.x <= upper.x)) {
+  vec3 lower, upper;
+  if (!scene_bounds(scene, lower, upper)) {
     center = {0, 0, 0};
     radius = 1;
     return;

@@ -4,7 +4,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "accel/analytic_shapes.h"
+#include "scene/scene_bounds.h"
 
 namespace radiant {
 
@@ -34,33 +34,19 @@ Ray generate_camera_ray(const CameraFrame& f, float x, float y) {
   return {f.position, normalize(f.forward + f.right * sx + f.up * sy)};
 }
 
-namespace {
-
-void grow(vec3& lower, vec3& upper, vec3 p) {
-  lower = min(lower, p);
-  upper = max(upper, p);
-}
-
-}  // namespace
-
 CameraDesc make_framing_camera(const SceneDesc& scene) {
-  constexpr float inf = std::numeric_limits<float>::infinity();
-  vec3 lower = {inf, inf, inf}, upper = -lower;
-  for (const InstanceDesc& instance : scene.instances)
-    for (vec3 p : scene.meshes[instance.mesh].positions) grow(lower, upper, transform_point(instance.transform, p));
-  for (const ShapeDesc& s : scene.shapes) {
+  vec3 lower, upper;
+  bool finite = scene_bounds(scene, lower, upper);
+  // Infinite planes and tubes: frame a point on each, so a scene of only planes is seen.
+  for (const ShapeDesc& s : scene.shapes)
     if (s.kind == ShapeKind::plane || s.kind == ShapeKind::tube) {
-      grow(lower, upper, s.center);  // infinite: frame only a point on it
-      continue;
+      lower = finite ? min(lower, s.center) : s.center;
+      upper = finite ? max(upper, s.center) : s.center;
+      finite = true;
     }
-    vec3 lo, hi;
-    shape_bounds(s, 0, lo, hi);
-    grow(lower, upper, lo);
-    grow(lower, upper, hi);
-  }
   CameraDesc camera;
   camera.name = "framing";
-  if (!(lower.x <= upper.x)) return camera;
+  if (!finite) return camera;
   vec3 center = (lower + upper) * 0.5f;
   float radius = std::max(length(upper - lower) * 0.5f, 1e-6f);
   camera.vertical_fov_degrees = 40;

@@ -2,7 +2,7 @@
 
 #include <limits>
 
-#include "accel/analytic_shapes.h"
+#include "scene/scene_bounds.h"
 #include "accel/scene_accel.h"
 
 namespace radiant {
@@ -29,26 +29,6 @@ void count_geometry(const SceneDesc& scene, SceneSummary& s) {
   }
 }
 
-void compute_bounds(const SceneDesc& scene, SceneSummary& s) {
-  constexpr float inf = std::numeric_limits<float>::infinity();
-  vec3 lower = {inf, inf, inf}, upper = -lower;
-  for (const InstanceDesc& i : scene.instances)
-    for (vec3 p : scene.meshes[i.mesh].positions) {
-      vec3 w = transform_point(i.transform, p);
-      lower = min(lower, w);
-      upper = max(upper, w);
-    }
-  for (const ShapeDesc& shape : scene.shapes) {
-    if (shape.kind == ShapeKind::plane || shape.kind == ShapeKind::tube) continue;
-    vec3 lo, hi;
-    shape_bounds(shape, 0, lo, hi);
-    lower = min(lower, lo);
-    upper = max(upper, hi);
-  }
-  s.has_bounds = lower.x <= upper.x;
-  if (s.has_bounds) s.bounds_lower = lower, s.bounds_upper = upper;
-}
-
 // A light is enclosed when rays in all six axis directions hit the back of some surface.
 bool light_is_enclosed(const SceneAccel& accel, vec3 position) {
   const vec3 directions[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
@@ -66,7 +46,7 @@ bool light_is_enclosed(const SceneAccel& accel, vec3 position) {
 SceneSummary summarize_scene(const SceneDesc& scene) {
   SceneSummary s;
   count_geometry(scene, s);
-  compute_bounds(scene, s);
+  s.has_bounds = scene_bounds(scene, s.bounds_lower, s.bounds_upper);
   s.materials = scene.materials.size();
   s.textures = scene.textures.size();
   s.images = scene.images.size();

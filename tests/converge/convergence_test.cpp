@@ -61,7 +61,7 @@ TEST_CASE("converge: the edge mask marks the top fraction of pixels by Sobel gra
   CHECK(measure_error(image, reference, edges).edge_rmse == doctest::Approx(0.5 / std::sqrt(2.0)));
 }
 
-TEST_CASE("converge: power-law and line fits recover exact laws; predictions invert them") {
+TEST_CASE("converge: power-law and line fits recover exact laws, predictions invert them") {
   std::vector<double> spp = {1, 4, 16, 64}, rmse, seconds;
   for (double n : spp) rmse.push_back(0.3 * std::pow(n, -0.5)), seconds.push_back(0.01 + 0.002 * n);
   PowerFit fit = fit_power_law(spp, rmse);

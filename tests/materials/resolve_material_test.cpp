@@ -83,7 +83,7 @@ TEST_CASE("resolve alpha modes: opaque ignores alpha, mask thresholds at the cut
   CHECK(resolve_material(scene, material, {}).opacity == doctest::Approx(0.6f));
 }
 
-TEST_CASE("resolve normal map: [0,1] texels map to [-1,1], xy scaled by normal_scale, normalized") {
+TEST_CASE("resolve normal map: texels in 0..1 map to -1..1, xy scaled by normal_scale, normalized") {
   SceneDesc scene;
   MaterialDesc material;
   material.normal_texture = add_texture(scene, {0.75f, 0.5f, 1});

@@ -53,7 +53,7 @@ TEST_CASE("sampler: the first 16 Sobol pixel samples form a (0,4,2)-net: one per
   CHECK(columns.size() == 16);
 }
 
-TEST_CASE("sampler: every value is a pure function of (pixel, index, dimension, seed) in [0, 1)") {
+TEST_CASE("sampler: every value is a pure function of (pixel, index, dimension, seed) inside the unit interval") {
   for (SamplerKind kind : {SamplerKind::random, SamplerKind::jittered, SamplerKind::sobol}) {
     for (uint32_t i = 0; i < 32; ++i) {
       SampleContext c = context(kind, i, 32);
