@@ -31,7 +31,7 @@ wait "$gltf_pid" || status=1
 for name in scene gltf; do
   echo "== fuzz_$name: $build_dir/fuzz-$name.log =="
   # The summary on success; the sanitizer report and the artifact name on a finding.
-  grep -E "^(==[0-9]+==ERROR|SUMMARY|artifact_prefix|Test unit written|#[0-9]+\s+DONE|stat::number_of_executed_units|stat::peak_rss_mb)|^\s+#[0-9]+ 0x" \
+  grep -E "^(==[0-9]+==ERROR|SUMMARY|artifact_prefix|Test unit written|terminate called|  what\(\)|#[0-9]+\s+DONE|stat::number_of_executed_units|stat::peak_rss_mb)|runtime error:|^\s+#[0-9]+ 0x" \
     "$build_dir/fuzz-$name.log" | head -40 || true
 done
 if ((status)); then echo "fuzz: FAILED, inputs in $artifacts/" >&2; exit 1; fi
