@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Installs what the fuzz build needs beyond scripts/setup.sh (only those missing): clang,
+# libFuzzer and the sanitizer runtimes for it, and llvm-symbolizer for readable stack traces.
+# Then configures and builds the two fuzzers in BUILD_DIR (docs/hardening.md).
+# Usage: scripts/setup-fuzz.sh [BUILD_DIR] [extra cmake args...]   (BUILD_DIR defaults to build-fuzz)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(clang libclang-rt-14-dev llvm)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "setup-fuzz: installing ${missing[*]}" >&2
+  sudo_cmd=(); [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
+  "${sudo_cmd[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
+fi
+
+build_dir=${1:-build-fuzz}
+shift || true
+# The test suite is left out: the sanitizer build (scripts/test.sh with RADIANT_SANITIZE) runs it.
+CC=clang CXX=clang++ cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DRADIANT_FUZZ=ON -DRADIANT_SANITIZE=ON -DRADIANT_TESTS=OFF "$@" >&2
+cmake --build "$build_dir" -j2 --target fuzz_scene_format fuzz_gltf >&2
