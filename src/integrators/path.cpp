@@ -123,7 +123,9 @@ struct PathVariant {
         if (enabled<E>(ctx.effects, effect_environment)) {
           color3 background = eval_environment(lights, normalize(ray.direction));
           float weight = 1;
-          if (LightSampling && !specular_bounce) {
+          // The environment has a selection slot only when it exists (--effects=all can switch
+          // the effect on for a scene without one).
+          if (LightSampling && !specular_bounce && lights.has_environment()) {
             float light_pdf = lights.selection.pmf[lights.environment_slot()] *
                               environment_pdf(lights, previous_normal, normalize(ray.direction));
             weight = power_heuristic(previous_pdf, light_pdf);
