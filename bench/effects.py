@@ -1,15 +1,18 @@
 #!/usr/bin/env python3
 """Measures what unused effects cost: each scene rendered by the integrator specialised to its
-effect set and by the generic all-effects integrator (--effects=all), alternately, same seed.
-Prints a Markdown table (times are medians; the ratio is measured in the same run) and checks
-that both images are byte-identical.
+effect set and by the generic all-effects integrator (--effects=all), same seed.
 
-Usage: bench/effects.py [--radiant build/radiant] [--repeats 5] [--out docs/effects-table.md]
+Two measures, because this machine is shared and noisy:
+  * instructions executed (valgrind --tool=callgrind, exact and repeatable) on a small render;
+  * CPU seconds (user + system of the render process) on a larger one, median of alternating runs.
+It checks that both images are byte-identical and prints a Markdown table.
+
+Usage: bench/effects.py [--radiant build/radiant] [--repeats 5] [--out FILE] [--no-callgrind]
 """
-import argparse, filecmp, json, os, statistics, subprocess, sys, tempfile
+import argparse, filecmp, json, os, re, resource, shutil, statistics, subprocess, sys, tempfile
 
 SCENES = [
-    # (scene, mode, size, spp)
+    # (scene, mode, size, spp)                  the callgrind run uses size/4 and spp/4
     ("assets/first-render.scene", "whitted", 400, 16),
     ("assets/showcase.scene", "whitted", 320, 16),
     ("assets/room-older-format.scene", "path", 160, 32),
@@ -18,14 +21,25 @@ SCENES = [
 ]
 
 
-def render(radiant, scene, mode, size, spp, out, stats, effects=None):
+def command(radiant, scene, mode, size, spp, out, effects):
     cmd = [radiant, "render", scene, "-o", out, "--mode", mode, "--width", str(size), "--height", str(size),
-           "--spp", str(spp), "--threads", "2", "--quiet", "--stats", stats]
+           "--spp", str(spp), "--threads", "1", "--quiet"]
     if effects:
         cmd.append("--effects=" + effects)
+    return cmd
+
+
+def cpu_seconds(cmd):
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
     subprocess.run(cmd, check=True)
-    with open(stats) as f:
-        return json.load(f)
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+
+
+def instructions(cmd):
+    result = subprocess.run(["valgrind", "--tool=callgrind", "--callgrind-out-file=/dev/null"] + cmd,
+                            check=True, capture_output=True, text=True)
+    return int(re.search(r"Collected : (\d+)", result.stderr).group(1))
 
 
 def main():
@@ -33,24 +47,35 @@ def main():
     parser.add_argument("--radiant", default="build/radiant")
     parser.add_argument("--repeats", type=int, default=5)
     parser.add_argument("--out")
+    parser.add_argument("--no-callgrind", action="store_true")
     args = parser.parse_args()
-    rows = ["| scene | mode | effects the scene calls for | specialised (s) | generic (s) | generic / specialised | images |",
-            "|---|---|---|---|---|---|---|"]
+    use_callgrind = not args.no_callgrind and shutil.which("valgrind")
+    rows = ["| scene | mode | effects the scene calls for | instructions, specialised / generic (small render) "
+            "| CPU s specialised | CPU s generic | CPU generic / specialised | images |",
+            "|---|---|---|---|---|---|---|---|"]
     with tempfile.TemporaryDirectory() as tmp:
         for scene, mode, size, spp in SCENES:
             if not os.path.exists(scene):
                 print(f"skipping {scene}: not found", file=sys.stderr)
                 continue
-            special, generic = [], []
             a, b = os.path.join(tmp, "a.exr"), os.path.join(tmp, "b.exr")
+            special, generic = [], []
             for _ in range(args.repeats):  # alternate so machine noise hits both alike
-                s = render(args.radiant, scene, mode, size, spp, a, os.path.join(tmp, "a.json"))
-                g = render(args.radiant, scene, mode, size, spp, b, os.path.join(tmp, "b.json"), "all")
-                special.append(s["seconds"]["render"])
-                generic.append(g["seconds"]["render"])
+                special.append(cpu_seconds(command(args.radiant, scene, mode, size, spp, a, None)))
+                generic.append(cpu_seconds(command(args.radiant, scene, mode, size, spp, b, "all")))
             identical = filecmp.cmp(a, b, shallow=False)
+            stats = os.path.join(tmp, "s.json")
+            subprocess.run(command(args.radiant, scene, mode, 16, 1, a, None) + ["--stats", stats], check=True)
+            with open(stats) as f:
+                effects = json.load(f)["effects"]
+            ratio = "n/a"
+            if use_callgrind:
+                small = (max(size // 4, 16), max(spp // 4, 1))
+                i_special = instructions(command(args.radiant, scene, mode, *small, a, None))
+                i_generic = instructions(command(args.radiant, scene, mode, *small, b, "all"))
+                ratio = f"{i_special / 1e6:.0f} M / {i_generic / 1e6:.0f} M = {i_generic / i_special:.3f}"
             ms, mg = statistics.median(special), statistics.median(generic)
-            rows.append(f"| {scene} | {mode} | {s['effects']} | {ms:.3f} | {mg:.3f} | {mg / ms:.2f} | "
+            rows.append(f"| {scene} | {mode} | {effects} | {ratio} | {ms:.3f} | {mg:.3f} | {mg / ms:.2f} | "
                         f"{'identical' if identical else 'DIFFERENT'} |")
             print(rows[-1], file=sys.stderr)
     table = "\n".join(rows) + "\n"

@@ -2,6 +2,7 @@
 
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 
@@ -46,6 +47,12 @@ std::string render_summary(const std::string& output, const RenderResult& r, con
   std::string line = buffer;
   if (r.stats.rays.nonfinite_samples)
     line += ", " + std::to_string(r.stats.rays.nonfinite_samples) + " non-finite samples dropped";
+  if (r.stats.min_pixel_samples != r.stats.max_pixel_samples) {
+    std::snprintf(buffer, sizeof buffer, ", %u-%u spp per pixel (median %u), estimated relative error %.2f%%",
+                  r.stats.min_pixel_samples, r.stats.max_pixel_samples, r.stats.median_pixel_samples,
+                  100.0 * r.stats.estimated_relative_error);
+    line += buffer;
+  }
   if (r.stats.stopped_by_time_limit)
     line += ", time limit reached at " + std::to_string(r.stats.samples / std::max<size_t>(1, r.film.pixels.size())) + " spp";
   return line;
@@ -72,7 +79,9 @@ std::string render_stats_json(const std::string& scene_path, const std::string& 
     << ", \"refraction\": " << rays.refraction << ", \"indirect\": " << rays.indirect << ", \"total\": " << rays.total() << "},\n"
     << "  \"rays_per_second\": " << rays_per_second << ",\n"
     << "  \"samples\": " << r.stats.samples << ", \"passes\": " << r.stats.passes << ",\n"
-    << "  \"pixel_samples\": {\"min\": " << r.stats.min_pixel_samples << ", \"max\": " << r.stats.max_pixel_samples << "},\n"
+    << "  \"pixel_samples\": {\"min\": " << r.stats.min_pixel_samples << ", \"median\": " << r.stats.median_pixel_samples
+    << ", \"p90\": " << r.stats.p90_pixel_samples << ", \"max\": " << r.stats.max_pixel_samples << ", \"mean\": "
+    << double(r.stats.samples) / double(std::max<size_t>(1, r.film.pixels.size())) << "},\n"
     << "  \"estimated_relative_error\": " << r.stats.estimated_relative_error << ",\n"
     << "  \"stopped_by_time_limit\": " << (r.stats.stopped_by_time_limit ? "true" : "false") << ",\n"
     << "  \"nonfinite_samples_dropped\": " << rays.nonfinite_samples << ",\n"

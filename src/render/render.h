@@ -48,6 +48,7 @@ struct RenderStats {
   uint64_t samples = 0;
   int passes = 0;
   uint32_t min_pixel_samples = 0, max_pixel_samples = 0;
+  uint32_t median_pixel_samples = 0, p90_pixel_samples = 0;  // the distribution adaptive sampling gives
   float estimated_relative_error = 0;  // mean over pixels of the relative standard error
   bool stopped_by_time_limit = false;
 };

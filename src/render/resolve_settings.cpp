@@ -35,6 +35,8 @@ ResolvedSettings resolve_settings(const PreparedScene& prepared, const RenderOpt
   ResolvedSettings r;
   r.camera = select_camera(scene, options.camera, r.camera_framed);
   apply_camera_override(r.camera, options.camera_override);
+  // A camera placed entirely by the flags is not a framing camera.
+  if (options.camera_override.look_from && options.camera_override.look_at) r.camera_framed = false;
   resolve_size(options, scene, r);
 
   RenderMode mode = options.mode ? *options.mode : scene.settings.mode.value_or(RenderMode::auto_select);

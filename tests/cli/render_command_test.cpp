@@ -138,3 +138,16 @@ TEST_CASE("render cli: the summary line reports resolution, spp, time and rays/s
   CHECK(r.err.find("2 spp") != std::string::npos);
   CHECK(r.err.find("rays/s") != std::string::npos);
 }
+
+TEST_CASE("render cli: adaptive sampling reports the distribution of per-pixel samples and the estimated error") {
+  ScratchDir dir("cli-adaptive");
+  fs::path stats = dir.file("stats.json");
+  CommandResult r = run_radiant("render " + quoted(source_path("assets/showcase.scene")) + " -o " + quoted(dir.file("a.png")) +
+                                " --width 32 --height 32 --spp 128 --noise-threshold 0.05 --stats " + quoted(stats));
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.err.find("spp per pixel (median") != std::string::npos);
+  std::string json = read_bytes(stats);
+  CHECK(json.find("\"pixel_samples\": {\"min\": 8, \"median\": ") != std::string::npos);
+  CHECK(json.find("\"max\": 128") != std::string::npos);
+  CHECK(json.find("\"estimated_relative_error\": ") != std::string::npos);
+}
