@@ -3,7 +3,8 @@
 effect set and by the generic all-effects integrator (--effects=all), same seed.
 
 Two measures, because this machine is shared and noisy:
-  * instructions executed (valgrind --tool=callgrind, exact and repeatable) on a small render;
+  * instructions executed inside the render loop (valgrind --tool=callgrind, exact and
+    repeatable) on a small render;
   * CPU seconds (user + system of the render process) on a larger one, median of alternating runs.
 It checks that both images are byte-identical and prints a Markdown table.
 
@@ -37,7 +38,9 @@ def cpu_seconds(cmd):
 
 
 def instructions(cmd):
-    result = subprocess.run(["valgrind", "--tool=callgrind", "--callgrind-out-file=/dev/null"] + cmd,
+    # Only instructions inside the render loop count: loading and start-up would dilute the ratio.
+    result = subprocess.run(["valgrind", "--tool=callgrind", "--callgrind-out-file=/dev/null",
+                             "--toggle-collect=*render_prepared*"] + cmd,
                             check=True, capture_output=True, text=True)
     return int(re.search(r"Collected : (\d+)", result.stderr).group(1))
 

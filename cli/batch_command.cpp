@@ -105,7 +105,7 @@ std::vector<BatchStep> parse_script(std::istream& in, const std::string& name, c
 }  // namespace
 
 int batch_main(int argc, char** argv) {
-  CLI::App app{"Run a command script: load a scene once, render many views (see docs/cli.md)."};
+  CLI::App app{"Run a command script: load a scene once, render many views (docs/cli.md)."};
   std::string script_path;
   bool quiet = false, allow_external = false;
   app.add_option("SCRIPT", script_path, "Command script, or - for standard input")->required();
