@@ -3,7 +3,7 @@
 effect set and by the generic all-effects integrator (--effects=all), same seed.
 
 Two measures, because this machine is shared and noisy:
-  * instructions executed inside the render loop (valgrind --tool=callgrind, exact and
+  * instructions executed inside the integrator (valgrind --tool=callgrind, exact and
     repeatable) on a small render;
   * CPU seconds (user + system of the render process) on a larger one, median of alternating runs.
 It checks that both images are byte-identical and prints a Markdown table.
@@ -38,9 +38,10 @@ def cpu_seconds(cmd):
 
 
 def instructions(cmd):
-    # Only instructions inside the render loop count: loading and start-up would dilute the ratio.
+    # Only instructions inside the integrators count (each camera sample's radiance): loading and
+    # start-up would dilute the ratio.
     result = subprocess.run(["valgrind", "--tool=callgrind", "--callgrind-out-file=/dev/null",
-                             "--toggle-collect=*render_prepared*"] + cmd,
+                             "--toggle-collect=*WhittedVariant*run*", "--toggle-collect=*PathVariant*run*"] + cmd,
                             check=True, capture_output=True, text=True)
     return int(re.search(r"Collected : (\d+)", result.stderr).group(1))
 

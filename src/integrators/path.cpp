@@ -4,7 +4,7 @@
 
 #include "integrators/background.h"
 #include "integrators/naive.h"
-#include "integrators/shading_frame.h"
+#include "integrators/hit_shading.h"
 #include "integrators/shadow.h"
 #include "lights/area_light.h"
 #include "lights/delta_light.h"
@@ -55,7 +55,7 @@ int hit_light_index(const LightTable& lights, const HitId& id) {
 // One light sample with MIS against BSDF sampling (next-event estimation).
 template <uint32_t E>
 color3 sample_one_light(const RenderContext& ctx, const SurfaceHit& hit, const SurfaceMaterial& m,
-                        const ShadingFrame& f, const SampleContext& sample, int depth, RayCounts& counts) {
+                        const HitShading& f, const SampleContext& sample, int depth, RayCounts& counts) {
   const LightTable& lights = *ctx.lights;
   if (lights.selection.empty()) return {};
   float u_choice = sample_1d(sample, dimension(depth, light_choice));
@@ -142,7 +142,7 @@ struct PathVariant {
         ++transparent_steps;
         continue;
       }
-      ShadingFrame f = make_shading_frame<E>(ctx.effects, hit, m, ray.direction);
+      HitShading f = make_hit_shading<E>(ctx.effects, hit, m, ray.direction);
       if (first_hit && depth == 0) *first_hit = {bsdf_albedo(m), f.normal, id.t * length(ray.direction)};
 
       if (enabled<E>(ctx.effects, effect_emission) && !is_black(m.emission)) {

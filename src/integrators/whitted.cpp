@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "integrators/background.h"
-#include "integrators/shading_frame.h"
+#include "integrators/hit_shading.h"
 #include "integrators/shadow.h"
 #include "lights/delta_light.h"
 
@@ -15,7 +15,7 @@ enum class RayKind { camera, reflection, refraction };
 
 template <uint32_t E>
 color3 direct_phong(const RenderContext& ctx, const SurfaceHit& hit, const SurfaceMaterial& m,
-                    const ShadingFrame& f, RayCounts& counts) {
+                    const HitShading& f, RayCounts& counts) {
   color3 sum;
   if (enabled<E>(ctx.effects, effect_direct_delta)) {
     for (int index : ctx.lights->delta_lights) {
@@ -47,7 +47,7 @@ color3 trace(const RenderContext& ctx, const Ray& ray, int depth, color3 weight,
   if (!id.valid()) return background_radiance<E>(ctx, ray.direction);
   SurfaceHit hit = make_surface_hit(*ctx.accel, ray, id);
   SurfaceMaterial m = material_at<E>(ctx, hit);
-  ShadingFrame f = make_shading_frame<E>(ctx.effects, hit, m, ray.direction);
+  HitShading f = make_hit_shading<E>(ctx.effects, hit, m, ray.direction);
   if (first_hit) *first_hit = {bsdf_albedo(m), f.normal, id.t * length(ray.direction)};
 
   color3 radiance;

@@ -2,6 +2,7 @@
 // dielectric coating over Lambert ("plastic") and a dielectric interface (glass), see
 // docs/materials.md. Lobes are written in the local frame where wo is above the surface.
 #include "materials/bsdf_models.h"
+#include "materials/lobe_sampling.h"
 #include "materials/fresnel.h"
 #include "materials/metallic_roughness.h"
 #include "materials/microfacet.h"
@@ -157,30 +158,6 @@ float pdf_local(const Lobes& l, vec3 wi) {
     pdf += l.p_transmission * pdf_rough_transmission(l, wi);
   }
   return std::isfinite(pdf) ? pdf : 0;
-}
-
-BsdfSample delta_sample(const Lobes& l, vec3 wi_local, color3 reflectance, float selection) {
-  BsdfSample s;
-  s.wi = to_world(l.frame, wi_local);
-  s.weight = reflectance / selection;
-  s.pdf = selection;
-  s.delta = true;
-  s.transmitted = wi_local.z < 0;
-  return s;
-}
-
-// A direction chosen by one of the non-delta lobes, weighted by the whole mixture (one-sample MIS).
-std::optional<BsdfSample> mixture_sample(const Lobes& l, vec3 wi_local) {
-  float pdf = pdf_local(l, wi_local);
-  color3 f = eval_local(l, wi_local);
-  if (!(pdf > 0) || is_black(f)) return std::nullopt;
-  BsdfSample s;
-  s.wi = to_world(l.frame, wi_local);
-  s.weight = f / pdf;
-  s.pdf = pdf;
-  s.transmitted = wi_local.z < 0;
-  if (!is_finite(s.weight)) return std::nullopt;
-  return s;
 }
 
 std::optional<BsdfSample> sample_specular(const Lobes& l, vec2 u) {

@@ -2,6 +2,7 @@
 // ks (n+2)/(2 pi) cos^n (Lafortune & Willems 1994), a delta mirror (kr) and a delta
 // transmission (kt), scaled per channel so that kd + ks + kr + kt <= 1 (docs/materials.md).
 #include "materials/bsdf_models.h"
+#include "materials/lobe_sampling.h"
 #include "materials/shading_frame.h"
 
 namespace radiant {
@@ -66,29 +67,6 @@ float pdf_local(const Lobes& l, vec3 wi) {
   float pdf = l.p_diffuse * wi.z * inv_pi;
   if (l.p_glossy > 0) pdf += l.p_glossy * (l.exponent + 1) / (2 * pi) * phong_lobe(l, wi);
   return pdf;
-}
-
-BsdfSample delta_sample(const Lobes& l, vec3 wi_local, color3 weight, float selection) {
-  BsdfSample s;
-  s.wi = to_world(l.frame, wi_local);
-  s.weight = weight / selection;
-  s.pdf = selection;
-  s.delta = true;
-  s.transmitted = wi_local.z < 0;
-  return s;
-}
-
-// A direction chosen by one of the non-delta lobes, weighted by the whole mixture (one-sample MIS).
-std::optional<BsdfSample> mixture_sample(const Lobes& l, vec3 wi_local) {
-  float pdf = pdf_local(l, wi_local);
-  color3 f = eval_local(l, wi_local);
-  if (!(pdf > 0) || is_black(f)) return std::nullopt;
-  BsdfSample s;
-  s.wi = to_world(l.frame, wi_local);
-  s.weight = f / pdf;
-  s.pdf = pdf;
-  if (!is_finite(s.weight)) return std::nullopt;
-  return s;
 }
 
 // A direction with density (n+1)/(2 pi) cos^n around the mirror direction.

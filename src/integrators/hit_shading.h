@@ -7,7 +7,7 @@
 
 namespace radiant {
 
-struct ShadingFrame {
+struct HitShading {
   vec3 geometric_normal;  // facing the incoming ray
   vec3 normal;            // shading normal, facing the incoming ray
   vec3 authored_normal;   // shading normal on the authored front side (for transmission)
@@ -17,14 +17,14 @@ struct ShadingFrame {
 
 // The normal the BSDF sees: facing the incoming ray for opaque materials, the authored one for
 // transmissive materials, whose BSDF tells entering from leaving by the side wo lies on.
-inline vec3 bsdf_normal(const SurfaceMaterial& m, const ShadingFrame& f) {
+inline vec3 bsdf_normal(const SurfaceMaterial& m, const HitShading& f) {
   bool transmissive = !is_black(m.kt) || m.transmission > 0;
   return transmissive ? f.authored_normal : f.normal;
 }
 
 template <uint32_t E>
-ShadingFrame make_shading_frame(uint32_t effects, const SurfaceHit& hit, const SurfaceMaterial& m, vec3 ray_direction) {
-  ShadingFrame f;
+HitShading make_hit_shading(uint32_t effects, const SurfaceHit& hit, const SurfaceMaterial& m, vec3 ray_direction) {
+  HitShading f;
   f.wo = -normalize(ray_direction);
   vec3 n = hit.shading_normal;
   if (enabled<E>(effects, effect_normal_maps)) {
