@@ -137,7 +137,8 @@ struct PathVariant {
       SurfaceHit hit = make_surface_hit(*ctx.accel, ray, id);
       SurfaceMaterial m = material_at<E>(ctx, hit);
       if (enabled<E>(ctx.effects, effect_alpha) && m.opacity < 1 &&
-          sample_1d(sample, dimension(depth, alpha_choice) + 100 * transparent_steps) >= m.opacity) {
+          // Each see-through step at this vertex gets its own dimension, far above any vertex's block.
+          sample_1d(sample, dimension(depth, alpha_choice) + 0x10000u * uint32_t(transparent_steps)) >= m.opacity) {
         ray = spawn_ray(hit, ray.direction);  // see-through: the path goes on unchanged
         ++transparent_steps;
         continue;
