@@ -151,3 +151,20 @@ TEST_CASE("render cli: adaptive sampling reports the distribution of per-pixel s
   CHECK(json.find("\"max\": 128") != std::string::npos);
   CHECK(json.find("\"estimated_relative_error\": ") != std::string::npos);
 }
+
+TEST_CASE("render cli: --camera picks a camera by index or name; an unknown one is a usage error listing the cameras") {
+  ScratchDir dir("cli-camera");
+  fs::path scene = dir.write("two.scene",
+                             "@camera front\nposition 0 0 5\ndirection 0 0 -1\n"
+                             "@camera top\nposition 0 5 0\ndirection 0 -1 0\nup 0 0 -1\n"
+                             "@sphere\nradius 1\ncenter 0 0 0\nemission 255 255 255\n");
+  std::string base = "render " + quoted(scene) + " --width 8 --height 8 --spp 1 --mode whitted --quiet -o ";
+  REQUIRE(run_radiant(base + quoted(dir.file("by-index.png")) + " --camera 1").exit_code == 0);
+  REQUIRE(run_radiant(base + quoted(dir.file("by-name.png")) + " --camera top").exit_code == 0);
+  CHECK(read_bytes(dir.file("by-index.png")) == read_bytes(dir.file("by-name.png")));
+  CommandResult r = run_radiant(base + quoted(dir.file("none.png")) + " --camera side");
+  CHECK(r.exit_code == 2);
+  CHECK(r.err.find("no camera 'side'") != std::string::npos);
+  CHECK(r.err.find("1 'top'") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir.file("none.png")));
+}
