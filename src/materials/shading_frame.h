@@ -2,6 +2,7 @@
 #pragma once
 
 #include "math/vec.h"
+#include "sampling/warp.h"  // sample_cosine_hemisphere: one definition for the whole renderer
 
 namespace radiant {
 
@@ -20,12 +21,6 @@ inline vec3 to_local(const ShadingFrame& frame, vec3 w) {
 }
 inline vec3 to_world(const ShadingFrame& frame, vec3 w) {
   return frame.t * w.x + frame.b * w.y + frame.n * w.z;
-}
-
-// A direction around +z with density cos(theta)/pi (Malley's method).
-inline vec3 sample_cosine_hemisphere(vec2 u) {
-  float r = std::sqrt(u.x), phi = 2 * pi * u.y;
-  return {r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0f, 1 - u.x))};
 }
 
 // Mirror of a local direction about the +z normal.
