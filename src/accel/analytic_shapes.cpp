@@ -2,19 +2,11 @@
 
 #include <cmath>
 
+#include "math/dvec3.h"
+
 namespace radiant {
 
 namespace {
-
-struct dvec3 {
-  double x, y, z;
-};
-dvec3 to_double(vec3 v) { return {v.x, v.y, v.z}; }
-dvec3 operator-(dvec3 a, dvec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-dvec3 operator+(dvec3 a, dvec3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-dvec3 operator*(dvec3 a, double s) { return {a.x * s, a.y * s, a.z * s}; }
-double dot(dvec3 a, dvec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-vec3 to_float(dvec3 v) { return {float(v.x), float(v.y), float(v.z)}; }
 
 // Roots of a t^2 + b t + c with the numerically stable formulation (no cancellation).
 bool solve_quadratic(double a, double b, double c, double& t0, double& t1) {

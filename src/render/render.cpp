@@ -183,29 +183,27 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
   result.stats.build_seconds = prepared.build_seconds;
   for (const RayCounts& c : counts) result.stats.rays += c;
 
-  uint32_t min_samples = UINT32_MAX, max_samples = 0;
+  // One pass gathers the sample counts (for their distribution) and the error estimates.
+  std::vector<uint32_t> counts_per_pixel;
+  counts_per_pixel.reserve(result.film.pixels.size());
   double error_sum = 0;
   size_t error_count = 0;
   for (const FilmPixel& p : result.film.pixels) {
-    min_samples = std::min(min_samples, p.samples);
-    max_samples = std::max(max_samples, p.samples);
+    counts_per_pixel.push_back(p.samples);
     result.stats.samples += p.samples;
     float e = pixel_relative_error(p);
     if (std::isfinite(e)) error_sum += e, ++error_count;
   }
-  std::vector<uint32_t> counts_per_pixel;
-  counts_per_pixel.reserve(result.film.pixels.size());
-  for (const FilmPixel& p : result.film.pixels) counts_per_pixel.push_back(p.samples);
   auto quantile = [&](double q) {
     if (counts_per_pixel.empty()) return uint32_t(0);
     auto at = counts_per_pixel.begin() + ptrdiff_t(q * double(counts_per_pixel.size() - 1));
     std::nth_element(counts_per_pixel.begin(), at, counts_per_pixel.end());
     return *at;
   };
+  result.stats.min_pixel_samples = quantile(0);
   result.stats.median_pixel_samples = quantile(0.5);
   result.stats.p90_pixel_samples = quantile(0.9);
-  result.stats.min_pixel_samples = min_samples == UINT32_MAX ? 0 : min_samples;
-  result.stats.max_pixel_samples = max_samples;
+  result.stats.max_pixel_samples = quantile(1);
   result.stats.estimated_relative_error = error_count ? float(error_sum / error_count) : 0.0f;
   return result;
 }

@@ -2,6 +2,8 @@
 // mesh), rays lying in a triangle's plane, and zero-area triangles (no hit, no NaN).
 #include <doctest/doctest.h>
 
+#include "math/dvec3.h"
+
 #include <cmath>
 #include <random>
 
@@ -43,16 +45,6 @@ constexpr int vertex_crack_allowance = 1000;
 // Rays crossing the quad closer than this to its outer border are not judged (Embree's own
 // single-precision arithmetic decides those); the shared diagonal gets no such allowance.
 constexpr double quad_border_margin = 1e-3;
-
-struct dvec3 {
-  double x, y, z;
-};
-dvec3 to_double(vec3 v) { return {v.x, v.y, v.z}; }
-dvec3 operator-(dvec3 a, dvec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-dvec3 operator+(dvec3 a, dvec3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-dvec3 operator*(dvec3 a, double s) { return {a.x * s, a.y * s, a.z * s}; }
-double dot(dvec3 a, dvec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-dvec3 cross(dvec3 a, dvec3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
 
 // Whether the ray's line (exact, from its float origin and direction) crosses the planar convex
 // polygon `corners` (counter-clockwise about its normal) + `offset` at least `margin` inside its outer border, for t in (0, ray.tmax).
