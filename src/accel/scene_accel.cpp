@@ -103,17 +103,33 @@ void alpha_mask_filter(const RTCFilterFunctionNArguments* args) {
   if (alpha < material.alpha_cutoff) args->valid[0] = 0;
 }
 
-RTCScene build_mesh_scene(SceneAccel& accel, int mesh_index) {
+// A mesh's vertices placed by `transform`, in double precision; false unless every coordinate
+// is exactly a float, so that placing the mesh in world space does not move it at all.
+bool place_exactly(const MeshDesc& mesh, const mat4& transform, std::vector<vec3>& placed) {
+  placed.resize(mesh.positions.size());
+  for (size_t i = 0; i < mesh.positions.size(); ++i) {
+    vec3 p = mesh.positions[i];
+    for (int r = 0; r < 3; ++r) {
+      const float* row = transform.m[r];
+      double exact = double(row[0]) * p.x + double(row[1]) * p.y + double(row[2]) * p.z + double(row[3]);
+      placed[i][r] = float(exact);
+      if (double(placed[i][r]) != exact) return false;
+    }
+  }
+  return true;
+}
+
+// A triangle geometry of a mesh with the given vertex positions; alpha-masked materials get the
+// filter that lets rays pass through cut-out texels.
+RTCGeometry new_triangle_geometry(SceneAccel& accel, int mesh_index, const std::vector<vec3>& positions) {
   const MeshDesc& mesh = accel.scene->meshes[mesh_index];
-  RTCScene scene = rtcNewScene(accel.device);
-  rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
   RTCGeometry geometry = rtcNewGeometry(accel.device, RTC_GEOMETRY_TYPE_TRIANGLE);
   auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-      geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.positions.size()));
-  for (size_t i = 0; i < mesh.positions.size(); ++i) {
-    vertices[3 * i + 0] = mesh.positions[i].x;
-    vertices[3 * i + 1] = mesh.positions[i].y;
-    vertices[3 * i + 2] = mesh.positions[i].z;
+      geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), positions.size()));
+  for (size_t i = 0; i < positions.size(); ++i) {
+    vertices[3 * i + 0] = positions[i].x;
+    vertices[3 * i + 1] = positions[i].y;
+    vertices[3 * i + 2] = positions[i].z;
   }
   auto* indices = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
       geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), mesh.triangle_count()));
@@ -124,6 +140,13 @@ RTCScene build_mesh_scene(SceneAccel& accel, int mesh_index) {
     rtcSetGeometryOccludedFilterFunction(geometry, alpha_mask_filter);
   }
   rtcCommitGeometry(geometry);
+  return geometry;
+}
+
+RTCScene build_mesh_scene(SceneAccel& accel, int mesh_index) {
+  RTCScene scene = rtcNewScene(accel.device);
+  rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
+  RTCGeometry geometry = new_triangle_geometry(accel, mesh_index, accel.scene->meshes[mesh_index].positions);
   rtcAttachGeometryByID(scene, geometry, 0);
   rtcReleaseGeometry(geometry);
   rtcCommitScene(scene);
@@ -132,6 +155,14 @@ RTCScene build_mesh_scene(SceneAccel& accel, int mesh_index) {
 
 void attach_instances(SceneAccel& accel) {
   const SceneDesc& scene = *accel.scene;
+  // A mesh placed once joins the top level in world space when its transform moves every vertex
+  // to an exact float (identity, translations and scalings that fit): rounding the vertices
+  // instead would move the surface (a translation by 1e6 rounds them to 1/16), opening the
+  // cracks and leaks the stability tests catch; an instance keeps the exact object space.
+  std::vector<int> placements(scene.meshes.size(), 0);
+  for (const InstanceDesc& instance : scene.instances) ++placements[instance.mesh];
+  accel.mesh_scenes.assign(scene.meshes.size(), nullptr);
+  std::vector<vec3> world_positions;
   accel.instance_inverse.resize(scene.instances.size());
   accel.instance_orientation.resize(scene.instances.size());
   for (size_t i = 0; i < scene.instances.size(); ++i) {
@@ -139,13 +170,19 @@ void attach_instances(SceneAccel& accel) {
     if (!inverse_affine(instance.transform, accel.instance_inverse[i]))
       throw std::runtime_error("instances[" + std::to_string(i) + "]: singular transform");
     accel.instance_orientation[i] = determinant3(instance.transform) < 0 ? -1.0f : 1.0f;
-    RTCGeometry geometry = rtcNewGeometry(accel.device, RTC_GEOMETRY_TYPE_INSTANCE);
-    rtcSetGeometryInstancedScene(geometry, accel.mesh_scenes[instance.mesh]);
-    float rows[12];
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 4; ++c) rows[r * 4 + c] = instance.transform.m[r][c];
-    rtcSetGeometryTransform(geometry, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, rows);
-    rtcCommitGeometry(geometry);
+    RTCGeometry geometry;
+    if (placements[instance.mesh] == 1 && place_exactly(scene.meshes[instance.mesh], instance.transform, world_positions)) {
+      geometry = new_triangle_geometry(accel, instance.mesh, world_positions);
+    } else {
+      if (!accel.mesh_scenes[instance.mesh]) accel.mesh_scenes[instance.mesh] = build_mesh_scene(accel, instance.mesh);
+      geometry = rtcNewGeometry(accel.device, RTC_GEOMETRY_TYPE_INSTANCE);
+      rtcSetGeometryInstancedScene(geometry, accel.mesh_scenes[instance.mesh]);
+      float rows[12];
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 4; ++c) rows[r * 4 + c] = instance.transform.m[r][c];
+      rtcSetGeometryTransform(geometry, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, rows);
+      rtcCommitGeometry(geometry);
+    }
     rtcAttachGeometryByID(accel.top, geometry, unsigned(i));
     rtcReleaseGeometry(geometry);
   }
@@ -168,7 +205,8 @@ void attach_shapes(SceneAccel& accel) {
 }  // namespace
 
 SceneAccel::~SceneAccel() {
-  for (RTCScene s : mesh_scenes) rtcReleaseScene(s);
+  for (RTCScene s : mesh_scenes)
+    if (s) rtcReleaseScene(s);
   if (top) rtcReleaseScene(top);
   if (device) rtcReleaseDevice(device);
 }
@@ -181,7 +219,6 @@ std::unique_ptr<SceneAccel> build_scene_accel(const SceneDesc& scene) {
   rtcSetDeviceErrorFunction(accel->device, record_device_error, &device_error());
   accel->alpha_masks.resize(scene.meshes.size());
   for (size_t m = 0; m < scene.meshes.size(); ++m) accel->alpha_masks[m] = {&scene, int(m)};
-  for (size_t m = 0; m < scene.meshes.size(); ++m) accel->mesh_scenes.push_back(build_mesh_scene(*accel, int(m)));
   accel->top = rtcNewScene(accel->device);
   rtcSetSceneFlags(accel->top, RTC_SCENE_FLAG_ROBUST);
   attach_instances(*accel);
@@ -204,7 +241,8 @@ HitId intersect_nearest(const SceneAccel& accel, const Ray& ray) {
   HitId id;
   if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return id;
   if (rayhit.hit.instID[0] != RTC_INVALID_GEOMETRY_ID) id.instance = int(rayhit.hit.instID[0]);
-  else id.shape = int(rayhit.hit.primID);
+  else if (rayhit.hit.geomID == accel.shape_geometry) id.shape = int(rayhit.hit.primID);
+  else id.instance = int(rayhit.hit.geomID);  // a mesh placed in world space on the top level
   id.primitive = rayhit.hit.primID;
   id.t = rayhit.ray.tfar;
   id.barycentric = {rayhit.hit.u, rayhit.hit.v};

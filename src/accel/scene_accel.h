@@ -1,5 +1,6 @@
-// The Embree acceleration structure of a SceneDesc: one RTCScene per mesh, instances on top,
-// and the analytic shapes as one user geometry beside them.
+// The Embree acceleration structure of a SceneDesc: a mesh placed once, whose world-space
+// vertices are exact floats, sits on the top level (a flat BVH, Embree's fastest); any other
+// mesh is one RTCScene shared by its instances; the analytic shapes are one user geometry.
 #pragma once
 
 #include <embree3/rtcore.h>
@@ -28,7 +29,7 @@ struct SceneAccel {
   const SceneDesc* scene = nullptr;
   RTCDevice device = nullptr;
   RTCScene top = nullptr;
-  std::vector<RTCScene> mesh_scenes;
+  std::vector<RTCScene> mesh_scenes;  // per mesh; null for meshes on the top level
   std::vector<mat4> instance_inverse;  // world to object, per instance
   std::vector<float> instance_orientation;  // sign of the transform's determinant
   unsigned shape_geometry = RTC_INVALID_GEOMETRY_ID;

@@ -36,8 +36,14 @@ void fill_triangle_hit(const SceneAccel& accel, const HitId& id, SurfaceHit& hit
   vec3 p0 = mesh.positions[tri[0]], p1 = mesh.positions[tri[1]], p2 = mesh.positions[tri[2]];
 
   // Barycentric interpolation is far more accurate than origin + t * direction (pbrt 6.8.4).
-  vec3 object_point = b0 * p0 + b1 * p1 + b2 * p2;
-  vec3 object_error = rounding_gamma(7) * (abs(b0 * p0) + abs(b1 * p1) + abs(b2 * p2));
+  // Written from a vertex along the edges, its rounding scales with the triangle's size, not
+  // with its distance from the origin: only the final addition to p0 rounds at p0's magnitude
+  // (edges of nearby vertices subtract exactly; their bound is kept anyway). A barycentric
+  // error moves the point within the plane, which no offset needs to cover.
+  vec3 e1 = p1 - p0, e2 = p2 - p0;
+  vec3 along_edges = b1 * e1 + b2 * e2;
+  vec3 object_point = p0 + along_edges;
+  vec3 object_error = rounding_gamma(5) * (abs(b1 * e1) + abs(b2 * e2)) + rounding_gamma(2) * abs(object_point);
   hit.position = transform_point(to_world, object_point);
   vec3 translation = {to_world.m[0][3], to_world.m[1][3], to_world.m[2][3]};
   vec3 error = (1 + rounding_gamma(3)) * abs_transform_vector(to_world, object_error) +
