@@ -7,6 +7,7 @@
 #include "integrators/hit_shading.h"
 #include "integrators/shadow.h"
 #include "lights/area_light.h"
+#include "materials/bsdf.h"
 #include "lights/delta_light.h"
 #include "lights/environment_light.h"
 #include "sampling/warp.h"
@@ -54,8 +55,8 @@ int hit_light_index(const LightTable& lights, const HitId& id) {
 
 // One light sample with MIS against BSDF sampling (next-event estimation).
 template <uint32_t E>
-color3 sample_one_light(const RenderContext& ctx, const SurfaceHit& hit, const SurfaceMaterial& m,
-                        const HitShading& f, const SampleContext& sample, int depth, RayCounts& counts) {
+color3 sample_one_light(const RenderContext& ctx, const SurfaceHit& hit, const Bsdf& bsdf, const HitShading& f,
+                        const SampleContext& sample, int depth, RayCounts& counts) {
   const LightTable& lights = *ctx.lights;
   if (lights.selection.empty()) return {};
   float u_choice = sample_1d(sample, dimension(depth, light_choice));
@@ -67,7 +68,7 @@ color3 sample_one_light(const RenderContext& ctx, const SurfaceHit& hit, const S
     if (!enabled<E>(ctx.effects, effect_direct_delta)) return {};
     DeltaLightSample light;
     if (!sample_delta_light(ctx.scene->lights[lights.delta_lights[index]], hit.position, light)) return {};
-    color3 f_cos = eval_bsdf(m, bsdf_normal(m, f), f.wo, light.direction);
+    color3 f_cos = bsdf.eval(light.direction);
     if (is_black(f_cos)) return {};
     color3 t = shadow_transmittance<E>(ctx, hit, light.direction, light.distance, false, counts);
     return f_cos * light.irradiance * t / select_pdf;
@@ -95,12 +96,12 @@ color3 sample_one_light(const RenderContext& ctx, const SurfaceHit& hit, const S
     emitted = eval_environment(lights, wi);
   }
   if (is_black(emitted)) return {};
-  color3 f_cos = eval_bsdf(m, bsdf_normal(m, f), f.wo, wi);
+  color3 f_cos = bsdf.eval(wi);
   if (is_black(f_cos)) return {};
   color3 t = shadow_transmittance<E>(ctx, hit, wi, distance, false, counts);
   if (is_black(t)) return {};
   float pdf = select_pdf * light_pdf;
-  float weight = power_heuristic(pdf, sample_bsdf_pdf(m, bsdf_normal(m, f), f.wo, wi));
+  float weight = power_heuristic(pdf, bsdf.pdf(wi));
   return f_cos * emitted * t * (weight / pdf);
 }
 
@@ -167,16 +168,17 @@ struct PathVariant {
       // Vertex `depth` gathers light only below max_depth; the emission above completed the
       // direct light of the previous vertex.
       if (depth >= max_depth) break;
+      Bsdf bsdf(m, bsdf_normal(m, f), f.wo);
       if (LightSampling && !is_pure_delta(m))
-        radiance += throughput * sample_one_light<E>(ctx, hit, m, f, sample, depth, counts);
+        radiance += throughput * sample_one_light<E>(ctx, hit, bsdf, f, sample, depth, counts);
 
-      auto bsdf = sample_bsdf(m, bsdf_normal(m, f), f.wo, sample_1d(sample, dimension(depth, lobe_choice)),
-                              sample_2d(sample, dimension(depth, bsdf_direction)));
-      if (!bsdf || is_black(bsdf->weight)) break;
+      auto scattered = bsdf.sample(sample_1d(sample, dimension(depth, lobe_choice)),
+                                   sample_2d(sample, dimension(depth, bsdf_direction)));
+      if (!scattered || is_black(scattered->weight)) break;
       // Without indirect light a diffuse or glossy bounce only completes this vertex's direct light.
-      if (!bsdf->delta && !enabled<E>(ctx.effects, effect_indirect)) max_depth = std::min(max_depth, depth + 1);
-      if (bsdf->delta) {
-        bool refracted = bsdf->transmitted;
+      if (!scattered->delta && !enabled<E>(ctx.effects, effect_indirect)) max_depth = std::min(max_depth, depth + 1);
+      if (scattered->delta) {
+        bool refracted = scattered->transmitted;
         if (refracted && !enabled<E>(ctx.effects, effect_refraction)) break;
         // A transmissive surface's mirror share (Fresnel, total internal reflection) belongs to
         // refraction: switching reflection off must not make glass lose it.
@@ -186,12 +188,12 @@ struct PathVariant {
       } else {
         ray_counter = &counts.indirect;
       }
-      throughput *= bsdf->weight;
-      specular_bounce = bsdf->delta;
-      previous_pdf = bsdf->pdf;
+      throughput *= scattered->weight;
+      specular_bounce = scattered->delta;
+      previous_pdf = scattered->pdf;
       previous_position = hit.position;
       previous_normal = f.normal;
-      ray = spawn_ray(hit, bsdf->wi);
+      ray = spawn_ray(hit, scattered->wi);
       ++depth;
       if (depth >= roulette_start_depth) {
         float survive = std::min(1.0f, max_component(throughput));

@@ -4,6 +4,7 @@
 
 #include "integrators/background.h"
 #include "integrators/hit_shading.h"
+#include "materials/bsdf.h"
 #include "integrators/shadow.h"
 #include "lights/delta_light.h"
 

@@ -1,5 +1,5 @@
-// The path tracer's BSDF: dispatch on the material model.
-#include "materials/bsdf_models.h"
+// The path tracer's BSDF: dispatch on the material model, once per path vertex.
+#include "materials/bsdf.h"
 
 namespace radiant {
 
@@ -7,24 +7,33 @@ namespace {
 
 color3 clamp01(color3 c) { return min(max(c, {0, 0, 0}), {1, 1, 1}); }
 
+std::variant<std::monostate, PhongLobes, MetallicRoughnessLobes> make_lobes(const SurfaceMaterial& m, vec3 n,
+                                                                            vec3 wo) {
+  if (m.unlit) return std::monostate{};
+  if (m.model == MaterialModel::metallic_roughness) return make_metallic_roughness_lobes(m, n, wo);
+  return make_phong_lobes(m, n, wo);
+}
+
 }  // namespace
 
-color3 eval_bsdf(const SurfaceMaterial& m, vec3 n, vec3 wo, vec3 wi) {
-  if (m.unlit) return {0, 0, 0};
-  return m.model == MaterialModel::metallic_roughness ? eval_metallic_roughness(m, n, wo, wi)
-                                                      : eval_phong(m, n, wo, wi);
+Bsdf::Bsdf(const SurfaceMaterial& m, vec3 n, vec3 wo) : lobes_(make_lobes(m, n, wo)) {}
+
+color3 Bsdf::eval(vec3 wi) const {
+  if (auto* l = std::get_if<PhongLobes>(&lobes_)) return eval_local(*l, to_local(l->frame, wi));
+  if (auto* l = std::get_if<MetallicRoughnessLobes>(&lobes_)) return eval_local(*l, to_local(l->frame, wi));
+  return {0, 0, 0};
 }
 
-float sample_bsdf_pdf(const SurfaceMaterial& m, vec3 n, vec3 wo, vec3 wi) {
-  if (m.unlit) return 0;
-  return m.model == MaterialModel::metallic_roughness ? sample_metallic_roughness_pdf(m, n, wo, wi)
-                                                      : sample_phong_pdf(m, n, wo, wi);
+float Bsdf::pdf(vec3 wi) const {
+  if (auto* l = std::get_if<PhongLobes>(&lobes_)) return pdf_local(*l, to_local(l->frame, wi));
+  if (auto* l = std::get_if<MetallicRoughnessLobes>(&lobes_)) return pdf_local(*l, to_local(l->frame, wi));
+  return 0;
 }
 
-std::optional<BsdfSample> sample_bsdf(const SurfaceMaterial& m, vec3 n, vec3 wo, float u_lobe, vec2 u) {
-  if (m.unlit) return std::nullopt;  // unlit surfaces show their color and scatter nothing
-  return m.model == MaterialModel::metallic_roughness ? sample_metallic_roughness(m, n, wo, u_lobe, u)
-                                                      : sample_phong(m, n, wo, u_lobe, u);
+std::optional<BsdfSample> Bsdf::sample(float u_lobe, vec2 u) const {
+  if (auto* l = std::get_if<PhongLobes>(&lobes_)) return sample_local(*l, u_lobe, u);
+  if (auto* l = std::get_if<MetallicRoughnessLobes>(&lobes_)) return sample_local(*l, u_lobe, u);
+  return std::nullopt;
 }
 
 bool is_pure_delta(const SurfaceMaterial& m) {

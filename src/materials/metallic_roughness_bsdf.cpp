@@ -15,30 +15,15 @@ namespace {
 // Smallest selection weight of a present non-delta lobe: its pdf must never be 0 where it scatters.
 constexpr float min_lobe_weight = 0.05f;
 
-// The material's lobes seen from one outgoing direction.
-struct Lobes {
-  bool valid = false;
-  ShadingFrame frame;  // z = the normal on wo's side
-  vec3 wo;             // local, wo.z > 0
-  float alpha = 1;
-  bool smooth = false;  // specular lobes are delta
-  float ior = 1.5f;     // of the coating, always entered from outside
-  float eta = 1.5f;     // of the glass: n_transmitted / n_incident seen from wo
-  color3 base;
-  float metal = 0, plastic = 0, glass = 0;  // mix weights, summing to 1
-  float fade = 1;                            // strength of the plastic's specular coating
-  float p_specular = 0, p_diffuse = 0, p_transmission = 0;
-};
-
 // Fresnel reflectance of the mixed specular lobe at microfacet cosine `cos_h`.
-color3 specular_fresnel(const Lobes& l, float cos_h) {
+color3 specular_fresnel(const MetallicRoughnessLobes& l, float cos_h) {
   float dielectric = l.plastic * l.fade * fresnel_dielectric(cos_h, l.ior) +
                      l.glass * fresnel_dielectric(cos_h, l.eta);
   return l.metal * fresnel_schlick(l.base, cos_h) + color3{dielectric, dielectric, dielectric};
 }
 
 // Light crossing the plastic's coating at cosine `cos` (symmetric in wo and wi: reciprocity).
-float coating_transmittance(const Lobes& l, float cos) { return 1 - l.fade * fresnel_dielectric(cos, l.ior); }
+float coating_transmittance(const MetallicRoughnessLobes& l, float cos) { return 1 - l.fade * fresnel_dielectric(cos, l.ior); }
 
 // Delta lobes need no floor: a delta lobe with no reflectance is simply never chosen.
 float selection_weight(bool present, float estimate, bool delta) {
@@ -46,8 +31,89 @@ float selection_weight(bool present, float estimate, bool delta) {
   return delta ? estimate : std::max(estimate, min_lobe_weight);
 }
 
-Lobes make_lobes(const SurfaceMaterial& m, vec3 n, vec3 wo) {
-  Lobes l;
+
+// Generalized half vector of a refraction (Walter et al. 2007), facing the wo side; false when
+// wo and wi cannot be joined by a refracting microfacet.
+bool refraction_half_vector(const MetallicRoughnessLobes& l, vec3 wi, vec3& h) {
+  h = l.wo + wi * l.eta;
+  if (length_squared(h) < 1e-12f) return false;
+  h = normalize(h);
+  if (h.z < 0) h = -h;
+  return dot(l.wo, h) > 0 && dot(wi, h) < 0;
+}
+
+color3 eval_diffuse(const MetallicRoughnessLobes& l, vec3 wi) {
+  float coating = coating_transmittance(l, l.wo.z) * coating_transmittance(l, wi.z);
+  return l.base * (l.plastic * coating * inv_pi * wi.z);
+}
+
+color3 eval_rough_reflection(const MetallicRoughnessLobes& l, vec3 wi) {
+  vec3 h = normalize(l.wo + wi);
+  float cos_h = dot(l.wo, h);
+  if (cos_h <= 0) return {0, 0, 0};
+  float d = ggx_distribution(h, l.alpha) * ggx_masking_shadowing(l.wo, wi, l.alpha);
+  return specular_fresnel(l, cos_h) * (d / (4 * l.wo.z));
+}
+
+float pdf_rough_reflection(const MetallicRoughnessLobes& l, vec3 wi) {
+  vec3 h = normalize(l.wo + wi);
+  float cos_h = dot(l.wo, h);
+  if (cos_h <= 0) return 0;
+  return ggx_visible_normal_pdf(l.wo, h, l.alpha) / (4 * cos_h);
+}
+
+// The squared denominator of the refraction Jacobian, or 0 when degenerate.
+float refraction_denominator(const MetallicRoughnessLobes& l, vec3 wi, vec3 h) {
+  float denominator = dot(wi, h) + dot(l.wo, h) / l.eta;
+  return denominator * denominator;
+}
+
+color3 eval_rough_transmission(const MetallicRoughnessLobes& l, vec3 wi) {
+  vec3 h;
+  if (!refraction_half_vector(l, wi, h)) return {0, 0, 0};
+  float denominator = refraction_denominator(l, wi, h);
+  if (denominator < 1e-12f) return {0, 0, 0};
+  float cos_h = dot(l.wo, h);
+  float transmittance = l.glass * (1 - fresnel_dielectric(cos_h, l.eta));
+  float f = ggx_distribution(h, l.alpha) * ggx_masking_shadowing(l.wo, wi, l.alpha) * std::abs(dot(wi, h)) *
+            cos_h / (l.wo.z * denominator);
+  return l.base * (transmittance * f);
+}
+
+float pdf_rough_transmission(const MetallicRoughnessLobes& l, vec3 wi) {
+  vec3 h;
+  if (!refraction_half_vector(l, wi, h)) return 0;
+  float denominator = refraction_denominator(l, wi, h);
+  if (denominator < 1e-12f) return 0;
+  return ggx_visible_normal_pdf(l.wo, h, l.alpha) * std::abs(dot(wi, h)) / denominator;
+}
+
+
+
+std::optional<BsdfSample> sample_specular(const MetallicRoughnessLobes& l, vec2 u) {
+  if (l.smooth) return delta_sample(l, reflect_local(l.wo), specular_fresnel(l, l.wo.z), l.p_specular);
+  vec3 h = sample_ggx_visible_normal(l.wo, l.alpha, u);
+  vec3 wi = reflect(l.wo, h);
+  if (wi.z <= 0) return std::nullopt;  // the microfacet sends light below the surface: masked
+  return mixture_sample(l, wi);
+}
+
+std::optional<BsdfSample> sample_transmission(const MetallicRoughnessLobes& l, vec2 u) {
+  vec3 wi;
+  if (l.smooth) {
+    if (!refract(l.wo, {0, 0, 1}, l.eta, wi)) return std::nullopt;  // reflection took it all
+    color3 transmittance = l.base * (l.glass * (1 - fresnel_dielectric(l.wo.z, l.eta)));
+    return delta_sample(l, wi, transmittance, l.p_transmission);
+  }
+  vec3 h = sample_ggx_visible_normal(l.wo, l.alpha, u);
+  if (!refract(l.wo, h, l.eta, wi) || wi.z >= 0) return std::nullopt;
+  return mixture_sample(l, normalize(wi));
+}
+
+}  // namespace
+
+MetallicRoughnessLobes make_metallic_roughness_lobes(const SurfaceMaterial& m, vec3 n, vec3 wo) {
+  MetallicRoughnessLobes l;
   bool from_inside = dot(n, wo) < 0;  // only transmissive materials are seen from behind
   l.frame = make_shading_frame(from_inside ? -n : n);
   l.wo = to_local(l.frame, wo);
@@ -80,63 +146,7 @@ Lobes make_lobes(const SurfaceMaterial& m, vec3 n, vec3 wo) {
   return l;
 }
 
-// Generalized half vector of a refraction (Walter et al. 2007), facing the wo side; false when
-// wo and wi cannot be joined by a refracting microfacet.
-bool refraction_half_vector(const Lobes& l, vec3 wi, vec3& h) {
-  h = l.wo + wi * l.eta;
-  if (length_squared(h) < 1e-12f) return false;
-  h = normalize(h);
-  if (h.z < 0) h = -h;
-  return dot(l.wo, h) > 0 && dot(wi, h) < 0;
-}
-
-color3 eval_diffuse(const Lobes& l, vec3 wi) {
-  float coating = coating_transmittance(l, l.wo.z) * coating_transmittance(l, wi.z);
-  return l.base * (l.plastic * coating * inv_pi * wi.z);
-}
-
-color3 eval_rough_reflection(const Lobes& l, vec3 wi) {
-  vec3 h = normalize(l.wo + wi);
-  float cos_h = dot(l.wo, h);
-  if (cos_h <= 0) return {0, 0, 0};
-  float d = ggx_distribution(h, l.alpha) * ggx_masking_shadowing(l.wo, wi, l.alpha);
-  return specular_fresnel(l, cos_h) * (d / (4 * l.wo.z));
-}
-
-float pdf_rough_reflection(const Lobes& l, vec3 wi) {
-  vec3 h = normalize(l.wo + wi);
-  float cos_h = dot(l.wo, h);
-  if (cos_h <= 0) return 0;
-  return ggx_visible_normal_pdf(l.wo, h, l.alpha) / (4 * cos_h);
-}
-
-// The squared denominator of the refraction Jacobian, or 0 when degenerate.
-float refraction_denominator(const Lobes& l, vec3 wi, vec3 h) {
-  float denominator = dot(wi, h) + dot(l.wo, h) / l.eta;
-  return denominator * denominator;
-}
-
-color3 eval_rough_transmission(const Lobes& l, vec3 wi) {
-  vec3 h;
-  if (!refraction_half_vector(l, wi, h)) return {0, 0, 0};
-  float denominator = refraction_denominator(l, wi, h);
-  if (denominator < 1e-12f) return {0, 0, 0};
-  float cos_h = dot(l.wo, h);
-  float transmittance = l.glass * (1 - fresnel_dielectric(cos_h, l.eta));
-  float f = ggx_distribution(h, l.alpha) * ggx_masking_shadowing(l.wo, wi, l.alpha) * std::abs(dot(wi, h)) *
-            cos_h / (l.wo.z * denominator);
-  return l.base * (transmittance * f);
-}
-
-float pdf_rough_transmission(const Lobes& l, vec3 wi) {
-  vec3 h;
-  if (!refraction_half_vector(l, wi, h)) return 0;
-  float denominator = refraction_denominator(l, wi, h);
-  if (denominator < 1e-12f) return 0;
-  return ggx_visible_normal_pdf(l.wo, h, l.alpha) * std::abs(dot(wi, h)) / denominator;
-}
-
-color3 eval_local(const Lobes& l, vec3 wi) {
+color3 eval_local(const MetallicRoughnessLobes& l, vec3 wi) {
   if (!l.valid || std::abs(wi.z) < 1e-7f) return {0, 0, 0};
   color3 f;
   if (wi.z > 0) {
@@ -148,7 +158,7 @@ color3 eval_local(const Lobes& l, vec3 wi) {
   return is_finite(f) ? f : color3{0, 0, 0};
 }
 
-float pdf_local(const Lobes& l, vec3 wi) {
+float pdf_local(const MetallicRoughnessLobes& l, vec3 wi) {
   if (!l.valid || std::abs(wi.z) < 1e-7f) return 0;
   float pdf = 0;
   if (wi.z > 0) {
@@ -160,41 +170,7 @@ float pdf_local(const Lobes& l, vec3 wi) {
   return std::isfinite(pdf) ? pdf : 0;
 }
 
-std::optional<BsdfSample> sample_specular(const Lobes& l, vec2 u) {
-  if (l.smooth) return delta_sample(l, reflect_local(l.wo), specular_fresnel(l, l.wo.z), l.p_specular);
-  vec3 h = sample_ggx_visible_normal(l.wo, l.alpha, u);
-  vec3 wi = reflect(l.wo, h);
-  if (wi.z <= 0) return std::nullopt;  // the microfacet sends light below the surface: masked
-  return mixture_sample(l, wi);
-}
-
-std::optional<BsdfSample> sample_transmission(const Lobes& l, vec2 u) {
-  vec3 wi;
-  if (l.smooth) {
-    if (!refract(l.wo, {0, 0, 1}, l.eta, wi)) return std::nullopt;  // reflection took it all
-    color3 transmittance = l.base * (l.glass * (1 - fresnel_dielectric(l.wo.z, l.eta)));
-    return delta_sample(l, wi, transmittance, l.p_transmission);
-  }
-  vec3 h = sample_ggx_visible_normal(l.wo, l.alpha, u);
-  if (!refract(l.wo, h, l.eta, wi) || wi.z >= 0) return std::nullopt;
-  return mixture_sample(l, normalize(wi));
-}
-
-}  // namespace
-
-color3 eval_metallic_roughness(const SurfaceMaterial& m, vec3 n, vec3 wo, vec3 wi) {
-  Lobes l = make_lobes(m, n, wo);
-  return eval_local(l, to_local(l.frame, wi));
-}
-
-float sample_metallic_roughness_pdf(const SurfaceMaterial& m, vec3 n, vec3 wo, vec3 wi) {
-  Lobes l = make_lobes(m, n, wo);
-  return pdf_local(l, to_local(l.frame, wi));
-}
-
-std::optional<BsdfSample> sample_metallic_roughness(const SurfaceMaterial& m, vec3 n, vec3 wo, float u_lobe,
-                                                    vec2 u) {
-  Lobes l = make_lobes(m, n, wo);
+std::optional<BsdfSample> sample_local(const MetallicRoughnessLobes& l, float u_lobe, vec2 u) {
   if (!l.valid) return std::nullopt;
   if (u_lobe < l.p_specular) return sample_specular(l, u);
   if (u_lobe < l.p_specular + l.p_diffuse) return mixture_sample(l, sample_cosine_hemisphere(u));

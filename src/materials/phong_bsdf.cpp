@@ -9,19 +9,8 @@ namespace radiant {
 
 namespace {
 
-// The material's lobes seen from one outgoing direction.
-struct Lobes {
-  bool valid = false;
-  ShadingFrame frame;  // z = the normal on wo's side
-  vec3 wo;             // local, wo.z > 0
-  float eta = 1.5f;    // n_transmitted / n_incident seen from wo
-  float exponent = 1;
-  color3 kd, ks, kr, kt;  // energy-conserving weights
-  float p_diffuse = 0, p_glossy = 0, p_mirror = 0, p_transmission = 0;
-};
-
 // Per-channel weights scaled so that no channel reflects more than it receives.
-void conserve_energy(const SurfaceMaterial& m, Lobes& l) {
+void conserve_energy(const SurfaceMaterial& m, PhongLobes& l) {
   color3 zero = {0, 0, 0};
   l.kd = max(m.kd, zero), l.ks = max(m.ks, zero), l.kr = max(m.kr, zero), l.kt = max(m.kt, zero);
   color3 total = l.kd + l.ks + l.kr + l.kt;
@@ -29,8 +18,37 @@ void conserve_energy(const SurfaceMaterial& m, Lobes& l) {
   l.kd *= scale, l.ks *= scale, l.kr *= scale, l.kt *= scale;
 }
 
-Lobes make_lobes(const SurfaceMaterial& m, vec3 n, vec3 wo) {
-  Lobes l;
+
+// cos^n of the angle between wi and the mirror direction of wo (0 beyond 90 degrees).
+float phong_lobe(const PhongLobes& l, vec3 wi) {
+  float cos_alpha = dot(wi, reflect_local(l.wo));
+  return cos_alpha > 0 ? std::pow(std::min(cos_alpha, 1.0f), l.exponent) : 0;
+}
+
+
+
+// A direction with density (n+1)/(2 pi) cos^n around the mirror direction.
+vec3 sample_phong_lobe(const PhongLobes& l, vec2 u) {
+  float cos_alpha = std::pow(u.x, 1 / (l.exponent + 1));
+  float sin_alpha = std::sqrt(std::max(0.0f, 1 - cos_alpha * cos_alpha));
+  float phi = 2 * pi * u.y;
+  vec3 axis = reflect_local(l.wo), t, b;
+  orthonormal_basis(axis, t, b);
+  return normalize(t * (sin_alpha * std::cos(phi)) + b * (sin_alpha * std::sin(phi)) + axis * cos_alpha);
+}
+
+// Refraction through the smooth interface; total internal reflection turns it into a mirror.
+BsdfSample sample_delta_transmission(const PhongLobes& l) {
+  vec3 wi;
+  if (l.eta == 1) wi = -l.wo;  // index-matched: straight through, no bending
+  else if (!refract(l.wo, {0, 0, 1}, l.eta, wi)) wi = reflect_local(l.wo);
+  return delta_sample(l, wi, l.kt, l.p_transmission);
+}
+
+}  // namespace
+
+PhongLobes make_phong_lobes(const SurfaceMaterial& m, vec3 n, vec3 wo) {
+  PhongLobes l;
   bool from_inside = dot(n, wo) < 0;  // only transmissive materials are seen from behind
   l.frame = make_shading_frame(from_inside ? -n : n);
   l.wo = to_local(l.frame, wo);
@@ -49,58 +67,21 @@ Lobes make_lobes(const SurfaceMaterial& m, vec3 n, vec3 wo) {
   return l;
 }
 
-// cos^n of the angle between wi and the mirror direction of wo (0 beyond 90 degrees).
-float phong_lobe(const Lobes& l, vec3 wi) {
-  float cos_alpha = dot(wi, reflect_local(l.wo));
-  return cos_alpha > 0 ? std::pow(std::min(cos_alpha, 1.0f), l.exponent) : 0;
-}
-
-color3 eval_local(const Lobes& l, vec3 wi) {
+color3 eval_local(const PhongLobes& l, vec3 wi) {
   if (!l.valid || wi.z < 1e-7f) return {0, 0, 0};
   color3 f = l.kd * inv_pi;
   if (l.p_glossy > 0) f += l.ks * ((l.exponent + 2) / (2 * pi) * phong_lobe(l, wi));  // skip pow for matte
   return f * wi.z;
 }
 
-float pdf_local(const Lobes& l, vec3 wi) {
+float pdf_local(const PhongLobes& l, vec3 wi) {
   if (!l.valid || wi.z < 1e-7f) return 0;
   float pdf = l.p_diffuse * wi.z * inv_pi;
   if (l.p_glossy > 0) pdf += l.p_glossy * (l.exponent + 1) / (2 * pi) * phong_lobe(l, wi);
   return pdf;
 }
 
-// A direction with density (n+1)/(2 pi) cos^n around the mirror direction.
-vec3 sample_phong_lobe(const Lobes& l, vec2 u) {
-  float cos_alpha = std::pow(u.x, 1 / (l.exponent + 1));
-  float sin_alpha = std::sqrt(std::max(0.0f, 1 - cos_alpha * cos_alpha));
-  float phi = 2 * pi * u.y;
-  vec3 axis = reflect_local(l.wo), t, b;
-  orthonormal_basis(axis, t, b);
-  return normalize(t * (sin_alpha * std::cos(phi)) + b * (sin_alpha * std::sin(phi)) + axis * cos_alpha);
-}
-
-// Refraction through the smooth interface; total internal reflection turns it into a mirror.
-BsdfSample sample_delta_transmission(const Lobes& l) {
-  vec3 wi;
-  if (l.eta == 1) wi = -l.wo;  // index-matched: straight through, no bending
-  else if (!refract(l.wo, {0, 0, 1}, l.eta, wi)) wi = reflect_local(l.wo);
-  return delta_sample(l, wi, l.kt, l.p_transmission);
-}
-
-}  // namespace
-
-color3 eval_phong(const SurfaceMaterial& m, vec3 n, vec3 wo, vec3 wi) {
-  Lobes l = make_lobes(m, n, wo);
-  return eval_local(l, to_local(l.frame, wi));
-}
-
-float sample_phong_pdf(const SurfaceMaterial& m, vec3 n, vec3 wo, vec3 wi) {
-  Lobes l = make_lobes(m, n, wo);
-  return pdf_local(l, to_local(l.frame, wi));
-}
-
-std::optional<BsdfSample> sample_phong(const SurfaceMaterial& m, vec3 n, vec3 wo, float u_lobe, vec2 u) {
-  Lobes l = make_lobes(m, n, wo);
+std::optional<BsdfSample> sample_local(const PhongLobes& l, float u_lobe, vec2 u) {
   if (!l.valid) return std::nullopt;
   float threshold = l.p_diffuse;
   if (u_lobe < threshold) return mixture_sample(l, sample_cosine_hemisphere(u));

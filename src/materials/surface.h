@@ -1,8 +1,6 @@
-// A material resolved at one surface point (textures applied), and the two ways radiant shades it:
+// A material resolved at one surface point (textures applied), as both integrators read it:
 // the Phong/Whitted model and the physically based BSDF of the path tracer (docs/materials.md).
 #pragma once
-
-#include <optional>
 
 #include "math/vec.h"
 #include "scene/scene_desc.h"
@@ -50,10 +48,7 @@ void phong_from_metallic_roughness(SurfaceMaterial& m);
 // Perturbs shading normal `n` by a tangent-space normal-map sample, given the tangent (xyz, w sign).
 vec3 apply_normal_map(vec3 n, vec4 tangent, vec3 tangent_space_normal);
 
-// ---------------------------------------------------------------- path tracer BSDF
-// Directions are world-space unit vectors pointing away from the surface; `n` is the shading
-// normal on the side the material was authored (the integrator flips it for double-sided hits).
-
+// A direction chosen by the path tracer's BSDF (materials/bsdf.h).
 struct BsdfSample {
   vec3 wi;
   color3 weight;    // f * |cos(wi)| / pdf (for delta lobes: the lobe's reflectance / selection prob)
@@ -61,16 +56,5 @@ struct BsdfSample {
   bool delta = false;
   bool transmitted = false;
 };
-
-// f(wo, wi) * |dot(n, wi)| for the non-delta lobes.
-color3 eval_bsdf(const SurfaceMaterial& m, vec3 n, vec3 wo, vec3 wi);
-// Solid-angle pdf that sample_bsdf picks wi through a non-delta lobe.
-float sample_bsdf_pdf(const SurfaceMaterial& m, vec3 n, vec3 wo, vec3 wi);
-// Samples a direction; u_lobe picks a lobe, u the direction within it. nullopt when absorbed.
-std::optional<BsdfSample> sample_bsdf(const SurfaceMaterial& m, vec3 n, vec3 wo, float u_lobe, vec2 u);
-// True when the material has only delta lobes (mirror, smooth glass): light sampling is useless.
-bool is_pure_delta(const SurfaceMaterial& m);
-// Hemispherical albedo estimate used for the albedo AOV (base color or kd, clamped to [0,1]).
-color3 bsdf_albedo(const SurfaceMaterial& m);
 
 }  // namespace radiant

@@ -19,17 +19,14 @@ struct SampleContext {
 };
 
 // Position inside the pixel, in [0,1)^2. grid: cell centres; jittered: one random point per
-// cell; random: independent; sobol: Owen-scrambled Sobol. One sample shoots through the centre
+// cell; random: independent; sobol: shuffled Owen-scrambled Sobol. One sample shoots through the centre
 // for grid and jittered.
 vec2 sample_pixel(const SampleContext& context);
 
 // A 1D / 2D value for `dimension` (>= 2; dimensions 0 and 1 are the pixel position). Sobol
-// pads pairs of dimensions with independently scrambled (0, 1) Sobol dimensions; the other
-// samplers use independent random values.
+// pads pairs of dimensions with independently shuffled and scrambled (0, 1) Sobol dimensions;
+// the other samplers use independent random values.
 float sample_1d(const SampleContext& context, uint32_t dimension);
 vec2 sample_2d(const SampleContext& context, uint32_t dimension);
-
-// Owen-scrambled Sobol point `index` in dimension 0 or 1 with scramble `seed` (exposed for tests).
-float sobol_scrambled(uint32_t index, int sobol_dimension, uint32_t seed);
 
 }  // namespace radiant

@@ -1,4 +1,4 @@
-// Chi-square goodness-of-fit tests: the directions sample_bsdf draws follow sample_bsdf_pdf
+// Chi-square goodness-of-fit tests: the directions Bsdf::sample draws follow Bsdf::pdf
 // (the method of pbrt-v4's bsdfs_test.cpp and Mitsuba 3's chi2 tests).
 #include <doctest/doctest.h>
 
@@ -33,7 +33,7 @@ std::vector<double> observed_counts(const SurfaceMaterial& m, vec3 wo, unsigned 
   for (int k = 0; k < sample_count; ++k) {
     float u_lobe = random.next();
     vec2 u = random.next2();
-    auto s = sample_bsdf(m, n, wo, u_lobe, u);
+    auto s = Bsdf(m, n, wo).sample(u_lobe, u);
     if (s && !s->delta) counts[cell_of(s->wi)] += 1;
   }
   return counts;
@@ -69,7 +69,7 @@ std::vector<double> expected_counts(const SurfaceMaterial& m, vec3 wo) {
       double p0 = 2 * pi * j / phi_bins, p1 = 2 * pi * (j + 1) / phi_bins;
       auto over_phi = [&](double c) {
         auto pdf = [&](double phi) {
-          return double(sample_bsdf_pdf(m, n, wo, spherical_direction(float(c), float(phi))));
+          return double(Bsdf(m, n, wo).pdf(spherical_direction(float(c), float(phi))));
         };
         return integrate(pdf, p0, p1, 1e-8);
       };

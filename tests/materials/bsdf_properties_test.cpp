@@ -21,7 +21,7 @@ color3 directional_albedo(const SurfaceMaterial& m, vec3 n, vec3 wo, int samples
   color3 sum;
   for (int k = 0; k < samples; ++k) {
     float u_lobe = random.next();
-    if (auto s = sample_bsdf(m, n, wo, u_lobe, random.next2())) sum += s->weight;
+    if (auto s = Bsdf(m, n, wo).sample(u_lobe, random.next2())) sum += s->weight;
   }
   return sum / float(samples);
 }
@@ -76,8 +76,8 @@ TEST_CASE("bsdf reciprocity: f(wo, wi) == f(wi, wo) for reflection") {
     for (int k = 0; k < 200; ++k) {
       vec3 wo = world(spherical_direction(0.05f + 0.95f * random.next(), 2 * pi * random.next()));
       vec3 wi = world(spherical_direction(0.05f + 0.95f * random.next(), 2 * pi * random.next()));
-      color3 forward = eval_bsdf(config.material, n, wo, wi) / dot(n, wi);
-      color3 backward = eval_bsdf(config.material, n, wi, wo) / dot(n, wo);
+      color3 forward = Bsdf(config.material, n, wo).eval(wi) / dot(n, wi);
+      color3 backward = Bsdf(config.material, n, wi).eval(wo) / dot(n, wo);
       INFO(config.name);
       CHECK(forward.x == doctest::Approx(backward.x).epsilon(1e-3));
       CHECK(forward.z == doctest::Approx(backward.z).epsilon(1e-3));
@@ -96,18 +96,18 @@ TEST_CASE("bsdf consistency: weight is eval over pdf, and eval and pdf vanish to
       vec3 wo = world(config_wo(config, cos_wo));
       for (int k = 0; k < 300; ++k) {
         float u_lobe = random.next();
-        auto s = sample_bsdf(config.material, n, wo, u_lobe, random.next2());
+        auto s = Bsdf(config.material, n, wo).sample(u_lobe, random.next2());
         INFO(config.name, ", cos(wo) = ", cos_wo);
         if (s && !s->delta) {
-          color3 f = eval_bsdf(config.material, n, wo, s->wi);
-          float pdf = sample_bsdf_pdf(config.material, n, wo, s->wi);
+          color3 f = Bsdf(config.material, n, wo).eval(s->wi);
+          float pdf = Bsdf(config.material, n, wo).pdf(s->wi);
           CHECK(pdf == doctest::Approx(s->pdf).epsilon(2e-3));
           CHECK(s->weight.x == doctest::Approx(f.x / pdf).epsilon(2e-3));
           CHECK(s->weight.y == doctest::Approx(f.y / pdf).epsilon(2e-3));
         }
         vec3 wi = world(spherical_direction(2 * random.next() - 1, 2 * pi * random.next()));
-        bool scatters = !is_black(eval_bsdf(config.material, n, wo, wi));
-        bool sampled = sample_bsdf_pdf(config.material, n, wo, wi) > 0;
+        bool scatters = !is_black(Bsdf(config.material, n, wo).eval(wi));
+        bool sampled = Bsdf(config.material, n, wo).pdf(wi) > 0;
         CHECK(scatters == sampled);
       }
     }
@@ -128,12 +128,12 @@ TEST_CASE("bsdf robustness: degenerate directions and parameters give finite val
   for (const SurfaceMaterial& m : materials) {
     for (vec3 wo : directions) {
       for (vec3 wi : directions) {
-        CHECK(is_finite(eval_bsdf(m, n, wo, wi)));
-        CHECK(std::isfinite(sample_bsdf_pdf(m, n, wo, wi)));
+        CHECK(is_finite(Bsdf(m, n, wo).eval(wi)));
+        CHECK(std::isfinite(Bsdf(m, n, wo).pdf(wi)));
       }
       for (int k = 0; k < 50; ++k) {
         float u_lobe = random.next();
-        auto s = sample_bsdf(m, n, wo, u_lobe, random.next2());
+        auto s = Bsdf(m, n, wo).sample(u_lobe, random.next2());
         if (!s) continue;
         CHECK(is_finite(s->weight));
         CHECK(is_finite(s->wi));

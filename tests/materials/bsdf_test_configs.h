@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "materials/surface.h"
+#include "materials/bsdf.h"
 
 namespace radiant::test {
 

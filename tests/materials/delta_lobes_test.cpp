@@ -10,7 +10,7 @@ constexpr vec3 up = {0, 0, 1};
 
 // The only sample of a material whose lobes are all delta (u_lobe picks the first lobe).
 BsdfSample only_sample(const SurfaceMaterial& m, vec3 n, vec3 wo, float u_lobe = 0.5f) {
-  auto s = sample_bsdf(m, n, wo, u_lobe, {0.3f, 0.6f});
+  auto s = Bsdf(m, n, wo).sample(u_lobe, {0.3f, 0.6f});
   REQUIRE(s.has_value());
   CHECK(s->delta);
   return *s;
@@ -64,14 +64,14 @@ TEST_CASE("phong mirror: kr reflects about the normal, weighted by kr over its s
   CHECK(s.wi.z == doctest::Approx(wo.z));
   CHECK(s.weight.x == doctest::Approx(0.9f));
   CHECK(s.weight.z == doctest::Approx(0.1f));
-  CHECK(is_black(eval_bsdf(mirror, up, wo, s.wi)));  // delta lobes are not evaluated
-  CHECK(sample_bsdf_pdf(mirror, up, wo, s.wi) == 0);
+  CHECK(is_black(Bsdf(mirror, up, wo).eval(s.wi)));  // delta lobes are not evaluated
+  CHECK(Bsdf(mirror, up, wo).pdf(s.wi) == 0);
 }
 
 TEST_CASE("phong energy: kd + ks + kr + kt above 1 is scaled down per channel") {
   SurfaceMaterial bright = phong({0.8f, 0.4f, 0}, {}, 1, {0.8f, 0, 0});
   vec3 wo = up;
-  color3 f = eval_bsdf(bright, up, wo, up);
+  color3 f = Bsdf(bright, up, wo).eval(up);
   CHECK(f.x == doctest::Approx(0.5f / pi));  // 0.8 / (0.8 + 0.8)
   CHECK(f.y == doctest::Approx(0.4f / pi));  // untouched: 0.4 <= 1
   CHECK_FALSE(is_pure_delta(bright));
@@ -81,8 +81,8 @@ TEST_CASE("metallic-roughness smooth glass: Fresnel splits reflection and refrac
   SurfaceMaterial glass = metallic_roughness({1, 1, 1}, 0, 0, 1, 1.5f);
   CHECK(is_pure_delta(glass));
   vec3 wo = up;
-  auto reflected = sample_bsdf(glass, up, wo, 0.0f, {0.5f, 0.5f});
-  auto refracted = sample_bsdf(glass, up, wo, 0.999f, {0.5f, 0.5f});
+  auto reflected = Bsdf(glass, up, wo).sample(0.0f, {0.5f, 0.5f});
+  auto refracted = Bsdf(glass, up, wo).sample(0.999f, {0.5f, 0.5f});
   REQUIRE(reflected.has_value());
   REQUIRE(refracted.has_value());
   CHECK(reflected->weight.x * reflected->pdf == doctest::Approx(0.04f));  // F at normal incidence
@@ -92,7 +92,7 @@ TEST_CASE("metallic-roughness smooth glass: Fresnel splits reflection and refrac
   CHECK(reflected->pdf + refracted->pdf == doctest::Approx(1));
   // From inside beyond the critical angle every sample is a total reflection.
   for (float u_lobe : {0.0f, 0.5f, 0.999f}) {
-    auto inside = sample_bsdf(glass, up, normalize(vec3{1, 0, -1}), u_lobe, {0.5f, 0.5f});
+    auto inside = Bsdf(glass, up, normalize(vec3{1, 0, -1})).sample(u_lobe, {0.5f, 0.5f});
     REQUIRE(inside.has_value());
     CHECK_FALSE(inside->transmitted);
     CHECK(inside->wi.z == doctest::Approx(-std::sqrt(0.5f)));
@@ -103,7 +103,7 @@ TEST_CASE("metallic-roughness smooth glass: Fresnel splits reflection and refrac
 TEST_CASE("metallic-roughness: a Lambertian surface is exactly base color over pi") {
   SurfaceMaterial lambert = metallic_roughness({0.8f, 0.5f, 0.2f}, 0, 1);
   vec3 wi = normalize(vec3{0.2f, 0.3f, 0.9f});
-  color3 f = eval_bsdf(lambert, up, normalize(vec3{-0.5f, 0, 0.5f}), wi);
+  color3 f = Bsdf(lambert, up, normalize(vec3{-0.5f, 0, 0.5f})).eval(wi);
   CHECK(f.x == doctest::Approx(0.8f / pi * wi.z));
   CHECK(f.z == doctest::Approx(0.2f / pi * wi.z));
   CHECK(bsdf_albedo(lambert) == color3{0.8f, 0.5f, 0.2f});
@@ -113,8 +113,8 @@ TEST_CASE("metallic-roughness: a Lambertian surface is exactly base color over p
 TEST_CASE("unlit materials scatter nothing") {
   SurfaceMaterial unlit = metallic_roughness({1, 1, 1}, 0, 1);
   unlit.unlit = true;
-  CHECK(is_black(eval_bsdf(unlit, up, up, up)));
-  CHECK_FALSE(sample_bsdf(unlit, up, up, 0.5f, {0.5f, 0.5f}).has_value());
+  CHECK(is_black(Bsdf(unlit, up, up).eval(up)));
+  CHECK_FALSE(Bsdf(unlit, up, up).sample(0.5f, {0.5f, 0.5f}).has_value());
   CHECK(is_pure_delta(unlit));
 }
 

@@ -53,6 +53,37 @@ TEST_CASE("sampler: the first 16 Sobol pixel samples form a (0,4,2)-net: one per
   CHECK(columns.size() == 16);
 }
 
+TEST_CASE("sampler: 64 samples of a padded Sobol pair form a (0,6,2)-net in every pair, for any pixel") {
+  // The index shuffle maps the first 64 indices onto one aligned block of 64 Sobol points.
+  for (uint32_t pixel : {0u, 7u, 123456u})
+    for (uint32_t dimension : {2u, 5u, 33u}) {
+      CAPTURE(pixel);
+      CAPTURE(dimension);
+      std::set<std::pair<int, int>> square, columns, rows;
+      for (uint32_t i = 0; i < 64; ++i) {
+        vec2 p = sample_2d(context(SamplerKind::sobol, i, 64, pixel), dimension);
+        square.insert(cell_of(p, 8));
+        columns.insert({int(p.x * 64), 0});
+        rows.insert({0, int(p.y * 64)});
+      }
+      CHECK(square.size() == 64);
+      CHECK(columns.size() == 64);
+      CHECK(rows.size() == 64);
+    }
+}
+
+TEST_CASE("sampler: different Sobol pairs are not correlated with each other") {
+  // Without a shuffle per pair, two pairs' first coordinates are scramblings of the same radical
+  // inverse: plotted against each other, 256 samples would fill only 16 of the 16x16 cells.
+  // Independent points fill about 162 of them.
+  std::set<std::pair<int, int>> cells;
+  for (uint32_t i = 0; i < 256; ++i) {
+    SampleContext c = context(SamplerKind::sobol, i, 256);
+    cells.insert(cell_of({sample_1d(c, 2), sample_1d(c, 12)}, 16));
+  }
+  CHECK(cells.size() > 130);
+}
+
 TEST_CASE("sampler: every value is a pure function of (pixel, index, dimension, seed) inside the unit interval") {
   for (SamplerKind kind : {SamplerKind::random, SamplerKind::jittered, SamplerKind::sobol}) {
     for (uint32_t i = 0; i < 32; ++i) {

@@ -1,0 +1,36 @@
+// The path tracer's BSDF at one surface point, seen from one outgoing direction. The lobe frame,
+// weights and selection probabilities are worked out once per path vertex and shared by light
+// sampling (eval, pdf) and BSDF sampling. Directions are world-space unit vectors pointing away
+// from the surface; `n` is the shading normal on the side the material was authored (the
+// integrator flips it for double-sided hits).
+#pragma once
+
+#include <optional>
+#include <variant>
+
+#include "materials/bsdf_models.h"
+
+namespace radiant {
+
+class Bsdf {
+ public:
+  Bsdf(const SurfaceMaterial& m, vec3 n, vec3 wo);
+
+  // f(wo, wi) * |dot(n, wi)| for the non-delta lobes.
+  color3 eval(vec3 wi) const;
+  // Solid-angle pdf that sample() picks wi through a non-delta lobe.
+  float pdf(vec3 wi) const;
+  // Samples a direction; u_lobe picks a lobe, u the direction within it. nullopt when absorbed.
+  std::optional<BsdfSample> sample(float u_lobe, vec2 u) const;
+
+ private:
+  // Unlit surfaces (std::monostate) show their color and scatter nothing.
+  std::variant<std::monostate, PhongLobes, MetallicRoughnessLobes> lobes_;
+};
+
+// True when the material has only delta lobes (mirror, smooth glass): light sampling is useless.
+bool is_pure_delta(const SurfaceMaterial& m);
+// Hemispherical albedo estimate used for the albedo AOV (base color or kd, clamped to [0,1]).
+color3 bsdf_albedo(const SurfaceMaterial& m);
+
+}  // namespace radiant
