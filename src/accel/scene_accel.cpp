@@ -165,11 +165,13 @@ void attach_instances(SceneAccel& accel) {
   std::vector<vec3> world_positions;
   accel.instance_inverse.resize(scene.instances.size());
   accel.instance_orientation.resize(scene.instances.size());
+  accel.instance_identity.resize(scene.instances.size());
   for (size_t i = 0; i < scene.instances.size(); ++i) {
     const InstanceDesc& instance = scene.instances[i];
     if (!inverse_affine(instance.transform, accel.instance_inverse[i]))
       throw std::runtime_error("instances[" + std::to_string(i) + "]: singular transform");
     accel.instance_orientation[i] = determinant3(instance.transform) < 0 ? -1.0f : 1.0f;
+    accel.instance_identity[i] = is_identity(instance.transform);
     RTCGeometry geometry;
     if (placements[instance.mesh] == 1 && place_exactly(scene.meshes[instance.mesh], instance.transform, world_positions)) {
       geometry = new_triangle_geometry(accel, instance.mesh, world_positions);

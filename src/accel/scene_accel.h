@@ -32,6 +32,7 @@ struct SceneAccel {
   std::vector<RTCScene> mesh_scenes;  // per mesh; null for meshes on the top level
   std::vector<mat4> instance_inverse;  // world to object, per instance
   std::vector<float> instance_orientation;  // sign of the transform's determinant
+  std::vector<char> instance_identity;      // the transform is the identity (hits skip it)
   unsigned shape_geometry = RTC_INVALID_GEOMETRY_ID;
   // Alpha-mask filter data, one per mesh (a material in MASK mode only).
   struct AlphaMask {

@@ -44,10 +44,15 @@ void fill_triangle_hit(const SceneAccel& accel, const HitId& id, SurfaceHit& hit
   vec3 along_edges = b1 * e1 + b2 * e2;
   vec3 object_point = p0 + along_edges;
   vec3 object_error = rounding_gamma(5) * (abs(b1 * e1) + abs(b2 * e2)) + rounding_gamma(2) * abs(object_point);
-  hit.position = transform_point(to_world, object_point);
-  vec3 translation = {to_world.m[0][3], to_world.m[1][3], to_world.m[2][3]};
-  vec3 error = (1 + rounding_gamma(3)) * abs_transform_vector(to_world, object_error) +
-               rounding_gamma(3) * (abs_transform_vector(to_world, abs(object_point)) + abs(translation));
+  bool identity = accel.instance_identity[id.instance];
+  vec3 error = object_error;
+  hit.position = object_point;
+  if (!identity) {
+    hit.position = transform_point(to_world, object_point);
+    vec3 translation = {to_world.m[0][3], to_world.m[1][3], to_world.m[2][3]};
+    error = (1 + rounding_gamma(3)) * abs_transform_vector(to_world, object_error) +
+            rounding_gamma(3) * (abs_transform_vector(to_world, abs(object_point)) + abs(translation));
+  }
   // Embree's own ray-plane arithmetic mixes all three coordinates, so a surface lying in a
   // coordinate plane (error 0 along its normal) still needs an offset: use the largest bound
   // on every axis.
@@ -56,11 +61,14 @@ void fill_triangle_hit(const SceneAccel& accel, const HitId& id, SurfaceHit& hit
 
   // The front side is where the world-space winding is counter-clockwise (glTF): the inverse
   // transpose of the object normal, flipped for mirroring transforms.
+  vec3 object_normal = cross(e1, e2);
   hit.geometric_normal =
-      normalize(transform_normal(to_object, cross(p1 - p0, p2 - p0))) * accel.instance_orientation[id.instance];
+      identity ? normalize(object_normal)
+               : normalize(transform_normal(to_object, object_normal)) * accel.instance_orientation[id.instance];
   hit.shading_normal = hit.geometric_normal;
   if (!mesh.normals.empty()) {
-    vec3 n = normalize(transform_normal(to_object, interpolate(mesh.normals, tri, b0, b1, b2)));
+    vec3 n = interpolate(mesh.normals, tri, b0, b1, b2);
+    n = normalize(identity ? n : transform_normal(to_object, n));
     if (is_finite(n) && length_squared(n) > 0.5f) {
       // Interpolated normals live on the geometric normal's side.
       hit.shading_normal = dot(n, hit.geometric_normal) < 0 ? -n : n;
@@ -68,7 +76,7 @@ void fill_triangle_hit(const SceneAccel& accel, const HitId& id, SurfaceHit& hit
   }
   if (!mesh.tangents.empty()) {
     vec4 t = interpolate4(mesh.tangents, tri, b0, b1, b2);
-    vec3 world = transform_vector(to_world, {t.x, t.y, t.z});
+    vec3 world = identity ? vec3{t.x, t.y, t.z} : transform_vector(to_world, {t.x, t.y, t.z});
     hit.tangent = {world.x, world.y, world.z, mesh.tangents[tri[0]].w < 0 ? -1.0f : 1.0f};
   }
   if (!mesh.texcoords0.empty()) hit.attributes.uv[0] = interpolate(mesh.texcoords0, tri, b0, b1, b2);
