@@ -59,10 +59,11 @@ color3 sample_one_light(const RenderContext& ctx, const SurfaceHit& hit, const B
                         const SampleContext& sample, int depth, RayCounts& counts) {
   const LightTable& lights = *ctx.lights;
   if (lights.selection.empty()) return {};
-  float u_choice = sample_1d(sample, dimension(depth, light_choice));
+  // Random numbers are drawn only when used (one light needs no choice, a delta light no
+  // point); their dimensions stay fixed, so skipping one changes no other.
+  float u_choice = lights.selection.size() > 1 ? sample_1d(sample, dimension(depth, light_choice)) : 0.0f;
   size_t index = sample_discrete(lights.selection, u_choice);
   float select_pdf = lights.selection.pmf[index];
-  vec2 u = sample_2d(sample, dimension(depth, light_point));
 
   if (index < lights.delta_lights.size()) {
     if (!enabled<E>(ctx.effects, effect_direct_delta)) return {};
@@ -82,7 +83,7 @@ color3 sample_one_light(const RenderContext& ctx, const SurfaceHit& hit, const B
     if (!enabled<E>(ctx.effects, effect_emission)) return {};
     const AreaLight& light = lights.area_lights[index - lights.delta_lights.size()];
     AreaLightSample s;
-    if (!sample_area_light(light, hit.position, u, s)) return {};
+    if (!sample_area_light(light, hit.position, sample_2d(sample, dimension(depth, light_point)), s)) return {};
     if (!area_light_emits(light, s.normal, -s.direction)) return {};
     wi = s.direction;
     light_pdf = s.pdf;
@@ -90,7 +91,8 @@ color3 sample_one_light(const RenderContext& ctx, const SurfaceHit& hit, const B
     emitted = area_light_emission<E>(ctx, light, s.barycentric);
   } else {
     if (!enabled<E>(ctx.effects, effect_environment)) return {};
-    light_pdf = sample_environment(lights, f.normal, sample_1d(sample, dimension(depth, environment_choice)), u, wi);
+    light_pdf = sample_environment(lights, f.normal, sample_1d(sample, dimension(depth, environment_choice)),
+                                   sample_2d(sample, dimension(depth, light_point)), wi);
     if (!(light_pdf > 0)) return {};
     distance = std::numeric_limits<float>::infinity();
     emitted = eval_environment(lights, wi);
@@ -172,8 +174,8 @@ struct PathVariant {
       if (LightSampling && !is_pure_delta(m))
         radiance += throughput * sample_one_light<E>(ctx, hit, bsdf, f, sample, depth, counts);
 
-      auto scattered = bsdf.sample(sample_1d(sample, dimension(depth, lobe_choice)),
-                                   sample_2d(sample, dimension(depth, bsdf_direction)));
+      float u_lobe = bsdf.chooses_lobe() ? sample_1d(sample, dimension(depth, lobe_choice)) : 0.5f;
+      auto scattered = bsdf.sample(u_lobe, sample_2d(sample, dimension(depth, bsdf_direction)));
       if (!scattered || is_black(scattered->weight)) break;
       // Without indirect light a diffuse or glossy bounce only completes this vertex's direct light.
       if (!scattered->delta && !enabled<E>(ctx.effects, effect_indirect)) max_depth = std::min(max_depth, depth + 1);

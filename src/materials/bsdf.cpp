@@ -1,6 +1,8 @@
 // The path tracer's BSDF: dispatch on the material model, once per path vertex.
 #include "materials/bsdf.h"
 
+#include <initializer_list>
+
 namespace radiant {
 
 namespace {
@@ -34,6 +36,19 @@ std::optional<BsdfSample> Bsdf::sample(float u_lobe, vec2 u) const {
   if (auto* l = std::get_if<PhongLobes>(&lobes_)) return sample_local(*l, u_lobe, u);
   if (auto* l = std::get_if<MetallicRoughnessLobes>(&lobes_)) return sample_local(*l, u_lobe, u);
   return std::nullopt;
+}
+
+bool Bsdf::chooses_lobe() const {
+  auto count = [](std::initializer_list<float> probabilities) {
+    int n = 0;
+    for (float p : probabilities) n += p > 0;
+    return n;
+  };
+  if (auto* l = std::get_if<PhongLobes>(&lobes_))
+    return count({l->p_diffuse, l->p_glossy, l->p_mirror, l->p_transmission}) > 1;
+  if (auto* l = std::get_if<MetallicRoughnessLobes>(&lobes_))
+    return count({l->p_specular, l->p_diffuse, l->p_transmission}) > 1;
+  return false;
 }
 
 bool is_pure_delta(const SurfaceMaterial& m) {

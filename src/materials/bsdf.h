@@ -22,6 +22,9 @@ class Bsdf {
   float pdf(vec3 wi) const;
   // Samples a direction; u_lobe picks a lobe, u the direction within it. nullopt when absorbed.
   std::optional<BsdfSample> sample(float u_lobe, vec2 u) const;
+  // False when at most one lobe can be chosen: sample() then ignores u_lobe, and the path
+  // tracer skips drawing it.
+  bool chooses_lobe() const;
 
  private:
   // Unlit surfaces (std::monostate) show their color and scatter nothing.

@@ -118,5 +118,31 @@ TEST_CASE("unlit materials scatter nothing") {
   CHECK(is_pure_delta(unlit));
 }
 
+TEST_CASE("a lobe is drawn only when there is a choice, and any draw then gives the same sample") {
+  vec3 wo = normalize(vec3{0.3f, -0.2f, 0.9f});
+  // One lobe each: Phong diffuse, a pure mirror.
+  SurfaceMaterial matte;
+  matte.kd = {0.5f, 0.5f, 0.5f};
+  SurfaceMaterial mirror;
+  mirror.kd = {0, 0, 0};
+  mirror.kr = {1, 1, 1};
+  for (const SurfaceMaterial& m : {matte, mirror}) {
+    Bsdf bsdf(m, up, wo);
+    CHECK_FALSE(bsdf.chooses_lobe());
+    for (float u_lobe : {0.0f, 0.3f, 0.999f}) {
+      auto a = bsdf.sample(u_lobe, {0.25f, 0.7f}), b = bsdf.sample(0.5f, {0.25f, 0.7f});
+      REQUIRE(a.has_value());
+      REQUIRE(b.has_value());
+      CHECK(a->wi == b->wi);
+      CHECK(a->weight == b->weight);
+    }
+  }
+  // Two lobes: diffuse plus mirror, and the glTF plastic (coating over diffuse).
+  SurfaceMaterial shiny = matte;
+  shiny.kr = {0.3f, 0.3f, 0.3f};
+  CHECK(Bsdf(shiny, up, wo).chooses_lobe());
+  CHECK(Bsdf(metallic_roughness({0.8f, 0.5f, 0.2f}, 0, 0.5f), up, wo).chooses_lobe());
+}
+
 }  // namespace
 }  // namespace radiant::test
