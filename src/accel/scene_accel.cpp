@@ -173,7 +173,8 @@ void attach_instances(SceneAccel& accel) {
     accel.instance_orientation[i] = determinant3(instance.transform) < 0 ? -1.0f : 1.0f;
     accel.instance_identity[i] = is_identity(instance.transform);
     RTCGeometry geometry;
-    if (placements[instance.mesh] == 1 && place_exactly(scene.meshes[instance.mesh], instance.transform, world_positions)) {
+    const MeshDesc& mesh = scene.meshes[instance.mesh];
+    if (placements[instance.mesh] == 1 && place_exactly(mesh, instance.transform, world_positions)) {
       geometry = new_triangle_geometry(accel, instance.mesh, world_positions);
     } else {
       if (!accel.mesh_scenes[instance.mesh]) accel.mesh_scenes[instance.mesh] = build_mesh_scene(accel, instance.mesh);

@@ -23,14 +23,15 @@ color3 specular_fresnel(const MetallicRoughnessLobes& l, float cos_h) {
 }
 
 // Light crossing the plastic's coating at cosine `cos` (symmetric in wo and wi: reciprocity).
-float coating_transmittance(const MetallicRoughnessLobes& l, float cos) { return 1 - l.fade * fresnel_dielectric(cos, l.ior); }
+float coating_transmittance(const MetallicRoughnessLobes& l, float cos) {
+  return 1 - l.fade * fresnel_dielectric(cos, l.ior);
+}
 
 // Delta lobes need no floor: a delta lobe with no reflectance is simply never chosen.
 float selection_weight(bool present, float estimate, bool delta) {
   if (!present) return 0;
   return delta ? estimate : std::max(estimate, min_lobe_weight);
 }
-
 
 // Generalized half vector of a refraction (Walter et al. 2007), facing the wo side; false when
 // wo and wi cannot be joined by a refracting microfacet.
@@ -87,8 +88,6 @@ float pdf_rough_transmission(const MetallicRoughnessLobes& l, vec3 wi) {
   if (denominator < 1e-12f) return 0;
   return ggx_visible_normal_pdf(l.wo, h, l.alpha) * std::abs(dot(wi, h)) / denominator;
 }
-
-
 
 std::optional<BsdfSample> sample_specular(const MetallicRoughnessLobes& l, vec2 u) {
   if (l.smooth) return delta_sample(l, reflect_local(l.wo), specular_fresnel(l, l.wo.z), l.p_specular);

@@ -18,14 +18,11 @@ void conserve_energy(const SurfaceMaterial& m, PhongLobes& l) {
   l.kd *= scale, l.ks *= scale, l.kr *= scale, l.kt *= scale;
 }
 
-
 // cos^n of the angle between wi and the mirror direction of wo (0 beyond 90 degrees).
 float phong_lobe(const PhongLobes& l, vec3 wi) {
   float cos_alpha = dot(wi, reflect_local(l.wo));
   return cos_alpha > 0 ? std::pow(std::min(cos_alpha, 1.0f), l.exponent) : 0;
 }
-
-
 
 // A direction with density (n+1)/(2 pi) cos^n around the mirror direction.
 vec3 sample_phong_lobe(const PhongLobes& l, vec2 u) {

@@ -155,9 +155,9 @@ TEST_CASE("ray offsets: a fixed 1e-4 offset works at unit scale but re-hits or s
 
 TEST_CASE("ray offsets: next_float agrees with std::nextafter on zeros, denormals, ulps of every sign and the largest floats") {
   const float inf = std::numeric_limits<float>::infinity();
-  const float values[] = {0.0f, -0.0f, std::numeric_limits<float>::denorm_min(), -std::numeric_limits<float>::denorm_min(),
-                          std::numeric_limits<float>::min(), 1.0f, -1.0f, 0.1f, -3e-30f, 1e6f, -1e6f,
-                          std::numeric_limits<float>::max(), -std::numeric_limits<float>::max()};
+  const float tiny = std::numeric_limits<float>::denorm_min(), huge = std::numeric_limits<float>::max();
+  const float values[] = {0.0f, -0.0f, tiny, -tiny, std::numeric_limits<float>::min(), 1.0f, -1.0f, 0.1f, -3e-30f,
+                          1e6f, -1e6f, huge, -huge};
   for (float v : values) {
     CAPTURE(v);
     CHECK(next_float(v, true) == std::nextafter(v, inf));
