@@ -1,6 +1,8 @@
 #include "scene/mesh_ops.h"
 
 #include <cmath>
+#include <type_traits>
+#include <utility>
 
 namespace radiant {
 
@@ -43,6 +45,19 @@ static vec3 unit_or_default(vec3 n) {
 void generate_normals(MeshDesc& mesh) {
   mesh.normals = area_weighted_normals(mesh);
   for (vec3& n : mesh.normals) n = unit_or_default(n);
+}
+
+void unweld_triangles(MeshDesc& mesh) {
+  auto unweld = [&](auto& values) {
+    if (values.empty()) return;
+    std::remove_reference_t<decltype(values)> corners;
+    corners.reserve(mesh.indices.size());
+    for (uint32_t index : mesh.indices) corners.push_back(values[index]);
+    values = std::move(corners);
+  };
+  unweld(mesh.positions), unweld(mesh.normals), unweld(mesh.tangents);
+  unweld(mesh.texcoords0), unweld(mesh.texcoords1), unweld(mesh.colors);
+  for (size_t i = 0; i < mesh.indices.size(); ++i) mesh.indices[i] = uint32_t(i);
 }
 
 size_t repair_normals(MeshDesc& mesh) {

@@ -2,6 +2,7 @@
 #include <doctest/doctest.h>
 
 #include "loaders/gltf_builder.h"
+#include "accel/scene_accel.h"
 #include "load_scene.h"
 #include "support/test_support.h"
 
@@ -17,18 +18,43 @@ static std::string one_primitive(const std::string& primitive) {
   return "\"meshes\":[{\"primitives\":[" + primitive + "]}],\"nodes\":[{\"mesh\":0}],\"scenes\":[{\"nodes\":[0]}]";
 }
 
-TEST_CASE("gltf: an indexed quad becomes one mesh with generated +Z normals") {
+TEST_CASE("gltf: an indexed quad without NORMAL becomes one mesh shaded flat (no vertex normals)") {
   SceneDesc scene = load_text(quad_builder().gltf(one_primitive("{\"attributes\":{\"POSITION\":0},\"indices\":1}")));
   REQUIRE(scene.meshes.size() == 1);
   CHECK(scene.meshes[0].indices == std::vector<uint32_t>{0, 1, 2, 0, 2, 3});
-  REQUIRE(scene.meshes[0].normals.size() == 4);
-  CHECK(scene.meshes[0].normals[2].z == doctest::Approx(1));
+  CHECK(scene.meshes[0].normals.empty());
   CHECK(scene.instances.size() == 1);
   CHECK(scene.materials.size() == 1);  // the glTF default material
   CHECK(scene.materials[0].name == "glTF default");
   // A UTF-8 byte order mark is allowed.
   std::string text = quad_builder().gltf(one_primitive("{\"attributes\":{\"POSITION\":0},\"indices\":1}"));
   CHECK(load_text("\xEF\xBB\xBF" + text).meshes.size() == 1);
+}
+
+TEST_CASE("gltf: without NORMAL a folded pair of triangles shades each face with its own normal, with NORMAL it interpolates") {
+  // Two triangles sharing the edge from (1,0,0) to (0,1,0): one flat in z = 0, one folded up.
+  GltfBuilder b;
+  b.floats({0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 1}, "VEC3", 3);
+  b.indices({0, 1, 2, 1, 3, 2});
+  b.floats({0, 0, 1, 0, 0.6f, 0.8f, 0, 0.6f, 0.8f, 0, 0.6f, 0.8f}, "VEC3", 3);
+  // Straight down onto the flat triangle, next to the shared edge.
+  Ray ray = {{0.45f, 0.45f, 5}, {0, 0, -1}};
+  SUBCASE("flat (glTF 3.7.2.1: clients must calculate flat normals)") {
+    SceneDesc scene = load_text(b.gltf(one_primitive("{\"attributes\":{\"POSITION\":0},\"indices\":1}")));
+    auto accel = build_scene_accel(scene);
+    SurfaceHit hit = make_surface_hit(*accel, ray, intersect_nearest(*accel, ray));
+    CHECK(hit.geometric_normal.z == doctest::Approx(1));
+    CHECK(hit.shading_normal.x == hit.geometric_normal.x);
+    CHECK(hit.shading_normal.y == hit.geometric_normal.y);
+    CHECK(hit.shading_normal.z == hit.geometric_normal.z);
+  }
+  SUBCASE("authored normals are interpolated") {
+    SceneDesc scene = load_text(b.gltf(one_primitive("{\"attributes\":{\"POSITION\":0,\"NORMAL\":2},\"indices\":1}")));
+    auto accel = build_scene_accel(scene);
+    SurfaceHit hit = make_surface_hit(*accel, ray, intersect_nearest(*accel, ray));
+    CHECK(hit.geometric_normal.z == doctest::Approx(1));
+    CHECK(hit.shading_normal.y > 0.5f);  // mostly the tilted normals of the edge's vertices
+  }
 }
 
 TEST_CASE("gltf: triangle strips alternate winding and fans share the first vertex") {

@@ -69,8 +69,9 @@ TEST_CASE("gltf materials: factors, textures, samplers and the supported extensi
   CHECK(scene.images[0].width == 2);
   CHECK(scene.images[0].channels == 3);
   CHECK(scene.images[0].texels8 == std::vector<uint8_t>{255, 0, 0, 0, 0, 255});
-  // The normal map asks for tangents: generated along +u, right-handed.
-  REQUIRE(scene.meshes[0].tangents.size() == 4);
+  // The normal map asks for tangents: generated along +u, on the flat (unshared) vertices glTF
+  // asks for when NORMAL is missing.
+  REQUIRE(scene.meshes[0].tangents.size() == 6);
   CHECK(scene.meshes[0].tangents[0].x == doctest::Approx(1));
   CHECK(scene.meshes[0].tangents[0].w == -1);  // v grows along -y: a left-handed frame
 }
@@ -81,4 +82,27 @@ TEST_CASE("gltf materials: an image that is not PNG or JPEG is refused by name")
   std::string path = dir.write("m.gltf", quad_builder().gltf(std::string(quad_mesh) +
       ",\"nodes\":[{\"mesh\":0}],\"scenes\":[{\"nodes\":[0]}],\"images\":[{\"uri\":\"fake.png\"}]")).string();
   CHECK_THROWS_WITH_AS(load_scene(path), (path + ": images[0]: not a PNG or JPEG image").c_str(), LoadError);
+}
+
+TEST_CASE("gltf: a normal-mapped primitive without NORMAL gets flat normals on unshared vertices and ignores its TANGENT") {
+  ScratchDir dir("gltf-flat-normal-map");
+  write_png(dir.file("bumps.png"));
+  GltfBuilder b = quad_builder();
+  b.floats({0, 1, 1, 1, 1, 0, 0, 0}, "VEC2", 2);
+  b.floats({0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1}, "VEC4", 4);  // tangents along +y: must be ignored
+  std::string body =
+      "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0,\"TEXCOORD_0\":2,\"TANGENT\":3},"
+      "\"indices\":1,\"material\":0}]}],\"nodes\":[{\"mesh\":0}],\"scenes\":[{\"nodes\":[0]}],"
+      "\"images\":[{\"uri\":\"bumps.png\"}],\"textures\":[{\"source\":0}],"
+      "\"materials\":[{\"normalTexture\":{\"index\":0}}]";
+  SceneDesc scene = load_scene(dir.write("m.gltf", b.gltf(body)).string());
+  REQUIRE(scene.meshes.size() == 1);
+  const MeshDesc& mesh = scene.meshes[0];
+  CHECK(mesh.positions.size() == 6);  // two triangles, three vertices each
+  REQUIRE(mesh.normals.size() == 6);
+  REQUIRE(mesh.tangents.size() == 6);
+  for (size_t i = 0; i < 6; ++i) {
+    CHECK(mesh.normals[i].z == doctest::Approx(1));
+    CHECK(mesh.tangents[i].x == doctest::Approx(1));  // generated along +u = +x
+  }
 }
