@@ -72,14 +72,8 @@ void fill_shading_frames(GltfContext& context, MeshDesc& mesh, bool has_normals,
   const MaterialDesc& material = context.scene.materials[mesh.material];
   bool normal_mapped = material.normal_texture.valid() && !mesh.texcoords0.empty();
   if (!has_normals) {
-    // glTF 3.7.2.1: without normals, clients MUST calculate flat normals and ignore the
-    // tangents. An empty normal list shades with each triangle's own normal; a normal map needs
-    // per-vertex normals for its tangents, so its triangles get vertices of their own.
-    mesh.tangents.clear();
-    if (normal_mapped) {
-      unweld_triangles(mesh);
-      generate_normals(mesh);
-    }
+    // glTF 3.7.2.1: without normals, clients MUST calculate flat normals and ignore the tangents.
+    shade_flat(mesh, normal_mapped);
   } else if (size_t bad = repair_normals(mesh)) {
     context.warn(where + ".attributes.NORMAL: " + std::to_string(bad) + " zero-length normals recomputed");
   }

@@ -64,6 +64,7 @@ struct MeshBuilder {
   MeshDesc mesh;
   std::unordered_map<uint64_t, uint32_t> vertices;  // packed index triple -> vertex
   bool all_normals = true;
+  bool smoothed = false;  // some face is in a smoothing group (`s 1`, ...)
 };
 
 uint64_t pack(const tinyobj::index_t& i) {
@@ -148,6 +149,7 @@ std::map<int, MeshBuilder> build_meshes(const std::string& path, const ObjData& 
       int material = f < faces.material_ids.size() ? faces.material_ids[f] : -1;
       if (material >= int(data.materials.size())) material = -1;
       MeshBuilder& builder = builders[material];
+      if (f < faces.smoothing_group_ids.size() && faces.smoothing_group_ids[f] != 0) builder.smoothed = true;
       for (size_t k = 0; k < count; ++k) {
         try {
           check_corner(path, data.attrib, faces.indices[first + k]);
@@ -203,10 +205,18 @@ void append_obj(SceneDesc& scene, const std::string& path, const mat4& transform
     dropped += drop_degenerate_triangles(mesh);
     if (mesh.indices.empty()) continue;
     if (!has_texcoords(data)) mesh.texcoords0.clear();
-    if (!builder.all_normals) generate_normals(mesh);
-    else if (size_t bad = repair_normals(mesh))
-      scene.warnings.push_back(path + ": " + std::to_string(bad) + " zero-length normals recomputed");
-    if (scene.materials[mesh.material].normal_texture.valid()) generate_tangents(mesh);
+    bool normal_mapped = scene.materials[mesh.material].normal_texture.valid() && !mesh.texcoords0.empty();
+    // Without vn, OBJ shades faces flat unless they are in a smoothing group; smoothed faces get
+    // area-weighted normals (across group boundaries too: groups are not told apart).
+    if (builder.all_normals) {
+      if (size_t bad = repair_normals(mesh))
+        scene.warnings.push_back(path + ": " + std::to_string(bad) + " zero-length normals recomputed");
+    } else if (builder.smoothed) {
+      generate_normals(mesh);
+    } else {
+      shade_flat(mesh, normal_mapped);
+    }
+    if (normal_mapped && mesh.tangents.empty()) generate_tangents(mesh);
     scene.instances.push_back({int(scene.meshes.size()), transform, mesh.name});
     scene.meshes.push_back(std::move(mesh));
   }

@@ -47,7 +47,8 @@ void generate_normals(MeshDesc& mesh) {
   for (vec3& n : mesh.normals) n = unit_or_default(n);
 }
 
-void unweld_triangles(MeshDesc& mesh) {
+// Gives every triangle its own three vertices (every attribute copied).
+static void unweld_triangles(MeshDesc& mesh) {
   auto unweld = [&](auto& values) {
     if (values.empty()) return;
     std::remove_reference_t<decltype(values)> corners;
@@ -58,6 +59,14 @@ void unweld_triangles(MeshDesc& mesh) {
   unweld(mesh.positions), unweld(mesh.normals), unweld(mesh.tangents);
   unweld(mesh.texcoords0), unweld(mesh.texcoords1), unweld(mesh.colors);
   for (size_t i = 0; i < mesh.indices.size(); ++i) mesh.indices[i] = uint32_t(i);
+}
+
+void shade_flat(MeshDesc& mesh, bool normal_mapped) {
+  mesh.normals.clear();
+  mesh.tangents.clear();
+  if (!normal_mapped) return;
+  unweld_triangles(mesh);
+  generate_normals(mesh);
 }
 
 size_t repair_normals(MeshDesc& mesh) {

@@ -13,9 +13,11 @@ size_t drop_degenerate_triangles(MeshDesc& mesh);
 void generate_normals(MeshDesc& mesh);
 // Replaces zero-length or non-finite normals with generated ones; returns how many were bad.
 size_t repair_normals(MeshDesc& mesh);
-// Gives every triangle its own three vertices (every attribute copied), so that vertex normals
-// generated afterwards are the face normals: flat shading where a format asks for it.
-void unweld_triangles(MeshDesc& mesh);
+// Flat shading where a format asks for it (glTF without NORMAL, OBJ without vn outside smoothing
+// groups): no vertex normals or tangents, so every hit takes its triangle's own normal. A
+// normal-mapped mesh needs vertex normals for its tangents: its triangles then get vertices of
+// their own and the face normals as vertex normals.
+void shade_flat(MeshDesc& mesh, bool normal_mapped);
 // Per-vertex tangents from texcoords0 (needed by normal maps when the file has none).
 void generate_tangents(MeshDesc& mesh);
 

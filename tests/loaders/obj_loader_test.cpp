@@ -69,11 +69,27 @@ TEST_CASE("obj: polygons are triangulated into one mesh per material with the MT
   CHECK(scene.warnings.empty());
 }
 
+TEST_CASE("obj: without vn, faces are flat unless a smoothing group asks for shared normals") {
+  ScratchDir dir("obj-smoothing");
+  // Two faces folded along a shared edge (vertices 2 and 3), no normals.
+  const std::string fold = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 1\n";
+  SceneDesc flat = load_scene(dir.write("flat.obj", fold + "f 1 2 3\nf 2 4 3\n").string());
+  CHECK(flat.meshes.at(0).normals.empty());
+  SceneDesc off = load_scene(dir.write("off.obj", fold + "s off\nf 1 2 3\nf 2 4 3\n").string());
+  CHECK(off.meshes.at(0).normals.empty());
+  SceneDesc smooth = load_scene(dir.write("smooth.obj", fold + "s 1\nf 1 2 3\nf 2 4 3\n").string());
+  const MeshDesc& mesh = smooth.meshes.at(0);
+  REQUIRE(mesh.normals.size() == 4);
+  CHECK(mesh.normals[0].z == doctest::Approx(1));  // only in the flat face
+  CHECK(mesh.normals[1].z < 0.99f);                // shared by both faces: tilted between them
+  CHECK(mesh.normals[1].x < 0);
+}
+
 TEST_CASE("obj: a file with no light warns that the image will be black") {
   ScratchDir dir("obj-dark");
   std::string path = dir.write("a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").string();
   SceneDesc scene = load_scene(path);
-  CHECK(scene.meshes.at(0).normals.at(0).z == doctest::Approx(1));
+  CHECK(scene.meshes.at(0).normals.empty());  // no vn, no smoothing group: flat
   CHECK(scene.materials.at(0).kd.x == doctest::Approx(0.8));
   REQUIRE(scene.warnings.size() == 1);
   CHECK(scene.warnings[0] ==
