@@ -61,8 +61,9 @@ color3 sample_one_light(const RenderContext& ctx, const SurfaceHit& hit, const B
   if (lights.selection.empty()) return {};
   // Random numbers are drawn only when used (one light needs no choice, a delta light no
   // point); their dimensions stay fixed, so skipping one changes no other.
-  float u_choice = lights.selection.size() > 1 ? sample_1d(sample, dimension(depth, light_choice)) : 0.0f;
-  size_t index = sample_discrete(lights.selection, u_choice);
+  size_t index = lights.selection.size() > 1
+                     ? sample_discrete(lights.selection, sample_1d(sample, dimension(depth, light_choice)))
+                     : 0;
   float select_pdf = lights.selection.pmf[index];
 
   if (index < lights.delta_lights.size()) {

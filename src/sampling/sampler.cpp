@@ -10,11 +10,10 @@ namespace radiant {
 namespace {
 
 constexpr uint32_t reverse_bits(uint32_t v) {
+  v = __builtin_bswap32(v);  // one instruction for the byte and half-word stages (GCC, Clang)
   v = ((v >> 1) & 0x55555555U) | ((v & 0x55555555U) << 1);
   v = ((v >> 2) & 0x33333333U) | ((v & 0x33333333U) << 2);
-  v = ((v >> 4) & 0x0F0F0F0FU) | ((v & 0x0F0F0F0FU) << 4);
-  v = ((v >> 8) & 0x00FF00FFU) | ((v & 0x00FF00FFU) << 8);
-  return (v >> 16) | (v << 16);
+  return ((v >> 4) & 0x0F0F0F0FU) | ((v & 0x0F0F0F0FU) << 4);
 }
 
 // Sobol dimension 1 (primitive polynomial x + 1: m_k = m_{k-1} ^ 2 m_{k-1}), bit-reversed and
@@ -79,17 +78,19 @@ uint32_t permutation_element(uint32_t i, uint32_t length, uint32_t seed) {
 // progressive and adaptive rendering).
 struct ShuffledSobol {
   uint32_t index;  // the shuffled sample index
-  uint32_t scramble_x, scramble_y;
+  uint32_t seed;   // of this pair; the two scrambles derive from it
 };
 ShuffledSobol shuffled_sobol(const SampleContext& c, uint32_t dimension) {
   uint32_t h = hash3(c.pixel, dimension, c.seed);
   uint32_t index = dimension == 0 ? c.index : reverse_bits(laine_karras(reverse_bits(c.index), h));
-  return {index, mix_bits(h ^ 0xa511e9b3U), mix_bits(h ^ 0x63d83595U)};
+  return {index, h};
 }
 // Sobol dimension 0 is the radical inverse: its bit-reversed digits are the index itself.
-float sobol_x(const ShuffledSobol& s) { return bits_to_unit_float(reverse_bits(laine_karras(s.index, s.scramble_x))); }
+float sobol_x(const ShuffledSobol& s) {
+  return bits_to_unit_float(reverse_bits(laine_karras(s.index, mix_bits(s.seed ^ 0xa511e9b3U))));
+}
 float sobol_y(const ShuffledSobol& s) {
-  return bits_to_unit_float(reverse_bits(laine_karras(sobol1_reversed(s.index), s.scramble_y)));
+  return bits_to_unit_float(reverse_bits(laine_karras(sobol1_reversed(s.index), mix_bits(s.seed ^ 0x63d83595U))));
 }
 
 float random_value(const SampleContext& c, uint32_t dimension) {
