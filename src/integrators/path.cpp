@@ -171,7 +171,7 @@ struct PathVariant {
       // Vertex `depth` gathers light only below max_depth; the emission above completed the
       // direct light of the previous vertex.
       if (depth >= max_depth) break;
-      Bsdf bsdf(m, bsdf_normal(m, f), f.wo);
+      Bsdf bsdf = bsdf_at<E>(ctx, hit, m, bsdf_normal(m, f), f.wo);
       if (LightSampling && !is_pure_delta(m))
         radiance += throughput * sample_one_light<E>(ctx, hit, bsdf, f, sample, depth, counts);
 

@@ -8,6 +8,7 @@
 #include "accel/scene_accel.h"
 #include "integrators/effect_variants.h"
 #include "lights/light_table.h"
+#include "materials/bsdf.h"
 #include "materials/surface.h"
 #include "sampling/sampler.h"
 #include "scene/effects.h"
@@ -39,6 +40,7 @@ struct RenderContext {
   const LightTable* lights = nullptr;
   color3 ambient;                              // sum of the ambient lights
   std::vector<SurfaceMaterial> flat_materials; // each material resolved once, for untextured renders
+  std::vector<BsdfMaterial> flat_bsdf_materials;  // and its BSDF's direction-independent part
   uint32_t effects = effect_all;
   int max_depth = 8;
   float contribution_cutoff = 0.001f;
@@ -56,6 +58,13 @@ SurfaceMaterial material_at(const RenderContext& ctx, const SurfaceHit& hit) {
     return resolve_material(*ctx.scene, ctx.scene->materials[hit.material], hit.attributes);
   else
     return ctx.flat_materials[hit.material];
+}
+
+// The BSDF at a hit for material `m` (from material_at), seen from wo with shading normal `n`.
+template <uint32_t E>
+Bsdf bsdf_at(const RenderContext& ctx, const SurfaceHit& hit, const SurfaceMaterial& m, vec3 n, vec3 wo) {
+  if (enabled<E>(ctx.effects, effect_textures) || enabled<E>(ctx.effects, effect_normal_maps)) return Bsdf(m, n, wo);
+  return Bsdf(ctx.flat_bsdf_materials[hit.material], n, wo);
 }
 
 }  // namespace radiant

@@ -9,16 +9,24 @@ namespace {
 
 color3 clamp01(color3 c) { return min(max(c, {0, 0, 0}), {1, 1, 1}); }
 
-std::variant<std::monostate, PhongLobes, MetallicRoughnessLobes> make_lobes(const SurfaceMaterial& m, vec3 n,
-                                                                            vec3 wo) {
+std::variant<std::monostate, PhongWeights, MetallicRoughnessParams> make_params(const SurfaceMaterial& m) {
   if (m.unlit) return std::monostate{};
-  if (m.model == MaterialModel::metallic_roughness) return make_metallic_roughness_lobes(m, n, wo);
-  return make_phong_lobes(m, n, wo);
+  if (m.model == MaterialModel::metallic_roughness) return make_metallic_roughness_params(m);
+  return make_phong_weights(m);
+}
+
+std::variant<std::monostate, PhongLobes, MetallicRoughnessLobes> make_lobes(
+    const std::variant<std::monostate, PhongWeights, MetallicRoughnessParams>& params, vec3 n, vec3 wo) {
+  if (auto* w = std::get_if<PhongWeights>(&params)) return make_phong_lobes(*w, n, wo);
+  if (auto* p = std::get_if<MetallicRoughnessParams>(&params)) return make_metallic_roughness_lobes(*p, n, wo);
+  return std::monostate{};
 }
 
 }  // namespace
 
-Bsdf::Bsdf(const SurfaceMaterial& m, vec3 n, vec3 wo) : lobes_(make_lobes(m, n, wo)) {}
+BsdfMaterial::BsdfMaterial(const SurfaceMaterial& m) : params_(make_params(m)) {}
+
+Bsdf::Bsdf(const BsdfMaterial& material, vec3 n, vec3 wo) : lobes_(make_lobes(material.params_, n, wo)) {}
 
 color3 Bsdf::eval(vec3 wi) const {
   if (auto* l = std::get_if<PhongLobes>(&lobes_)) return eval_local(*l, to_local(l->frame, wi));

@@ -1,6 +1,6 @@
-// The path tracer's BSDF at one surface point, seen from one outgoing direction. The lobe frame,
-// weights and selection probabilities are worked out once per path vertex and shared by light
-// sampling (eval, pdf) and BSDF sampling. Directions are world-space unit vectors pointing away
+// The path tracer's BSDF at one surface point, seen from one outgoing direction. The lobe frame
+// and selection probabilities are worked out once per path vertex and shared by light sampling
+// (eval, pdf) and BSDF sampling. Directions are world-space unit vectors pointing away
 // from the surface; `n` is the shading normal on the side the material was authored (the
 // integrator flips it for double-sided hits).
 #pragma once
@@ -12,9 +12,22 @@
 
 namespace radiant {
 
+// The part of a material's BSDF that does not depend on directions: worked out once per
+// material when the material is the same at every hit (no textures), once per hit otherwise.
+class BsdfMaterial {
+ public:
+  explicit BsdfMaterial(const SurfaceMaterial& m);
+
+ private:
+  friend class Bsdf;
+  // Unlit surfaces (std::monostate) show their color and scatter nothing.
+  std::variant<std::monostate, PhongWeights, MetallicRoughnessParams> params_;
+};
+
 class Bsdf {
  public:
-  Bsdf(const SurfaceMaterial& m, vec3 n, vec3 wo);
+  Bsdf(const BsdfMaterial& material, vec3 n, vec3 wo);
+  Bsdf(const SurfaceMaterial& m, vec3 n, vec3 wo) : Bsdf(BsdfMaterial(m), n, wo) {}
 
   // f(wo, wi) * |dot(n, wi)| for the non-delta lobes.
   color3 eval(vec3 wi) const;

@@ -1,6 +1,7 @@
-// The two BSDF families behind materials/bsdf.h, each as its lobes seen from one outgoing
-// direction: the local frame, energy-conserving weights and lobe selection probabilities,
-// worked out once and then evaluated, queried for pdfs and sampled in that frame.
+// The two BSDF families behind materials/bsdf.h. Each has a part that depends on the material
+// only (worked out once per material when it has no textures) and its lobes seen from one
+// outgoing direction: that part plus the local frame and what depends on wo, then evaluated,
+// queried for pdfs and sampled in that frame.
 #pragma once
 
 #include <optional>
@@ -11,36 +12,46 @@
 namespace radiant {
 
 // Phong: normalized diffuse + modified-Phong lobe, delta mirror (kr) and delta transmission (kt).
-struct PhongLobes {
-  bool valid = false;
-  ShadingFrame frame;  // z = the normal on wo's side
-  vec3 wo;             // local, wo.z > 0
-  float eta = 1.5f;    // n_transmitted / n_incident seen from wo
+// The weights and lobe choice depend on the material only.
+struct PhongWeights {
+  bool scatters = false;  // some lobe has weight
+  float ior = 1;
   float exponent = 1;
   color3 kd, ks, kr, kt;  // energy-conserving weights
   float p_diffuse = 0, p_glossy = 0, p_mirror = 0, p_transmission = 0;
 };
-PhongLobes make_phong_lobes(const SurfaceMaterial& m, vec3 n, vec3 wo);
+PhongWeights make_phong_weights(const SurfaceMaterial& m);
+struct PhongLobes : PhongWeights {
+  bool valid = false;
+  ShadingFrame frame;  // z = the normal on wo's side
+  vec3 wo;             // local, wo.z > 0
+  float eta = 1.5f;    // n_transmitted / n_incident seen from wo
+};
+PhongLobes make_phong_lobes(const PhongWeights& w, vec3 n, vec3 wo);
 color3 eval_local(const PhongLobes& l, vec3 wi);
 float pdf_local(const PhongLobes& l, vec3 wi);
 std::optional<BsdfSample> sample_local(const PhongLobes& l, float u_lobe, vec2 u);
 bool is_phong_pure_delta(const SurfaceMaterial& m);
 
 // glTF metallic-roughness: GGX specular over Lambert, metal, and (rough or smooth) transmission.
-struct MetallicRoughnessLobes {
-  bool valid = false;
-  ShadingFrame frame;  // z = the normal on wo's side
-  vec3 wo;             // local, wo.z > 0
+// The parameters depend on the material only; the lobe choice also on wo (Fresnel).
+struct MetallicRoughnessParams {
   float alpha = 1;
   bool smooth = false;  // specular lobes are delta
   float ior = 1.5f;     // of the coating, always entered from outside
-  float eta = 1.5f;     // of the glass: n_transmitted / n_incident seen from wo
   color3 base;
   float metal = 0, plastic = 0, glass = 0;  // mix weights, summing to 1
   float fade = 1;                            // strength of the plastic's specular coating
+};
+MetallicRoughnessParams make_metallic_roughness_params(const SurfaceMaterial& m);
+struct MetallicRoughnessLobes : MetallicRoughnessParams {
+  bool valid = false;
+  ShadingFrame frame;  // z = the normal on wo's side
+  vec3 wo;             // local, wo.z > 0
+  float eta = 1.5f;    // of the glass: n_transmitted / n_incident seen from wo
   float p_specular = 0, p_diffuse = 0, p_transmission = 0;
 };
-MetallicRoughnessLobes make_metallic_roughness_lobes(const SurfaceMaterial& m, vec3 n, vec3 wo);
+MetallicRoughnessLobes make_metallic_roughness_lobes(const MetallicRoughnessParams& params, vec3 n, vec3 wo);
 color3 eval_local(const MetallicRoughnessLobes& l, vec3 wi);
 float pdf_local(const MetallicRoughnessLobes& l, vec3 wi);
 std::optional<BsdfSample> sample_local(const MetallicRoughnessLobes& l, float u_lobe, vec2 u);

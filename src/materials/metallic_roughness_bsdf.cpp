@@ -111,22 +111,28 @@ std::optional<BsdfSample> sample_transmission(const MetallicRoughnessLobes& l, v
 
 }  // namespace
 
-MetallicRoughnessLobes make_metallic_roughness_lobes(const SurfaceMaterial& m, vec3 n, vec3 wo) {
+MetallicRoughnessParams make_metallic_roughness_params(const SurfaceMaterial& m) {
+  MetallicRoughnessParams p;
+  p.alpha = roughness_to_alpha(m.roughness);
+  p.smooth = p.alpha < smooth_alpha_threshold;
+  p.ior = std::isfinite(m.ior) && m.ior > 0 ? m.ior : 1.5f;
+  p.base = min(max(m.base_color, {0, 0, 0}), {1, 1, 1});
+  float metallic = std::clamp(m.metallic, 0.0f, 1.0f), transmission = std::clamp(m.transmission, 0.0f, 1.0f);
+  p.metal = metallic;
+  p.plastic = (1 - metallic) * (1 - transmission);
+  p.glass = (1 - metallic) * transmission;
+  p.fade = dielectric_specular_fade(m.roughness);
+  return p;
+}
+
+MetallicRoughnessLobes make_metallic_roughness_lobes(const MetallicRoughnessParams& params, vec3 n, vec3 wo) {
   MetallicRoughnessLobes l;
+  static_cast<MetallicRoughnessParams&>(l) = params;
   bool from_inside = dot(n, wo) < 0;  // only transmissive materials are seen from behind
   l.frame = make_shading_frame(from_inside ? -n : n);
   l.wo = to_local(l.frame, wo);
   if (!(l.wo.z > 1e-7f) || !is_finite(l.wo)) return l;
-  l.alpha = roughness_to_alpha(m.roughness);
-  l.smooth = l.alpha < smooth_alpha_threshold;
-  l.ior = std::isfinite(m.ior) && m.ior > 0 ? m.ior : 1.5f;
   l.eta = from_inside ? 1 / l.ior : l.ior;
-  l.base = min(max(m.base_color, {0, 0, 0}), {1, 1, 1});
-  float metallic = std::clamp(m.metallic, 0.0f, 1.0f), transmission = std::clamp(m.transmission, 0.0f, 1.0f);
-  l.metal = metallic;
-  l.plastic = (1 - metallic) * (1 - transmission);
-  l.glass = (1 - metallic) * transmission;
-  l.fade = dielectric_specular_fade(m.roughness);
   bool colored = max_component(l.base) > 0;
   float cos_o = l.wo.z;
   float specular = selection_weight(l.metal > 0 || l.plastic * l.fade > 0 || l.glass > 0,

@@ -9,15 +9,6 @@ namespace radiant {
 
 namespace {
 
-// Per-channel weights scaled so that no channel reflects more than it receives.
-void conserve_energy(const SurfaceMaterial& m, PhongLobes& l) {
-  color3 zero = {0, 0, 0};
-  l.kd = max(m.kd, zero), l.ks = max(m.ks, zero), l.kr = max(m.kr, zero), l.kt = max(m.kt, zero);
-  color3 total = l.kd + l.ks + l.kr + l.kt;
-  color3 scale = {1 / std::max(1.0f, total.x), 1 / std::max(1.0f, total.y), 1 / std::max(1.0f, total.z)};
-  l.kd *= scale, l.ks *= scale, l.kr *= scale, l.kt *= scale;
-}
-
 // cos^n of the angle between wi and the mirror direction of wo (0 beyond 90 degrees).
 float phong_lobe(const PhongLobes& l, vec3 wi) {
   float cos_alpha = dot(wi, reflect_local(l.wo));
@@ -44,23 +35,34 @@ BsdfSample sample_delta_transmission(const PhongLobes& l) {
 
 }  // namespace
 
-PhongLobes make_phong_lobes(const SurfaceMaterial& m, vec3 n, vec3 wo) {
+PhongWeights make_phong_weights(const SurfaceMaterial& m) {
+  PhongWeights w;
+  w.ior = std::isfinite(m.ior) && m.ior > 0 ? m.ior : 1.0f;
+  w.exponent = std::isfinite(m.shininess) ? std::clamp(m.shininess, 0.0f, 1e6f) : 1.0f;
+  // Per-channel weights scaled so that no channel reflects more than it receives.
+  color3 zero = {0, 0, 0};
+  w.kd = max(m.kd, zero), w.ks = max(m.ks, zero), w.kr = max(m.kr, zero), w.kt = max(m.kt, zero);
+  color3 total = w.kd + w.ks + w.kr + w.kt;
+  color3 scale = {1 / std::max(1.0f, total.x), 1 / std::max(1.0f, total.y), 1 / std::max(1.0f, total.z)};
+  w.kd *= scale, w.ks *= scale, w.kr *= scale, w.kt *= scale;
+  float sum = mean(w.kd) + mean(w.ks) + mean(w.kr) + mean(w.kt);
+  if (!(sum > 0) || !std::isfinite(sum)) return w;
+  w.p_diffuse = mean(w.kd) / sum;
+  w.p_glossy = mean(w.ks) / sum;
+  w.p_mirror = mean(w.kr) / sum;
+  w.p_transmission = mean(w.kt) / sum;
+  w.scatters = true;
+  return w;
+}
+
+PhongLobes make_phong_lobes(const PhongWeights& w, vec3 n, vec3 wo) {
   PhongLobes l;
+  static_cast<PhongWeights&>(l) = w;
   bool from_inside = dot(n, wo) < 0;  // only transmissive materials are seen from behind
   l.frame = make_shading_frame(from_inside ? -n : n);
   l.wo = to_local(l.frame, wo);
-  if (!(l.wo.z > 1e-7f) || !is_finite(l.wo)) return l;
-  float ior = std::isfinite(m.ior) && m.ior > 0 ? m.ior : 1.0f;
-  l.eta = from_inside ? 1 / ior : ior;
-  l.exponent = std::isfinite(m.shininess) ? std::clamp(m.shininess, 0.0f, 1e6f) : 1.0f;
-  conserve_energy(m, l);
-  float total = mean(l.kd) + mean(l.ks) + mean(l.kr) + mean(l.kt);
-  if (!(total > 0) || !std::isfinite(total)) return l;
-  l.p_diffuse = mean(l.kd) / total;
-  l.p_glossy = mean(l.ks) / total;
-  l.p_mirror = mean(l.kr) / total;
-  l.p_transmission = mean(l.kt) / total;
-  l.valid = true;
+  l.eta = from_inside ? 1 / w.ior : w.ior;
+  l.valid = w.scatters && l.wo.z > 1e-7f && is_finite(l.wo);
   return l;
 }
 

@@ -38,6 +38,8 @@ RenderContext make_context(const PreparedScene& prepared, const ResolvedSettings
     if (l.kind == LightKind::ambient) ctx.ambient += l.intensity;
   ctx.flat_materials.reserve(scene.materials.size());
   for (const MaterialDesc& m : scene.materials) ctx.flat_materials.push_back(resolve_material(scene, m, {}));
+  ctx.flat_bsdf_materials.reserve(scene.materials.size());
+  for (const SurfaceMaterial& m : ctx.flat_materials) ctx.flat_bsdf_materials.emplace_back(m);
   ctx.effects = s.effects;
   ctx.max_depth = s.max_depth;
   ctx.contribution_cutoff = options.contribution_cutoff;
