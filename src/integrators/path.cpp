@@ -7,9 +7,9 @@
 #include "integrators/hit_shading.h"
 #include "integrators/shadow.h"
 #include "lights/area_light.h"
-#include "materials/bsdf.h"
 #include "lights/delta_light.h"
 #include "lights/environment_light.h"
+#include "materials/bsdf.h"
 #include "sampling/warp.h"
 
 namespace radiant {
