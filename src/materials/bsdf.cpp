@@ -9,14 +9,13 @@ namespace {
 
 color3 clamp01(color3 c) { return min(max(c, {0, 0, 0}), {1, 1, 1}); }
 
-std::variant<std::monostate, PhongWeights, MetallicRoughnessParams> make_params(const SurfaceMaterial& m) {
+BsdfParams make_params(const SurfaceMaterial& m) {
   if (m.unlit) return std::monostate{};
   if (m.model == MaterialModel::metallic_roughness) return make_metallic_roughness_params(m);
   return make_phong_weights(m);
 }
 
-std::variant<std::monostate, PhongLobes, MetallicRoughnessLobes> make_lobes(
-    const std::variant<std::monostate, PhongWeights, MetallicRoughnessParams>& params, vec3 n, vec3 wo) {
+BsdfLobes make_lobes(const BsdfParams& params, vec3 n, vec3 wo) {
   if (auto* w = std::get_if<PhongWeights>(&params)) return make_phong_lobes(*w, n, wo);
   if (auto* p = std::get_if<MetallicRoughnessParams>(&params)) return make_metallic_roughness_lobes(*p, n, wo);
   return std::monostate{};

@@ -12,6 +12,11 @@
 
 namespace radiant {
 
+// Each model's direction-independent part, and its lobes seen from one wo. Unlit surfaces
+// (std::monostate) show their color and scatter nothing.
+using BsdfParams = std::variant<std::monostate, PhongWeights, MetallicRoughnessParams>;
+using BsdfLobes = std::variant<std::monostate, PhongLobes, MetallicRoughnessLobes>;
+
 // The part of a material's BSDF that does not depend on directions: worked out once per
 // material when the material is the same at every hit (no textures), once per hit otherwise.
 class BsdfMaterial {
@@ -20,8 +25,7 @@ class BsdfMaterial {
 
  private:
   friend class Bsdf;
-  // Unlit surfaces (std::monostate) show their color and scatter nothing.
-  std::variant<std::monostate, PhongWeights, MetallicRoughnessParams> params_;
+  BsdfParams params_;
 };
 
 class Bsdf {
@@ -40,8 +44,7 @@ class Bsdf {
   bool chooses_lobe() const;
 
  private:
-  // Unlit surfaces (std::monostate) show their color and scatter nothing.
-  std::variant<std::monostate, PhongLobes, MetallicRoughnessLobes> lobes_;
+  BsdfLobes lobes_;
 };
 
 // True when the material has only delta lobes (mirror, smooth glass): light sampling is useless.
