@@ -12,10 +12,14 @@ color3 clamp01(color3 c) { return min(max(c, {0, 0, 0}), {1, 1, 1}); }
 BsdfParams make_params(const SurfaceMaterial& m) {
   if (m.unlit) return std::monostate{};
   if (m.model == MaterialModel::metallic_roughness) return make_metallic_roughness_params(m);
-  return make_phong_weights(m);
+  PhongWeights phong = make_phong_weights(m);
+  bool matte = phong.scatters && phong.p_glossy == 0 && phong.p_mirror == 0 && phong.p_transmission == 0;
+  if (matte) return LambertParams{phong.kd};
+  return phong;
 }
 
 BsdfLobes make_lobes(const BsdfParams& params, vec3 n, vec3 wo) {
+  if (auto* p = std::get_if<LambertParams>(&params)) return make_lambert_lobes(*p, n, wo);
   if (auto* w = std::get_if<PhongWeights>(&params)) return make_phong_lobes(*w, n, wo);
   if (auto* p = std::get_if<MetallicRoughnessParams>(&params)) return make_metallic_roughness_lobes(*p, n, wo);
   return std::monostate{};
@@ -28,18 +32,21 @@ BsdfMaterial::BsdfMaterial(const SurfaceMaterial& m) : params_(make_params(m)) {
 Bsdf::Bsdf(const BsdfMaterial& material, vec3 n, vec3 wo) : lobes_(make_lobes(material.params_, n, wo)) {}
 
 color3 Bsdf::eval(vec3 wi) const {
+  if (auto* l = std::get_if<LambertLobes>(&lobes_)) return eval_world(*l, wi);
   if (auto* l = std::get_if<PhongLobes>(&lobes_)) return eval_local(*l, to_local(l->frame, wi));
   if (auto* l = std::get_if<MetallicRoughnessLobes>(&lobes_)) return eval_local(*l, to_local(l->frame, wi));
   return {0, 0, 0};
 }
 
 float Bsdf::pdf(vec3 wi) const {
+  if (auto* l = std::get_if<LambertLobes>(&lobes_)) return pdf_world(*l, wi);
   if (auto* l = std::get_if<PhongLobes>(&lobes_)) return pdf_local(*l, to_local(l->frame, wi));
   if (auto* l = std::get_if<MetallicRoughnessLobes>(&lobes_)) return pdf_local(*l, to_local(l->frame, wi));
   return 0;
 }
 
 std::optional<BsdfSample> Bsdf::sample(float u_lobe, vec2 u) const {
+  if (auto* l = std::get_if<LambertLobes>(&lobes_)) return sample_world(*l, u);
   if (auto* l = std::get_if<PhongLobes>(&lobes_)) return sample_local(*l, u_lobe, u);
   if (auto* l = std::get_if<MetallicRoughnessLobes>(&lobes_)) return sample_local(*l, u_lobe, u);
   return std::nullopt;

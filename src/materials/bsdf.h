@@ -14,8 +14,8 @@ namespace radiant {
 
 // Each model's direction-independent part, and its lobes seen from one wo. Unlit surfaces
 // (std::monostate) show their color and scatter nothing.
-using BsdfParams = std::variant<std::monostate, PhongWeights, MetallicRoughnessParams>;
-using BsdfLobes = std::variant<std::monostate, PhongLobes, MetallicRoughnessLobes>;
+using BsdfParams = std::variant<std::monostate, LambertParams, PhongWeights, MetallicRoughnessParams>;
+using BsdfLobes = std::variant<std::monostate, LambertLobes, PhongLobes, MetallicRoughnessLobes>;
 
 // The part of a material's BSDF that does not depend on directions: worked out once per
 // material when the material is the same at every hit (no textures), once per hit otherwise.

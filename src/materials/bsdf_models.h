@@ -1,4 +1,4 @@
-// The two BSDF families behind materials/bsdf.h. Each has a part that depends on the material
+// The BSDF families behind materials/bsdf.h. Each has a part that depends on the material
 // only (worked out once per material when it has no textures) and its lobes seen from one
 // outgoing direction: that part plus the local frame and what depends on wo, then evaluated,
 // queried for pdfs and sampled in that frame.
@@ -10,6 +10,21 @@
 #include "materials/surface.h"
 
 namespace radiant {
+
+// Lambert: the matte surface (a Phong material with only kd). The commonest surface gets its
+// own model because it needs no local frame to evaluate, only to sample, and no lobe choice.
+struct LambertParams {
+  color3 albedo;  // the energy-conserving kd
+};
+struct LambertLobes : LambertParams {
+  bool valid = false;
+  vec3 n;  // the normal on wo's side
+};
+LambertLobes make_lambert_lobes(const LambertParams& params, vec3 n, vec3 wo);
+// These take world-space directions.
+color3 eval_world(const LambertLobes& l, vec3 wi);
+float pdf_world(const LambertLobes& l, vec3 wi);
+std::optional<BsdfSample> sample_world(const LambertLobes& l, vec2 u);
 
 // Phong: normalized diffuse + modified-Phong lobe, delta mirror (kr) and delta transmission (kt).
 // The weights and lobe choice depend on the material only.

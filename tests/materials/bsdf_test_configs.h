@@ -61,6 +61,7 @@ inline std::vector<BsdfConfig> non_delta_configs() {
       {"half metal half glass roughness 0.5", metallic_roughness(white, 0.5f, 0.5f, 0.5f)},
       {"phong shininess 10", phong({0, 0, 0}, {0.9f, 0.9f, 0.9f}, 10)},
       {"phong shininess 100", phong({0, 0, 0}, {0.9f, 0.9f, 0.9f}, 100)},
+      {"phong matte (the Lambert model)", phong({0.7f, 0.5f, 0.3f}, {}, 1)},
       {"phong diffuse and specular", phong({0.5f, 0.4f, 0.3f}, {0.3f, 0.3f, 0.3f}, 20)},
   };
 }
