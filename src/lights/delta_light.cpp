@@ -36,7 +36,7 @@ bool sample_delta_light(const LightDesc& light, vec3 point, DeltaLightSample& sa
       vec3 to_light = light.position - point;
       float d = length(to_light);
       if (!(d > 0)) return false;
-      sample.direction = to_light / d;
+      sample.direction = to_light * (1 / d);
       sample.distance = d;
       sample.position = light.position;
       float attenuation = light.kc + light.kl * d + light.kq * d * d;

@@ -21,14 +21,17 @@ void sin_cos_quarter(float theta, float& s, float& c) {
 vec3 sample_cosine_hemisphere(vec2 u) {
   // Concentric disk mapping (Shirley-Chiu), lifted to the hemisphere. The angle within the
   // major axis's wedge is theta = (pi/4) * minor/major; on the b-major wedges phi = pi/2 - theta,
-  // which swaps sine and cosine. One division, no trigonometric call.
+  // which swaps sine and cosine. One division, no trigonometric call, and no branch on the
+  // wedge: which axis is major is a coin flip no branch predictor can learn.
   float a = 2 * u.x - 1, b = 2 * u.y - 1;
   if (a == 0 && b == 0) return {0, 0, 1};
-  bool a_major = std::abs(a) > std::abs(b);
-  float r = a_major ? a : b;
+  float a_major = float(std::abs(a) > std::abs(b));  // 1 or 0: the selects below are exact
+  float b_major = 1 - a_major;
+  float r = a_major * a + b_major * b;
+  float minor = a_major * b + b_major * a;
   float s, c;
-  sin_cos_quarter((pi / 4) * ((a_major ? b : a) / r), s, c);
-  float x = r * (a_major ? c : s), y = r * (a_major ? s : c);
+  sin_cos_quarter((pi / 4) * (minor / r), s, c);
+  float x = r * (a_major * c + b_major * s), y = r * (a_major * s + b_major * c);
   return {x, y, std::sqrt(std::max(0.0f, 1 - r * r))};
 }
 
