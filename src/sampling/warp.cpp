@@ -1,7 +1,9 @@
 #include "sampling/warp.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 namespace radiant {
 
@@ -25,13 +27,16 @@ vec3 sample_cosine_hemisphere(vec2 u) {
   // wedge: which axis is major is a coin flip no branch predictor can learn.
   float a = 2 * u.x - 1, b = 2 * u.y - 1;
   if (a == 0 && b == 0) return {0, 0, 1};
-  float a_major = float(std::abs(a) > std::abs(b));  // 1 or 0: the selects below are exact
-  float b_major = 1 - a_major;
-  float r = a_major * a + b_major * b;
-  float minor = a_major * b + b_major * a;
+  // A bit mask, not a float 0/1 or a ternary: GCC turns both of those back into a branch.
+  uint32_t a_major = 0u - uint32_t(std::abs(a) > std::abs(b));
+  auto pick = [a_major](float if_a_major, float otherwise) {
+    return std::bit_cast<float>((std::bit_cast<uint32_t>(if_a_major) & a_major) |
+                                (std::bit_cast<uint32_t>(otherwise) & ~a_major));
+  };
+  float r = pick(a, b);
   float s, c;
-  sin_cos_quarter((pi / 4) * (minor / r), s, c);
-  float x = r * (a_major * c + b_major * s), y = r * (a_major * s + b_major * c);
+  sin_cos_quarter((pi / 4) * (pick(b, a) / r), s, c);
+  float x = r * pick(c, s), y = r * pick(s, c);
   return {x, y, std::sqrt(std::max(0.0f, 1 - r * r))};
 }
 
