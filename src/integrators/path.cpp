@@ -120,6 +120,7 @@ struct PathVariant {
     vec3 previous_position, previous_normal;
     int depth = 0, max_depth = ctx.max_depth;
     uint64_t* ray_counter = &counts.camera;  // the kind of the next ray traced, counted when traced
+    SurfaceMaterial resolved;                // the material at the current hit, when textured
     for (int transparent_steps = 0; transparent_steps < 256;) {
       ++*ray_counter;
       HitId id = intersect_nearest(*ctx.accel, ray);
@@ -139,7 +140,7 @@ struct PathVariant {
         break;
       }
       SurfaceHit hit = make_surface_hit(*ctx.accel, ray, id);
-      SurfaceMaterial m = material_at<E>(ctx, hit);
+      const SurfaceMaterial& m = material_at<E>(ctx, hit, resolved);
       if (enabled<E>(ctx.effects, effect_alpha) && m.opacity < 1 &&
           // Each see-through step at this vertex gets its own dimension, far above any vertex's block.
           sample_1d(sample, dimension(depth, alpha_choice) + 0x10000u * uint32_t(transparent_steps)) >= m.opacity) {

@@ -50,14 +50,13 @@ struct RenderContext {
 using RadianceFunction = color3 (*)(const RenderContext& ctx, const Ray& ray, const SampleContext& sample,
                                     RayCounts& counts, FirstHit* first_hit);
 
-// The material at a hit: resolved per hit when textures or normal maps are on (both read
-// texels), looked up once otherwise.
+// The material at a hit: resolved into `resolved` when textures or normal maps are on (both
+// read texels), otherwise the one resolved once per render (no copy per hit).
 template <uint32_t E>
-SurfaceMaterial material_at(const RenderContext& ctx, const SurfaceHit& hit) {
+const SurfaceMaterial& material_at(const RenderContext& ctx, const SurfaceHit& hit, SurfaceMaterial& resolved) {
   if (enabled<E>(ctx.effects, effect_textures) || enabled<E>(ctx.effects, effect_normal_maps))
-    return resolve_material(*ctx.scene, ctx.scene->materials[hit.material], hit.attributes);
-  else
-    return ctx.flat_materials[hit.material];
+    return resolved = resolve_material(*ctx.scene, ctx.scene->materials[hit.material], hit.attributes);
+  return ctx.flat_materials[hit.material];
 }
 
 // The BSDF at a hit for material `m` (from material_at), seen from wo with shading normal `n`.

@@ -27,13 +27,14 @@ color3 shadow_transmittance(const RenderContext& ctx, const SurfaceHit& from, ve
     return is_occluded(*ctx.accel, ray) ? color3{0, 0, 0} : color3{1, 1, 1};
   } else {
     color3 transmittance = {1, 1, 1};
+    SurfaceMaterial resolved;
     // Bounded walk through the occluders; each step leaves the surface it stopped at.
     for (int step = 0; step < 64; ++step) {
       counts.shadow++;
       HitId id = intersect_nearest(*ctx.accel, ray);
       if (!id.valid()) return transmittance;
       SurfaceHit hit = make_surface_hit(*ctx.accel, ray, id);
-      transmittance *= occluder_transmittance(material_at<E>(ctx, hit), any_kt);
+      transmittance *= occluder_transmittance(material_at<E>(ctx, hit, resolved), any_kt);
       if (max_component(transmittance) <= 0) return {0, 0, 0};
       ray = infinite ? spawn_ray(hit, direction) : spawn_ray_to(hit, target);
     }

@@ -47,7 +47,8 @@ color3 trace(const RenderContext& ctx, const Ray& ray, int depth, color3 weight,
   HitId id = intersect_nearest(*ctx.accel, ray);
   if (!id.valid()) return background_radiance<E>(ctx, ray.direction);
   SurfaceHit hit = make_surface_hit(*ctx.accel, ray, id);
-  SurfaceMaterial m = material_at<E>(ctx, hit);
+  SurfaceMaterial resolved;
+  const SurfaceMaterial& m = material_at<E>(ctx, hit, resolved);
   HitShading f = make_hit_shading<E>(ctx.effects, hit, m, ray.direction);
   if (first_hit) *first_hit = {bsdf_albedo(m), f.normal, id.t * length(ray.direction)};
 

@@ -18,18 +18,19 @@ BsdfParams make_params(const SurfaceMaterial& m) {
   return phong;
 }
 
-BsdfLobes make_lobes(const BsdfParams& params, vec3 n, vec3 wo) {
-  if (auto* p = std::get_if<LambertParams>(&params)) return make_lambert_lobes(*p, n, wo);
-  if (auto* w = std::get_if<PhongWeights>(&params)) return make_phong_lobes(*w, n, wo);
-  if (auto* p = std::get_if<MetallicRoughnessParams>(&params)) return make_metallic_roughness_lobes(*p, n, wo);
-  return std::monostate{};
-}
-
 }  // namespace
 
 BsdfMaterial::BsdfMaterial(const SurfaceMaterial& m) : params_(make_params(m)) {}
 
-Bsdf::Bsdf(const BsdfMaterial& material, vec3 n, vec3 wo) : lobes_(make_lobes(material.params_, n, wo)) {}
+// The lobes are built in place: returning the whole variant would copy the largest model's
+// lobes for every vertex, whichever model the material has.
+Bsdf::Bsdf(const BsdfMaterial& material, vec3 n, vec3 wo) {
+  const BsdfParams& params = material.params_;
+  if (auto* p = std::get_if<LambertParams>(&params)) lobes_.emplace<LambertLobes>(make_lambert_lobes(*p, n, wo));
+  else if (auto* w = std::get_if<PhongWeights>(&params)) lobes_.emplace<PhongLobes>(make_phong_lobes(*w, n, wo));
+  else if (auto* m = std::get_if<MetallicRoughnessParams>(&params))
+    lobes_.emplace<MetallicRoughnessLobes>(make_metallic_roughness_lobes(*m, n, wo));
+}
 
 color3 Bsdf::eval(vec3 wi) const {
   if (auto* l = std::get_if<LambertLobes>(&lobes_)) return eval_world(*l, wi);
