@@ -59,12 +59,13 @@ void fill_triangle_hit(const SceneAccel& accel, const HitId& id, SurfaceHit& hit
   float largest = max_component(error);
   hit.position_error = {largest, largest, largest};
 
-  // The front side is where the world-space winding is counter-clockwise (glTF): the inverse
-  // transpose of the object normal, flipped for mirroring transforms.
-  vec3 object_normal = cross(e1, e2);
+  // The front side is where the world-space winding is counter-clockwise (glTF). Untransformed,
+  // that is Embree's own Ng, which it computes anyway and documents as pointing out of the
+  // counter-clockwise side (the accel layout test checks it against the cross product below).
+  // Otherwise: the inverse transpose of the object normal, flipped for mirroring transforms.
   hit.geometric_normal =
-      identity ? normalize(object_normal)
-               : normalize(transform_normal(to_object, object_normal)) * accel.instance_orientation[id.instance];
+      identity ? normalize(id.geometric_normal_raw)
+               : normalize(transform_normal(to_object, cross(e1, e2))) * accel.instance_orientation[id.instance];
   hit.shading_normal = hit.geometric_normal;
   if (!mesh.normals.empty()) {
     vec3 n = interpolate(mesh.normals, tri, b0, b1, b2);

@@ -78,3 +78,40 @@ TEST_CASE("accel layout: flat and instanced placements of the same quad report t
   }
   CHECK(hits > 500);  // most rays are aimed inside the quad
 }
+
+TEST_CASE("accel layout: an untransformed triangle's geometric normal points out of its counter-clockwise side") {
+  // Untransformed hits take Embree's own Ng; it must be the unit cross product of the edges
+  // from either side, flat on the top level (placed once) or instanced (placed twice).
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> coordinate(-3, 3);
+  for (int placements : {1, 2}) {
+    for (int trial = 0; trial < 200; ++trial) {
+      SceneDesc scene;
+      MeshDesc mesh;
+      mesh.material = add_diffuse(scene, {0.5f, 0.5f, 0.5f});
+      for (int v = 0; v < 3; ++v) mesh.positions.push_back({coordinate(rng), coordinate(rng), coordinate(rng)});
+      mesh.indices = {0, 1, 2};
+      scene.meshes.push_back(mesh);
+      for (int p = 0; p < placements; ++p) {
+        InstanceDesc instance;
+        instance.mesh = 0;
+        instance.transform = p == 0 ? mat4{} : translation({50, 0, 0});
+        scene.instances.push_back(instance);
+      }
+      auto accel = build_scene_accel(scene);
+      REQUIRE((accel->mesh_scenes[0] == nullptr) == (placements == 1));
+      vec3 e1 = mesh.positions[1] - mesh.positions[0], e2 = mesh.positions[2] - mesh.positions[0];
+      vec3 expected = normalize(cross(e1, e2));
+      if (length(cross(e1, e2)) < 1e-3f) continue;  // nearly degenerate: no clear side
+      vec3 centroid = (mesh.positions[0] + mesh.positions[1] + mesh.positions[2]) * (1.0f / 3);
+      for (float side : {1.0f, -1.0f}) {
+        Ray ray = {centroid + expected * (10 * side), expected * -side};
+        HitId id = intersect_nearest(*accel, ray);
+        REQUIRE(id.valid());
+        SurfaceHit hit = make_surface_hit(*accel, ray, id);
+        CHECK(dot(hit.geometric_normal, expected) > 0.99999f);
+        CHECK(hit.front_face == (side > 0));
+      }
+    }
+  }
+}
