@@ -1,7 +1,7 @@
 // The BSDF families behind materials/bsdf.h. Each has a part that depends on the material
 // only (worked out once per material when it has no textures) and its lobes seen from one
 // outgoing direction: that part plus the local frame and what depends on wo, then evaluated,
-// queried for pdfs and sampled in that frame.
+// queried for pdfs and sampled in that frame (Lambert needs no frame but to sample).
 #pragma once
 
 #include <optional>
