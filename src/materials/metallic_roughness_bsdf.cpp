@@ -128,11 +128,9 @@ MetallicRoughnessParams make_metallic_roughness_params(const SurfaceMaterial& m)
 MetallicRoughnessLobes make_metallic_roughness_lobes(const MetallicRoughnessParams& params, vec3 n, vec3 wo) {
   MetallicRoughnessLobes l;
   static_cast<MetallicRoughnessParams&>(l) = params;
-  bool from_inside = dot(n, wo) < 0;  // only transmissive materials are seen from behind
-  l.frame = make_shading_frame(from_inside ? -n : n);
-  l.wo = to_local(l.frame, wo);
+  FacingFrame facing = facing_frame(n, wo, l.ior);
+  l.frame = facing.frame, l.wo = facing.wo, l.eta = facing.eta;
   if (!(l.wo.z > 1e-7f) || !is_finite(l.wo)) return l;
-  l.eta = from_inside ? 1 / l.ior : l.ior;
   bool colored = max_component(l.base) > 0;
   float cos_o = l.wo.z;
   float specular = selection_weight(l.metal > 0 || l.plastic * l.fade > 0 || l.glass > 0,

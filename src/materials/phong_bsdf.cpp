@@ -58,10 +58,8 @@ PhongWeights make_phong_weights(const SurfaceMaterial& m) {
 PhongLobes make_phong_lobes(const PhongWeights& w, vec3 n, vec3 wo) {
   PhongLobes l;
   static_cast<PhongWeights&>(l) = w;
-  bool from_inside = dot(n, wo) < 0;  // only transmissive materials are seen from behind
-  l.frame = make_shading_frame(from_inside ? -n : n);
-  l.wo = to_local(l.frame, wo);
-  l.eta = from_inside ? 1 / w.ior : w.ior;
+  FacingFrame facing = facing_frame(n, wo, w.ior);
+  l.frame = facing.frame, l.wo = facing.wo, l.eta = facing.eta;
   l.valid = w.scatters && l.wo.z > 1e-7f && is_finite(l.wo);
   return l;
 }

@@ -23,6 +23,23 @@ inline vec3 to_world(const ShadingFrame& frame, vec3 w) {
   return frame.t * w.x + frame.b * w.y + frame.n * w.z;
 }
 
+// A model's lobe frame seen from wo: z is the normal turned to wo's side (only transmissive
+// materials are seen from behind), wo is expressed in it, and eta = n_transmitted / n_incident
+// for a surface of index `ior` authored with its outside along n.
+struct FacingFrame {
+  ShadingFrame frame;
+  vec3 wo;
+  float eta;
+};
+inline FacingFrame facing_frame(vec3 n, vec3 wo, float ior) {
+  bool from_inside = dot(n, wo) < 0;
+  FacingFrame f;
+  f.frame = make_shading_frame(from_inside ? -n : n);
+  f.wo = to_local(f.frame, wo);
+  f.eta = from_inside ? 1 / ior : ior;
+  return f;
+}
+
 // Mirror of a local direction about the +z normal.
 inline vec3 reflect_local(vec3 w) { return {-w.x, -w.y, w.z}; }
 
