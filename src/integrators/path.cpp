@@ -173,11 +173,14 @@ struct PathVariant {
       // direct light of the previous vertex.
       if (depth >= max_depth) break;
       Bsdf bsdf = bsdf_at<E>(ctx, hit, m, bsdf_normal(m, f), f.wo);
-      if (LightSampling && !is_pure_delta(m))
-        radiance += throughput * sample_one_light<E>(ctx, hit, bsdf, f, sample, depth, counts);
-
+      // The next direction is drawn before the light sample, which does not depend on it: its
+      // chain of dependent arithmetic (sampler, warp) then overlaps the shadow ray's traversal
+      // in the CPU instead of stalling the next ray. Dimensions are fixed, so the order changes
+      // no value.
       float u_lobe = bsdf.chooses_lobe() ? sample_1d(sample, dimension(depth, lobe_choice)) : 0.5f;
       auto scattered = bsdf.sample(u_lobe, sample_2d(sample, dimension(depth, bsdf_direction)));
+      if (LightSampling && !is_pure_delta(m))
+        radiance += throughput * sample_one_light<E>(ctx, hit, bsdf, f, sample, depth, counts);
       if (!scattered || is_black(scattered->weight)) break;
       // Without indirect light a diffuse or glossy bounce only completes this vertex's direct light.
       if (!scattered->delta && !enabled<E>(ctx.effects, effect_indirect)) max_depth = std::min(max_depth, depth + 1);
