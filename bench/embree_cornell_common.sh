@@ -1,0 +1,38 @@
+# Sourced by the embree_cornell*.sh benchmarks: the tutorial's Cornell box as radiant loads it,
+# and one command per renderer. Needs $work (a scratch folder) and $threads.
+#
+# Same geometry and albedos (the tutorial's OBJ/MTL, included unchanged by a .scene), same
+# camera, same point light, same path length for both.
+command -v pathtracer >/dev/null || { echo "install embree-tools for Embree's pathtracer" >&2; exit 1; }
+embree_models=/usr/share/doc/embree3/models
+cp "$embree_models/cornell_box.obj" "$embree_models/cornell_box.mtl" "$work/"
+# The tutorial's light: -pointlight 213 300 227 100000 100000 100000, radiance I/d^2 in its units.
+# A .scene light color C (0-255 scale) is intensity pi*C/255 (docs/scene-format.md), so
+# C = 100000 * 255 / pi; attenuation 0 0 1 is the inverse square law.
+cat > "$work/cornell.scene" <<SCENE
+scene Embree tutorial Cornell box
+@camera
+position 278 273 -800
+look-at 278 273 0
+up 0 1 0
+fov 37
+@light point
+color 8116902.1 8116902.1 8116902.1
+position 213 300 227
+attenuation 0 0 1
+@mesh
+file cornell_box.obj
+SCENE
+
+# embree_render SIZE SPP OUT.ppm [environment for the process...]
+embree_render() {
+  env "${@:4}" pathtracer -c "$embree_models/cornell_box.ecs" --threads "$threads" --size "$1" "$1" --spp "$2" \
+    --max-path-length 8 -o "$3" >/dev/null 2>&1
+}
+# radiant_render SIZE SPP OUT [environment for the process...]
+radiant_render() {
+  env "${@:4}" build/radiant render "$work/cornell.scene" -o "$3" --width "$1" --height "$1" --spp "$2" --max-depth 8 \
+    --mode path --threads "$threads" --quiet
+}
+now() { date +%s.%N; }
+median() { printf '%s\n' "$@" | sort -g | awk '{a[NR] = $1} END {print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2}'; }
