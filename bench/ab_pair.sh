@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# Two radiant builds against each other on Embree's tutorial Cornell box, for changes too small
+# for sequential timing on this shared, noisy machine: each round runs both at once, one thread
+# each on its own core, so both see the same background load; which one starts first alternates.
+# Prints each round's CPU seconds (A/B) and the median ratio B/A. An A/A run shows the noise:
+# rounds spread about ±5%, medians of 10 rounds within about 1%.
+#
+# Usage: bench/ab_pair.sh BINARY_A BINARY_B [--rounds 10] [--size 256] [--spp 32]
+# Needs: embree-tools (the tutorial's scene).
+set -euo pipefail
+(($# >= 2)) || { echo "usage: $0 BINARY_A BINARY_B [--rounds N] [--size N] [--spp N]" >&2; exit 2; }
+binary_a=$(realpath "$1") binary_b=$(realpath "$2")
+shift 2
+cd "$(dirname "$0")/.."
+rounds=10 size=256 spp=32 threads=1
+while (($#)); do
+  case $1 in
+    --rounds) rounds=$2; shift 2 ;;
+    --size) size=$2; shift 2 ;;
+    --spp) spp=$2; shift 2 ;;
+    *) echo "unknown option $1" >&2; exit 2 ;;
+  esac
+done
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+source bench/embree_cornell_common.sh
+
+# cpu_seconds BINARY OUT_FILE: the render's user CPU time, written to OUT_FILE.
+cpu_seconds() {
+  local TIMEFORMAT=%U
+  { time "$1" render "$work/cornell.scene" -o "$2.png" --width "$size" --height "$size" --spp "$spp" \
+      --max-depth 8 --mode path --threads "$threads" --quiet >/dev/null; } 2>"$2"
+}
+ratios=()
+for ((i = 0; i < rounds; i++)); do
+  if ((i % 2)); then
+    cpu_seconds "$binary_b" "$work/b" & cpu_seconds "$binary_a" "$work/a" & wait
+  else
+    cpu_seconds "$binary_a" "$work/a" & cpu_seconds "$binary_b" "$work/b" & wait
+  fi
+  a=$(<"$work/a") b=$(<"$work/b")
+  echo "round $((i + 1)): A $a s, B $b s"
+  ratios+=("$(awk -v a="$a" -v b="$b" 'BEGIN {print b / a}')")
+done
+printf 'median CPU time ratio B/A over %d rounds: %.3f\n' "$rounds" "$(median "${ratios[@]}")"
