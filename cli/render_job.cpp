@@ -28,6 +28,7 @@ void write_text_file_atomically(const std::string& path, const std::string& text
 void run_render_job(const std::string& scene_path, const PreparedScene& prepared, const RenderJob& job, PhaseTimes& times) {
   using Clock = std::chrono::steady_clock;
   times.build = prepared.build_seconds;
+  prepare_image_writer(job.output);
   RenderResult result = render_prepared(prepared, job.options);
   times.render = result.stats.render_seconds;
   const ResolvedSettings& s = result.settings;

@@ -1,7 +1,7 @@
 # Every dependency is a Debian 12 package with a CMake config (scripts/setup.sh installs them).
 find_package(embree 3 REQUIRED)
 find_package(OpenImageIO REQUIRED)
-find_package(OpenEXR REQUIRED)
+find_package(PNG REQUIRED)
 find_package(TinyGLTF REQUIRED)
 find_package(tinyobjloader REQUIRED)
 find_package(TBB REQUIRED)

@@ -1,8 +1,7 @@
 #include "obj/obj_materials.h"
 
-#include <OpenImageIO/imageio.h>
-
 #include "file_access.h"
+#include "image/image_io.h"
 
 namespace radiant {
 
@@ -13,10 +12,11 @@ int load_obj_texture(ObjTextureLoader& textures, const std::string& name, const 
   std::string key = path.string() + (option.clamp ? "#clamp" : "");
   auto found = textures.textures_by_path.find(key);
   if (found != textures.textures_by_path.end()) return found->second;
-  auto input = OIIO::ImageInput::open(path.string());
+  std::string error;
+  auto input = open_image_file(path.string(), error);
   if (!input) throw LoadError(where + ": cannot read image '" + name + "'");
-  const OIIO::ImageSpec& spec = input->spec();
-  int channels = std::min(spec.nchannels, 4);
+  const ImageHeader& spec = input->header();
+  int channels = std::min(spec.channels, 4);
   size_t bytes = size_t(std::max(spec.width, 0)) * size_t(std::max(spec.height, 0)) * size_t(std::max(channels, 0));
   if (bytes == 0 || textures.bytes_loaded + bytes > textures.options.max_memory_bytes)
     throw LoadError(where + ": image '" + name + "' (" + std::to_string(spec.width) + "x" +
@@ -25,7 +25,7 @@ int load_obj_texture(ObjTextureLoader& textures, const std::string& name, const 
   image.name = path.string();
   image.width = spec.width, image.height = spec.height, image.channels = channels;
   image.texels8.resize(bytes);
-  if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, image.texels8.data()))
+  if (!input->read(channels, PixelType::uint8, image.texels8.data()))
     throw LoadError(where + ": cannot decode image '" + name + "'");
   textures.bytes_loaded += bytes;
   TextureDesc texture;

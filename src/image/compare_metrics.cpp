@@ -1,21 +1,14 @@
 // Plain error metrics: OpenImageIO's compare for RMSE, PSNR, max/mean error and the counts over
 // thresholds; here only what it lacks (the mean relative error, fractions, the verdict).
-#include <OpenImageIO/imagebufalgo.h>
-
 #include <cmath>
 #include <limits>
 
 #include "image/compare.h"
+#include "image/image_io.h"
 
 namespace radiant {
 
 namespace {
-
-// An ImageBuf over the compared values, without copying them (compare only reads).
-OIIO::ImageBuf wrap(const CompareImage& image) {
-  OIIO::ImageSpec spec(image.width, image.height, image.channels(), OIIO::TypeDesc::FLOAT);
-  return OIIO::ImageBuf(spec, const_cast<float*>(image.values.data()));
-}
 
 // Σ|a−b| / Σ(|a|+|b|)/2 over finite pairs: black pixels do not dilute it, and a uniform scale by
 // s reads |s−1|/((1+s)/2) whatever the image shows.
@@ -59,26 +52,22 @@ const char* verdict_name(Verdict verdict) {
 
 CompareMetrics compute_metrics(const CompareImage& a, const CompareImage& b,
                                const CompareThresholds& thresholds) {
-  OIIO::ImageBuf buffer_a = wrap(a), buffer_b = wrap(b);
-  OIIO::ImageBufAlgo::CompareResults result = OIIO::ImageBufAlgo::compare(
-      buffer_a, buffer_b, float(thresholds.fail), float(thresholds.warn));
-  // result.error is set whenever pixels fail; only an ImageBuf error means the comparison broke.
-  if (buffer_a.has_error() || buffer_b.has_error())
-    throw CompareError("cannot compare " + a.path + " and " + b.path + ": " +
-                       buffer_a.geterror() + buffer_b.geterror());
+  PixelDifference result = image_io_module().compare(a.values.data(), b.values.data(), a.width, a.height,
+                                                     a.channels(), float(thresholds.fail), float(thresholds.warn));
+  if (!result.error.empty()) throw CompareError("cannot compare " + a.path + " and " + b.path + ": " + result.error);
   CompareMetrics metrics;
   metrics.pixels = a.pixel_count();
   metrics.channels = a.channels();
   metrics.rmse = result.rms_error;
-  metrics.psnr = result.rms_error > 0 ? result.PSNR : std::numeric_limits<double>::infinity();
-  metrics.max_error = result.maxerror;
-  metrics.max_x = result.maxx;
-  metrics.max_y = result.maxy;
-  metrics.max_channel = result.maxc;
-  metrics.mean_error = result.meanerror;
+  metrics.psnr = result.rms_error > 0 ? result.psnr : std::numeric_limits<double>::infinity();
+  metrics.max_error = result.max_error;
+  metrics.max_x = result.max_x;
+  metrics.max_y = result.max_y;
+  metrics.max_channel = result.max_channel;
+  metrics.mean_error = result.mean_error;
   metrics.mean_relative_error = mean_relative_error(a, b);
-  metrics.fail_pixels = result.nfail + nan_only_pixels(a, b, thresholds.fail);
-  metrics.warn_pixels = result.nwarn + nan_only_pixels(a, b, thresholds.warn);
+  metrics.fail_pixels = result.fail_pixels + nan_only_pixels(a, b, thresholds.fail);
+  metrics.warn_pixels = result.warn_pixels + nan_only_pixels(a, b, thresholds.warn);
   metrics.fail_fraction = double(metrics.fail_pixels) / double(metrics.pixels);
   metrics.warn_fraction = double(metrics.warn_pixels) / double(metrics.pixels);
   return metrics;

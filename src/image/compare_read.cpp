@@ -1,9 +1,8 @@
 // Reading the channels that take part in a comparison: color (R,G,B by name), alpha, variance.
-#include <OpenImageIO/imagebuf.h>
-
 #include <algorithm>
 
 #include "image/compare.h"
+#include "image/image_io.h"
 
 namespace radiant {
 
@@ -14,65 +13,58 @@ constexpr size_t max_values = size_t(1) << 30;
 
 // Every channel of subimage 0 as float, with the header it came from.
 struct FileImage {
-  OIIO::ImageSpec spec;
-  std::vector<float> pixels;  // spec.width*spec.height*spec.nchannels
+  ImageHeader header;
+  std::vector<float> pixels;  // header.width * header.height * header.channels
 };
 
-// OIIO errors can span lines; the first one is the message.
-std::string first_line(const std::string& text) {
-  std::string line = text.substr(0, text.find('\n'));
-  return line.empty() ? "unknown error" : line;
-}
-
 FileImage read_file_image(const std::string& path) {
-  OIIO::ImageBuf buffer(path);
-  if (!buffer.init_spec(path, 0, 0))
-    throw CompareError(path + ": cannot read image: " + first_line(buffer.geterror()));
+  std::string error;
+  auto source = open_image_file(path, error);
+  if (!source) throw CompareError(path + ": cannot read image: " + error);
   FileImage image;
-  image.spec = buffer.spec();
-  size_t count = size_t(image.spec.width) * image.spec.height * image.spec.nchannels;
-  if (image.spec.depth > 1 || image.spec.deep)
+  image.header = source->header();
+  size_t count = size_t(std::max(image.header.width, 0)) * size_t(std::max(image.header.height, 0)) *
+                 size_t(std::max(image.header.channels, 0));
+  if (image.header.depth > 1 || image.header.deep)
     throw CompareError(path + ": volume and deep images cannot be compared");
   if (count == 0 || count > max_values)
-    throw CompareError(path + ": image size " + std::to_string(image.spec.width) + "x" +
-                       std::to_string(image.spec.height) + "x" +
-                       std::to_string(image.spec.nchannels) + " is empty or too large");
-  if (!buffer.read(0, 0, true, OIIO::TypeDesc::FLOAT))
-    throw CompareError(path + ": cannot read image: " + first_line(buffer.geterror()));
+    throw CompareError(path + ": image size " + std::to_string(image.header.width) + "x" +
+                       std::to_string(image.header.height) + "x" +
+                       std::to_string(image.header.channels) + " is empty or too large");
   image.pixels.resize(count);
-  if (!buffer.get_pixels(buffer.roi(), OIIO::TypeDesc::FLOAT, image.pixels.data()))
-    throw CompareError(path + ": cannot read pixels: " + first_line(buffer.geterror()));
+  if (!source->read(image.header.channels, PixelType::float32, image.pixels.data()))
+    throw CompareError(path + ": cannot read pixels: " + source->error());
   return image;
 }
 
-int channel_index(const OIIO::ImageSpec& spec, const std::string& name) {
-  auto& names = spec.channelnames;
+int channel_index(const ImageHeader& header, const std::string& name) {
+  auto& names = header.channel_names;
   auto found = std::find(names.begin(), names.end(), name);
   return found == names.end() ? -1 : int(found - names.begin());
 }
 
 // R,G,B by name; else the first three channels; else the non-alpha channels of a gray image.
-std::vector<int> color_channels(const OIIO::ImageSpec& spec) {
-  std::vector<int> rgb = {channel_index(spec, "R"), channel_index(spec, "G"), channel_index(spec, "B")};
+std::vector<int> color_channels(const ImageHeader& header) {
+  std::vector<int> rgb = {channel_index(header, "R"), channel_index(header, "G"), channel_index(header, "B")};
   if (std::count(rgb.begin(), rgb.end(), -1) == 0) return rgb;
-  if (spec.nchannels >= 3) return {0, 1, 2};
+  if (header.channels >= 3) return {0, 1, 2};
   std::vector<int> gray;
-  for (int c = 0; c < spec.nchannels; ++c)
-    if (c != spec.alpha_channel) gray.push_back(c);
+  for (int c = 0; c < header.channels; ++c)
+    if (c != header.alpha_channel) gray.push_back(c);
   return gray;
 }
 
-int alpha_channel(const OIIO::ImageSpec& spec) {
-  int named = channel_index(spec, "A");
-  return named >= 0 ? named : spec.alpha_channel;
+int alpha_channel(const ImageHeader& header) {
+  int named = channel_index(header, "A");
+  return named >= 0 ? named : header.alpha_channel;
 }
 
 // Channel indices of "variance.<name>" for each color channel of `image`, or empty if any lacks.
-std::vector<int> variance_channels(const OIIO::ImageSpec& spec, const CompareImage& image,
+std::vector<int> variance_channels(const ImageHeader& header, const CompareImage& image,
                                    int color_count) {
   std::vector<int> found;
   for (int c = 0; c < color_count; ++c) {
-    int index = channel_index(spec, "variance." + image.channel_names[c]);
+    int index = channel_index(header, "variance." + image.channel_names[c]);
     if (index < 0) return {};
     found.push_back(index);
   }
@@ -83,7 +75,7 @@ std::vector<int> variance_channels(const OIIO::ImageSpec& spec, const CompareIma
 // the compared channels past source.size() (alpha) get zero.
 void copy_channels(const FileImage& file, const std::vector<int>& source, float scale,
                    const CompareImage& image, std::vector<float>& out) {
-  int channels = image.channels(), file_channels = file.spec.nchannels;
+  int channels = image.channels(), file_channels = file.header.channels;
   out.assign(image.pixel_count() * channels, 0.0f);
   for (size_t p = 0; p < image.pixel_count(); ++p)
     for (size_t c = 0; c < source.size(); ++c)
@@ -110,19 +102,19 @@ void drop_alpha(CompareImage& image) {
 
 CompareImage read_compare_image(const std::string& path) {
   FileImage file = read_file_image(path);
-  std::vector<int> source = color_channels(file.spec);
+  std::vector<int> source = color_channels(file.header);
   int color_count = int(source.size());
-  int alpha = alpha_channel(file.spec);
+  int alpha = alpha_channel(file.header);
   CompareImage image;
   image.has_alpha = alpha >= 0 && std::find(source.begin(), source.end(), alpha) == source.end();
   if (image.has_alpha) source.push_back(alpha);
   image.path = path;
-  image.width = file.spec.width;
-  image.height = file.spec.height;
-  image.color_space = file.spec.get_string_attribute("oiio:ColorSpace");
-  for (int c : source) image.channel_names.push_back(file.spec.channelnames[c]);
+  image.width = file.header.width;
+  image.height = file.header.height;
+  image.color_space = file.header.color_space;
+  for (int c : source) image.channel_names.push_back(file.header.channel_names[c]);
   copy_channels(file, source, 1.0f, image, image.values);
-  std::vector<int> variance = variance_channels(file.spec, image, color_count);
+  std::vector<int> variance = variance_channels(file.header, image, color_count);
   if (!variance.empty()) copy_channels(file, variance, 1.0f, image, image.variance);
   return image;
 }
@@ -130,16 +122,16 @@ CompareImage read_compare_image(const std::string& path) {
 std::vector<float> read_variance_image(const std::string& path, const CompareImage& image,
                                        int samples_per_pixel) {
   FileImage file = read_file_image(path);
-  if (file.spec.width != image.width || file.spec.height != image.height)
-    throw CompareError(path + ": variance image is " + std::to_string(file.spec.width) + "x" +
-                       std::to_string(file.spec.height) + " but " + image.path + " is " +
+  if (file.header.width != image.width || file.header.height != image.height)
+    throw CompareError(path + ": variance image is " + std::to_string(file.header.width) + "x" +
+                       std::to_string(file.header.height) + " but " + image.path + " is " +
                        std::to_string(image.width) + "x" + std::to_string(image.height));
   int color_count = image.color_channels();
-  std::vector<int> source = variance_channels(file.spec, image, color_count);
-  if (source.empty()) source = color_channels(file.spec);
+  std::vector<int> source = variance_channels(file.header, image, color_count);
+  if (source.empty()) source = color_channels(file.header);
   if (int(source.size()) != color_count) {
-    if (file.spec.nchannels != 1)
-      throw CompareError(path + ": variance image has " + std::to_string(file.spec.nchannels) +
+    if (file.header.channels != 1)
+      throw CompareError(path + ": variance image has " + std::to_string(file.header.channels) +
                          " channels; expected 1 or " + std::to_string(color_count));
     source.assign(color_count, 0);
   }

@@ -1,7 +1,6 @@
 // False-color difference images, written atomically.
 #include "image/false_color.h"
 
-#include <OpenImageIO/imageio.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -9,6 +8,7 @@
 #include <filesystem>
 
 #include "image/compare.h"
+#include "image/image_io.h"
 
 namespace radiant {
 
@@ -32,19 +32,16 @@ std::vector<float> colorize(const std::vector<float>& magnitude, float top) {
   return rgb;
 }
 
-// Writes `rgb` to `path` with OIIO; returns an error message or "".
-std::string write_rgb(const fs::path& path, const std::string& format_of,
-                      const std::vector<float>& rgb, int width, int height) {
-  auto output = OIIO::ImageOutput::create(format_of);
-  if (!output) return "no image format for this extension";
-  bool linear_float = std::string(output->format_name()) == "openexr";
-  OIIO::ImageSpec spec(width, height, 3, linear_float ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::UINT8);
-  if (!output->open(path.string(), spec) ||
-      !output->write_image(OIIO::TypeDesc::FLOAT, rgb.data()) || !output->close()) {
-    std::string message = output->geterror();
-    return message.empty() ? "write failed" : message.substr(0, message.find('\n'));
-  }
-  return "";
+// Writes `rgb` to `file` in the format `path`'s extension names (half float for EXR, else
+// 8 bits); returns an error message or "".
+std::string write_rgb(const fs::path& file, const std::string& path, const std::vector<float>& rgb, int width,
+                      int height) {
+  ImageWriteSpec spec;
+  spec.width = width;
+  spec.height = height;
+  spec.channel_names = {"R", "G", "B"};
+  spec.type = lowercase_extension(path) == ".exr" ? PixelType::half : PixelType::uint8;
+  return write_image_file(file.string(), spec, rgb.data());
 }
 
 }  // namespace
@@ -52,7 +49,7 @@ std::string write_rgb(const fs::path& path, const std::string& format_of,
 void write_false_color(const std::string& path, const std::vector<float>& magnitude, int width,
                        int height, float top) {
   fs::path target(path);
-  // Same folder and extension, so the rename is atomic and OIIO picks the format by extension.
+  // Same folder and extension, so the rename is atomic and the extension still names the format.
   std::string name = ".";
   name += target.stem().string();
   name += ".tmp-" + std::to_string(getpid());

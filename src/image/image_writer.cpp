@@ -1,6 +1,5 @@
 #include "image/image_writer.h"
 
-#include <OpenImageIO/imageio.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -8,51 +7,42 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "image/image_io.h"
+
 namespace radiant {
 
 namespace fs = std::filesystem;
 
 namespace {
 
-std::string lowercase_extension(const std::string& path) {
-  std::string ext = fs::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext;
-}
-
 std::string temporary_path_beside(const std::string& path) {
   fs::path p(path);
-  // Keep the extension: OpenImageIO picks the format from it.
+  // Keep the extension: it names the format.
   std::string name = "." + p.stem().string() + ".tmp-" + std::to_string(getpid()) + p.extension().string();
   return (p.parent_path() / name).string();
 }
 
-void write_with_oiio(const std::string& file, const OutputImage& image, bool as_float) {
-  auto out = OIIO::ImageOutput::create(file);
-  if (!out) throw std::runtime_error(OIIO::geterror());
+void write_pixels(const std::string& file, const OutputImage& image, bool as_float) {
+  ImageWriteSpec spec;
+  spec.width = image.width;
+  spec.height = image.height;
   int channels = as_float ? int(image.channels.size()) : 3;
-  OIIO::ImageSpec spec(image.width, image.height, channels, as_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
-  spec.channelnames.assign(image.channels.begin(), image.channels.begin() + channels);
-  // No time stamp: the same render must give the same bytes.
-  spec.attribute("DateTime", "");
-  if (as_float) {
-    spec.attribute("oiio:ColorSpace", "Linear");
-    spec.attribute("compression", "zip");
-  } else {
-    spec.attribute("oiio:ColorSpace", "sRGB");
-  }
+  spec.channel_names.assign(image.channels.begin(), image.channels.begin() + channels);
+  spec.type = as_float ? PixelType::float32 : PixelType::uint8;
+  spec.color_space = as_float ? "Linear" : "sRGB";
+  spec.zip = as_float;
   std::vector<float> data;
   const float* source = image.pixels.data();
   if (!as_float) {
-    // sRGB-encode and clamp the color channels; OpenImageIO quantizes to 8 bits.
+    // sRGB-encode and clamp the color channels; the writer quantizes to 8 bits.
     size_t stride = image.channels.size();
     data.resize(size_t(image.width) * image.height * 3);
     for (size_t i = 0; i < size_t(image.width) * image.height; ++i)
       for (int c = 0; c < 3; ++c) data[i * 3 + c] = linear_to_srgb(std::clamp(image.pixels[i * stride + c], 0.0f, 1.0f));
     source = data.data();
   }
-  if (!out->open(file, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, source) || !out->close())
-    throw std::runtime_error(out->geterror());
+  std::string error = write_image_file(file, spec, source);
+  if (!error.empty()) throw std::runtime_error(error);
 }
 
 }  // namespace
@@ -66,10 +56,14 @@ float linear_to_srgb(float v) {
   return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
 }
 
+void prepare_image_writer(const std::string& path) {
+  if (lowercase_extension(path) != ".png") image_io_module();
+}
+
 void write_image(const std::string& path, const OutputImage& image) {
   std::string temporary = temporary_path_beside(path);
   try {
-    write_with_oiio(temporary, image, is_float_format(path));
+    write_pixels(temporary, image, is_float_format(path));
     fs::rename(temporary, path);
   } catch (const std::exception& e) {
     std::error_code ignored;

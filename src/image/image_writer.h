@@ -1,4 +1,4 @@
-// Writing renders through OpenImageIO: 8-bit sRGB for PNG/JPEG/..., linear float for EXR/HDR.
+// Writing renders: 8-bit sRGB for PNG/JPEG/..., linear float for EXR/HDR.
 #pragma once
 
 #include <string>
@@ -18,8 +18,13 @@ bool is_float_format(const std::string& path);
 
 // Writes atomically: a temporary file beside `path`, then a rename, so an existing file is never
 // left half-written. Formats without float storage get the first three channels, sRGB-encoded
-// and clamped to 8 bits. Throws std::runtime_error with OpenImageIO's reason.
+// and clamped to 8 bits. Throws std::runtime_error with the writer's reason.
 void write_image(const std::string& path, const OutputImage& image);
+
+// Loads now whatever writing `path` will need (the OpenImageIO module for any format but PNG),
+// so that a missing module fails before a long render rather than after it. Throws
+// std::runtime_error.
+void prepare_image_writer(const std::string& path);
 
 // Linear to sRGB transfer function (IEC 61966-2-1), for values in [0, 1].
 float linear_to_srgb(float linear);

@@ -1,11 +1,10 @@
 #include "lights/light_table.h"
 
-#include <OpenImageIO/imageio.h>
-
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
+#include "image/image_io.h"
 #include "scene/scene_bounds.h"
 
 namespace radiant {
@@ -72,14 +71,16 @@ void add_emissive_spheres(const SceneDesc& scene, LightTable& table) {
 }
 
 EnvironmentMap load_environment_map(const std::string& path) {
-  auto input = OIIO::ImageInput::open(path);
-  if (!input) throw std::runtime_error(path + ": cannot read environment map: " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = input->spec();
-  if (spec.width <= 0 || spec.height <= 0 || size_t(spec.width) * spec.height > (size_t(1) << 28))
+  std::string error;
+  auto input = open_image_file(path, error);
+  if (!input) throw std::runtime_error(path + ": cannot read environment map: " + error);
+  ImageHeader spec = input->header();
+  if (spec.width <= 0 || spec.height <= 0 || spec.channels <= 0 ||
+      size_t(spec.width) * spec.height > (size_t(1) << 28))
     throw std::runtime_error(path + ": environment map has an unusable size");
-  std::vector<float> pixels(size_t(spec.width) * spec.height * spec.nchannels);
-  if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()))
-    throw std::runtime_error(path + ": cannot read environment map: " + input->geterror());
+  std::vector<float> pixels(size_t(spec.width) * spec.height * spec.channels);
+  if (!input->read(spec.channels, PixelType::float32, pixels.data()))
+    throw std::runtime_error(path + ": cannot read environment map: " + input->error());
   EnvironmentMap map;
   map.width = spec.width;
   map.height = spec.height;
@@ -89,8 +90,8 @@ EnvironmentMap load_environment_map(const std::string& path) {
     float sin_theta = std::sin(pi * (float(y) + 0.5f) / float(map.height));
     for (int x = 0; x < map.width; ++x) {
       size_t i = size_t(y) * map.width + x;
-      const float* p = &pixels[i * spec.nchannels];
-      color3 c = spec.nchannels >= 3 ? color3{p[0], p[1], p[2]} : color3{p[0], p[0], p[0]};
+      const float* p = &pixels[i * spec.channels];
+      color3 c = spec.channels >= 3 ? color3{p[0], p[1], p[2]} : color3{p[0], p[0], p[0]};
       if (!is_finite(c)) c = {0, 0, 0};
       map.texels[i] = max(c, color3{0, 0, 0});
       weights[i] = luminance(map.texels[i]) * sin_theta;

@@ -1,7 +1,5 @@
-// Small images written with OpenImageIO for the comparison tests.
+// Small images for the comparison tests.
 #pragma once
-
-#include <OpenImageIO/imageio.h>
 
 #include <filesystem>
 #include <random>
@@ -9,25 +7,9 @@
 #include <string>
 #include <vector>
 
-namespace radiant::test {
+#include "support/test_support.h"
 
-// Writes `values` (width*height*names.size(), row-major) with those channel names; EXR as float.
-inline void write_test_image(const std::filesystem::path& path, int width, int height,
-                             const std::vector<std::string>& names,
-                             const std::vector<float>& values) {
-  auto output = OIIO::ImageOutput::create(path.string());
-  if (!output) throw std::runtime_error("no writer for " + path.string());
-  bool is_exr = path.extension() == ".exr";
-  OIIO::ImageSpec spec(width, height, int(names.size()),
-                       is_exr ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
-  spec.channelnames = names;
-  spec.alpha_channel = -1;
-  for (size_t c = 0; c < names.size(); ++c)
-    if (names[c] == "A") spec.alpha_channel = int(c);
-  if (!output->open(path.string(), spec) ||
-      !output->write_image(OIIO::TypeDesc::FLOAT, values.data()) || !output->close())
-    throw std::runtime_error("cannot write " + path.string() + ": " + output->geterror());
-}
+namespace radiant::test {
 
 inline void write_rgb(const std::filesystem::path& path, int width, int height,
                       const std::vector<float>& values) {

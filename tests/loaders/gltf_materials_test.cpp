@@ -1,7 +1,6 @@
 // glTF materials, textures and samplers to MaterialDesc.
 #include <doctest/doctest.h>
 
-#include <OpenImageIO/imageio.h>
 
 #include "loaders/gltf_builder.h"
 #include "load_scene.h"
@@ -11,14 +10,7 @@ using namespace radiant;
 using namespace radiant::test;
 
 // A 2x1 RGB PNG: red then blue.
-static void write_png(const std::filesystem::path& path) {
-  const unsigned char texels[6] = {255, 0, 0, 0, 0, 255};
-  auto out = OIIO::ImageOutput::create(path.string());
-  REQUIRE(out);
-  out->open(path.string(), OIIO::ImageSpec(2, 1, 3, OIIO::TypeDesc::UINT8));
-  out->write_image(OIIO::TypeDesc::UINT8, texels);
-  out->close();
-}
+static void write_png(const std::filesystem::path& path) { write_texel_bytes(path, 2, 1, 3, {255, 0, 0, 0, 0, 255}); }
 
 TEST_CASE("gltf materials: factors, textures, samplers and the supported extensions") {
   ScratchDir dir("gltf-materials");

@@ -2,7 +2,6 @@
 // a hang, or another exception type. Fixed seed, a few hundred cases each.
 #include <doctest/doctest.h>
 
-#include <OpenImageIO/imageio.h>
 
 #include <cstdint>
 
@@ -26,12 +25,8 @@ struct Random {
 };
 
 std::string png_bytes(const ScratchDir& dir) {
-  const unsigned char texels[12] = {255, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255};
-  auto path = dir.file("t.png").string();
-  auto out = OIIO::ImageOutput::create(path);
-  out->open(path, OIIO::ImageSpec(2, 2, 3, OIIO::TypeDesc::UINT8));
-  out->write_image(OIIO::TypeDesc::UINT8, texels);
-  out->close();
+  auto path = dir.file("t.png");
+  write_texel_bytes(path, 2, 2, 3, {255, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255});
   return read_bytes(path);
 }
 

@@ -1,7 +1,6 @@
 // OBJ/MTL to SceneDesc: one mesh per material, Phong mapping, v flipped to the glTF convention.
 #include <doctest/doctest.h>
 
-#include <OpenImageIO/imageio.h>
 
 #include "load_scene.h"
 #include "obj/obj_loader.h"
@@ -23,14 +22,7 @@ static const char* materials_mtl =
     "newmtl glass\nKd 0.1 0.2 0.3\nKs 0.5 0.5 0.5\nNs 64\nNi 1.45\nd 0.25\nillum 7\n"
     "newmtl mirror\nKd 0 0 0\nKs 0.9 0.8 0.7\nillum 3\nKe 2 2 2\nmap_Kd tex.png\nmap_bump tex.png\nmap_d tex.png\n";
 
-static void write_texture(const std::filesystem::path& path) {
-  const unsigned char texels[4] = {10, 20, 30, 40};
-  auto out = OIIO::ImageOutput::create(path.string());
-  REQUIRE(out);
-  out->open(path.string(), OIIO::ImageSpec(2, 2, 1, OIIO::TypeDesc::UINT8));
-  out->write_image(OIIO::TypeDesc::UINT8, texels);
-  out->close();
-}
+static void write_texture(const std::filesystem::path& path) { write_texel_bytes(path, 2, 2, 1, {10, 20, 30, 40}); }
 
 TEST_CASE("obj: polygons are triangulated into one mesh per material with the MTL mapping") {
   ScratchDir dir("obj-materials");

@@ -1,8 +1,6 @@
 // What the output files carry: AOV channels, and image-based environment light.
 #include <doctest/doctest.h>
 
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
 #include <cmath>
 
@@ -29,11 +27,7 @@ fs::path write_environment(const ScratchDir& dir, int width, float sky, float gr
     for (int x = 0; x < width; ++x)
       for (int c = 0; c < 3; ++c) pixels[(size_t(y) * width + x) * 3 + c] = y < height / 2 ? sky : ground;
   fs::path file = dir.file("sky.exr");
-  auto out = OIIO::ImageOutput::create(file.string());
-  OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::FLOAT);
-  REQUIRE(out->open(file.string(), spec));
-  REQUIRE(out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()));
-  out->close();
+  write_test_image(file, width, height, {"R", "G", "B"}, pixels);
   return file;
 }
 

@@ -1,6 +1,5 @@
 #include "support/test_support.h"
 
-#include <OpenImageIO/imageio.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -8,6 +7,8 @@
 #include <random>
 #include <sstream>
 #include <stdexcept>
+
+#include "image/image_io.h"
 
 namespace radiant::test {
 
@@ -56,18 +57,38 @@ CommandResult run_radiant(const std::string& args, const std::string& stdin_text
 }
 
 TestImage read_image(const fs::path& file) {
-  auto input = OIIO::ImageInput::open(file.string());
-  if (!input) throw std::runtime_error("cannot open image " + file.string());
-  const OIIO::ImageSpec& spec = input->spec();
+  std::string error;
+  auto input = open_image_file(file.string(), error);
+  if (!input) throw std::runtime_error("cannot open image " + file.string() + ": " + error);
+  const ImageHeader& header = input->header();
   TestImage img;
-  img.width = spec.width;
-  img.height = spec.height;
-  img.channels = spec.nchannels;
-  img.channel_names = spec.channelnames;
+  img.width = header.width;
+  img.height = header.height;
+  img.channels = header.channels;
+  img.channel_names = header.channel_names;
   img.pixels.resize(size_t(img.width) * img.height * img.channels);
-  if (!input->read_image(0, 0, 0, img.channels, OIIO::TypeDesc::FLOAT, img.pixels.data()))
-    throw std::runtime_error("cannot read image " + file.string());
+  if (!input->read(img.channels, PixelType::float32, img.pixels.data()))
+    throw std::runtime_error("cannot read image " + file.string() + ": " + input->error());
   return img;
+}
+
+void write_test_image(const fs::path& path, int width, int height, const std::vector<std::string>& names,
+                      const std::vector<float>& values) {
+  ImageWriteSpec spec;
+  spec.width = width;
+  spec.height = height;
+  spec.channel_names = names;
+  spec.type = lowercase_extension(path.string()) == ".exr" ? PixelType::float32 : PixelType::uint8;
+  std::string error = write_image_file(path.string(), spec, values.data());
+  if (!error.empty()) throw std::runtime_error("cannot write " + path.string() + ": " + error);
+}
+
+void write_texel_bytes(const fs::path& path, int width, int height, int channels,
+                       const std::vector<unsigned char>& texels) {
+  std::vector<float> values(texels.begin(), texels.end());
+  for (float& v : values) v /= 255;  // quantized back to exactly these bytes
+  std::vector<std::string> names = channels == 1 ? std::vector<std::string>{"Y"} : std::vector<std::string>{"R", "G", "B"};
+  write_test_image(path, width, height, names, values);
 }
 
 fs::path source_path(const std::string& relative) { return fs::path(RADIANT_SOURCE_DIR) / relative; }

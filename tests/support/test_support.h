@@ -28,7 +28,7 @@ struct CommandResult {
 CommandResult run_radiant(const std::string& args, const std::string& stdin_text = "",
                           int timeout_seconds = 120);
 
-// A float image as read through OpenImageIO (all channels, row-major, top row first).
+// A float image as read through the OpenImageIO module (all channels, row-major, top row first).
 struct TestImage {
   int width = 0, height = 0, channels = 0;
   std::vector<float> pixels;
@@ -36,6 +36,14 @@ struct TestImage {
   float at(int x, int y, int c) const { return pixels[(size_t(y) * width + x) * channels + c]; }
 };
 TestImage read_image(const std::filesystem::path& file);
+
+// Writes a test image through radiant's own image I/O: float `values` (width*height*names.size(),
+// row-major) with those channel names, stored as float in EXR and as 8 bits otherwise.
+void write_test_image(const std::filesystem::path& path, int width, int height,
+                      const std::vector<std::string>& names, const std::vector<float>& values);
+// An 8-bit image (a texture) with exactly these texel bytes, 1 (gray) or 3 (RGB) channels.
+void write_texel_bytes(const std::filesystem::path& path, int width, int height, int channels,
+                       const std::vector<unsigned char>& texels);
 
 // Whole file contents as bytes, for byte-identity checks.
 std::string read_bytes(const std::filesystem::path& file);

@@ -1,0 +1,76 @@
+#include "image/image_io.h"
+
+#include <dlfcn.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <mutex>
+#include <stdexcept>
+
+#include "image/png_writer.h"
+
+namespace radiant {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* module_file = "libradiant_oiio.so";
+
+// Beside the running executable first, then where the build put it (tests and benchmarks run
+// from their own folders).
+std::vector<fs::path> module_candidates() {
+  std::vector<fs::path> candidates;
+  std::error_code error;
+  fs::path executable = fs::read_symlink("/proc/self/exe", error);
+  if (!error) candidates.push_back(executable.parent_path() / module_file);
+  fs::path built = fs::path(RADIANT_MODULE_DIR) / module_file;
+  if (candidates.empty() || candidates.front() != built) candidates.push_back(built);
+  return candidates;
+}
+
+const ImageIoModule* load_module() {
+  std::string reasons;
+  for (const fs::path& candidate : module_candidates()) {
+    // RTLD_LOCAL: OpenImageIO's thousands of symbols stay out of radiant's own lookups.
+    void* handle = dlopen(candidate.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!handle) {
+      reasons += std::string(reasons.empty() ? "" : "; ") + dlerror();
+      continue;
+    }
+    auto entry = reinterpret_cast<const ImageIoModule* (*)()>(dlsym(handle, "radiant_image_io_module"));
+    const ImageIoModule* module = entry ? entry() : nullptr;
+    if (module && module->interface_version == image_io_interface_version) return module;
+    reasons += (reasons.empty() ? "" : "; ") + candidate.string() + ": built for another version of radiant";
+  }
+  throw std::runtime_error("cannot load radiant's OpenImageIO module " + std::string(module_file) +
+                           ", needed for this image file: " + reasons);
+}
+
+}  // namespace
+
+const ImageIoModule& image_io_module() {
+  // Loaded once and never unloaded: ImageSource objects point into it.
+  static const ImageIoModule* module = nullptr;
+  static std::once_flag once;
+  std::call_once(once, [] { module = load_module(); });
+  return *module;
+}
+
+std::unique_ptr<ImageSource> open_image_file(const std::string& path, std::string& error) {
+  return image_io_module().open(path, error);
+}
+
+std::string write_image_file(const std::string& path, const ImageWriteSpec& spec, const float* pixels) {
+  if (writes_as_png(path, spec)) return write_png(path, spec, pixels);
+  return image_io_module().write(path, spec, pixels);
+}
+
+std::string lowercase_extension(const std::string& path) {
+  std::string extension = fs::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  return extension;
+}
+
+}  // namespace radiant

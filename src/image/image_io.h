@@ -1,0 +1,28 @@
+// Image files for the rest of radiant: PNG output written directly (libpng), everything else
+// through the OpenImageIO module (image_io_module.h), loaded the first time it is needed.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "image/image_io_module.h"
+
+namespace radiant {
+
+// The OpenImageIO module, loaded on first use. Throws std::runtime_error when it cannot be
+// found or is stale.
+const ImageIoModule& image_io_module();
+
+// Opens `path` for reading. Returns null with the reason (one line) in `error`.
+std::unique_ptr<ImageSource> open_image_file(const std::string& path, std::string& error);
+
+// Writes `pixels` (spec.channel_names.size() floats per pixel, top row first) to `path` in the
+// format its extension names: 8-bit PNG directly, any other format through the module. Values
+// for uint8 are display values in [0, 1]. Returns "" or the reason. Not atomic; callers write a
+// temporary file and rename it.
+std::string write_image_file(const std::string& path, const ImageWriteSpec& spec, const float* pixels);
+
+// The path's extension in lower case, with its dot (".png"), or "".
+std::string lowercase_extension(const std::string& path);
+
+}  // namespace radiant

@@ -1,0 +1,73 @@
+// The interface of radiant's OpenImageIO module (modules/oiio/): reading images, writing every
+// format OpenImageIO knows, and its pixel comparison. radiant loads the module only when a file
+// needs it (src/image/image_io.h): OpenImageIO brings about 265 shared libraries whose linking
+// takes a quarter of a second at every start, and a render to PNG needs none of them.
+// Core and module are built together by the same compiler, so C++ types may cross.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace radiant {
+
+enum class PixelType { uint8, half, float32 };
+
+// What a file says about subimage 0.
+struct ImageHeader {
+  int width = 0, height = 0, depth = 1, channels = 0;
+  int alpha_channel = -1;  // as the file marks it, or -1
+  bool deep = false;
+  std::vector<std::string> channel_names;
+  std::string color_space;  // OpenImageIO's "oiio:ColorSpace": "sRGB", "Linear", ... or empty
+};
+
+// An open image file: its header first, so that callers can refuse absurd sizes before any
+// pixel is decoded.
+class ImageSource {
+ public:
+  virtual ~ImageSource() = default;
+  virtual const ImageHeader& header() const = 0;
+  // Channels [0, channels) of every pixel, interleaved, top row first, converted to `type`
+  // (uint8 and float32 only) into `out`. False on failure, with the reason in error().
+  virtual bool read(int channels, PixelType type, void* out) = 0;
+  virtual std::string error() = 0;
+};
+
+// How a float image is stored.
+struct ImageWriteSpec {
+  int width = 0, height = 0;
+  std::vector<std::string> channel_names;  // one per channel of the pixels given
+  PixelType type = PixelType::uint8;       // what the file stores (values quantized as given)
+  std::string color_space;                 // recorded in the file when not empty
+  bool zip = false;                        // lossless zip compression (EXR)
+};
+
+// OpenImageIO's ImageBufAlgo::compare over two float images of the same layout.
+struct PixelDifference {
+  double mean_error = 0, rms_error = 0, psnr = 0, max_error = 0;
+  int max_x = 0, max_y = 0, max_channel = 0;
+  size_t warn_pixels = 0, fail_pixels = 0;  // pixels with any channel over the threshold
+  std::string error;                        // set only when the comparison itself broke
+};
+
+struct ImageIoModule {
+  uint32_t interface_version;
+  // The file opened, or null with the reason (one line) in `error`.
+  std::unique_ptr<ImageSource> (*open)(const std::string& path, std::string& error);
+  // Writes `pixels` (spec.channel_names.size() floats per pixel) to `path`, in the format its
+  // extension names. Returns "" or the reason.
+  std::string (*write)(const std::string& path, const ImageWriteSpec& spec, const float* pixels);
+  PixelDifference (*compare)(const float* a, const float* b, int width, int height, int channels,
+                             float fail_threshold, float warn_threshold);
+};
+
+// Raised whenever the struct above changes, so that a stale module is refused, not misread.
+constexpr uint32_t image_io_interface_version = 1;
+
+}  // namespace radiant
+
+// The module's one exported symbol.
+extern "C" const radiant::ImageIoModule* radiant_image_io_module();

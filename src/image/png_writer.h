@@ -1,0 +1,19 @@
+// 8-bit PNG output through libpng, the format of most renders: writing it without OpenImageIO
+// keeps a render from loading OpenImageIO's libraries at all.
+#pragma once
+
+#include <string>
+
+#include "image/image_io_module.h"
+
+namespace radiant {
+
+// Whether write_png stores this image: 8 bits, gray or RGB. Alpha goes through OpenImageIO,
+// which keeps its associated-alpha convention.
+bool writes_as_png(const std::string& path, const ImageWriteSpec& spec);
+
+// Writes `pixels` (1 or 3 channels of display values in [0, 1], clamped and rounded to 8 bits
+// as OpenImageIO does) to `path` as an sRGB PNG. Returns "" or the reason.
+std::string write_png(const std::string& path, const ImageWriteSpec& spec, const float* pixels);
+
+}  // namespace radiant

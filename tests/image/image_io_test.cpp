@@ -1,0 +1,83 @@
+// Image files: PNG written without OpenImageIO, everything else through the module, which a
+// render loads only when its output needs it.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstdlib>
+
+#include "image/image_io.h"
+#include "support/test_support.h"
+
+using namespace radiant;
+using namespace radiant::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+const char* lit_plane_scene =
+    "@camera\nposition 0 4 0\ndirection 0 -1 0\nup 0 0 -1\northographic 2\n"
+    "@light directional\ndirection 0 -1 0\ncolor 1 1 1\n"
+    "@plane\npoint 0 0 0\nnormal 0 1 0\nkd 0.5 0.5 0.5\n";
+
+// The shared libraries the dynamic linker loaded while radiant rendered `scene` to `output`
+// (glibc's LD_DEBUG=files log, one file per process).
+std::string libraries_loaded_rendering(const ScratchDir& dir, const fs::path& scene, const fs::path& output) {
+  fs::path log = dir.file("ld-debug");
+  setenv("LD_DEBUG", "files", 1);
+  setenv("LD_DEBUG_OUTPUT", log.c_str(), 1);
+  CommandResult r = run_radiant("render '" + scene.string() + "' -o '" + output.string() + "' --width 4 --height 4 --quiet");
+  unsetenv("LD_DEBUG");
+  unsetenv("LD_DEBUG_OUTPUT");
+  REQUIRE(r.exit_code == 0);
+  std::string loaded;
+  for (const auto& entry : fs::directory_iterator(dir.path))
+    if (entry.path().filename().string().rfind("ld-debug", 0) == 0) loaded += read_bytes(entry.path());
+  return loaded;
+}
+
+}  // namespace
+
+TEST_CASE("image files: a render to PNG never loads OpenImageIO; a render to EXR loads it through the module") {
+  ScratchDir png_dir("io-png"), exr_dir("io-exr");
+  std::string png_run = libraries_loaded_rendering(png_dir, png_dir.write("plane.scene", lit_plane_scene),
+                                                   png_dir.file("out.png"));
+  std::string exr_run = libraries_loaded_rendering(exr_dir, exr_dir.write("plane.scene", lit_plane_scene),
+                                                   exr_dir.file("out.exr"));
+  CHECK(png_run.find("libembree3") != std::string::npos);  // the log does list what was loaded
+  CHECK(png_run.find("libOpenImageIO") == std::string::npos);
+  CHECK(png_run.find("libradiant_oiio") == std::string::npos);
+  CHECK(exr_run.find("libradiant_oiio") != std::string::npos);
+  CHECK(exr_run.find("libOpenImageIO") != std::string::npos);
+  CHECK(fs::exists(png_dir.file("out.png")));
+  CHECK(fs::exists(exr_dir.file("out.exr")));
+}
+
+TEST_CASE("image files: a PNG written directly reads back through OpenImageIO as sRGB, each value rounded to 8 bits") {
+  ScratchDir dir("io-roundtrip");
+  // 2x1 RGB: rounding at the half-step, clamping of out-of-range values and NaN.
+  std::vector<float> values = {0.5f, 1.0f / 255 * 0.49f, 1.0f / 255 * 0.51f, -0.25f, 1.75f, std::nanf("")};
+  fs::path file = dir.file("rgb.png");
+  write_test_image(file, 2, 1, {"R", "G", "B"}, values);
+  std::string error;
+  auto input = open_image_file(file.string(), error);
+  REQUIRE(input);
+  const ImageHeader& header = input->header();
+  CHECK(header.width == 2);
+  CHECK(header.height == 1);
+  CHECK(header.channels == 3);
+  CHECK(header.color_space == "sRGB");
+  std::vector<unsigned char> bytes(6);
+  REQUIRE(input->read(3, PixelType::uint8, bytes.data()));
+  CHECK(bytes == std::vector<unsigned char>{128, 0, 1, 0, 255, 0});
+}
+
+TEST_CASE("image files: an unknown extension is an error naming the reason, and nothing is written") {
+  ScratchDir dir("io-unknown");
+  ImageWriteSpec spec;
+  spec.width = spec.height = 1;
+  spec.channel_names = {"R", "G", "B"};
+  float pixel[3] = {0.5f, 0.5f, 0.5f};
+  std::string error = write_image_file(dir.file("out.unknownformat").string(), spec, pixel);
+  CHECK(!error.empty());
+  CHECK(!fs::exists(dir.file("out.unknownformat")));
+}
