@@ -1,14 +1,13 @@
 // False-color difference images, written atomically.
 #include "image/false_color.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 
 #include "image/compare.h"
 #include "image/image_io.h"
+#include "image/image_writer.h"
 
 namespace radiant {
 
@@ -48,13 +47,7 @@ std::string write_rgb(const fs::path& file, const std::string& path, const std::
 
 void write_false_color(const std::string& path, const std::vector<float>& magnitude, int width,
                        int height, float top) {
-  fs::path target(path);
-  // Same folder and extension, so the rename is atomic and the extension still names the format.
-  std::string name = ".";
-  name += target.stem().string();
-  name += ".tmp-" + std::to_string(getpid());
-  name += target.extension().string();
-  fs::path temporary = target.parent_path() / name;
+  fs::path target(path), temporary = temporary_path_beside(path);
   std::string error = write_rgb(temporary, path, colorize(magnitude, top), width, height);
   std::error_code ignored;
   if (error.empty()) {

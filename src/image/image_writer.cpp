@@ -15,13 +15,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string temporary_path_beside(const std::string& path) {
-  fs::path p(path);
-  // Keep the extension: it names the format.
-  std::string name = "." + p.stem().string() + ".tmp-" + std::to_string(getpid()) + p.extension().string();
-  return (p.parent_path() / name).string();
-}
-
 void write_pixels(const std::string& file, const OutputImage& image, bool as_float) {
   ImageWriteSpec spec;
   spec.width = image.width;
@@ -46,6 +39,13 @@ void write_pixels(const std::string& file, const OutputImage& image, bool as_flo
 }
 
 }  // namespace
+
+std::string temporary_path_beside(const std::string& path) {
+  fs::path p(path);
+  // Keep the extension: it names the format.
+  std::string name = "." + p.stem().string() + ".tmp-" + std::to_string(getpid()) + p.extension().string();
+  return (p.parent_path() / name).string();
+}
 
 bool is_float_format(const std::string& path) {
   std::string ext = lowercase_extension(path);

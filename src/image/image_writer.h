@@ -21,6 +21,10 @@ bool is_float_format(const std::string& path);
 // and clamped to 8 bits. Throws std::runtime_error with the writer's reason.
 void write_image(const std::string& path, const OutputImage& image);
 
+// A hidden file in the same folder with the same extension, unique to this process: written
+// first and renamed onto `path`, so that the rename is atomic and the extension names the format.
+std::string temporary_path_beside(const std::string& path);
+
 // Loads now whatever writing `path` will need (the OpenImageIO module for any format but PNG),
 // so that a missing module fails before a long render rather than after it. Throws
 // std::runtime_error.
