@@ -1,6 +1,8 @@
 #include "accel/scene_accel.h"
 
 #include <cmath>
+#include <cstddef>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -10,6 +12,22 @@
 namespace radiant {
 
 namespace {
+
+// Embree reads a ray's origin and direction as 16-byte blocks, each with its neighbour (tnear,
+// time). Written as one block each, the stores forward to those loads; written float by float,
+// every traced ray would stall the CPU's store forwarding twice.
+void store_embree_ray(RTCRay& embree_ray, const Ray& ray) {
+  using float4 = float __attribute__((vector_size(16)));
+  float4 origin = {ray.origin.x, ray.origin.y, ray.origin.z, 0.0f};  // tnear 0
+  float4 direction = {ray.direction.x, ray.direction.y, ray.direction.z, 0.0f};  // time 0
+  static_assert(offsetof(RTCRay, tnear) == 12 && offsetof(RTCRay, time) == 28);
+  std::memcpy(&embree_ray.org_x, &origin, sizeof origin);
+  std::memcpy(&embree_ray.dir_x, &direction, sizeof direction);
+  embree_ray.tfar = ray.tmax;
+  embree_ray.mask = 0xFFFFFFFFu;
+  embree_ray.id = 0;
+  embree_ray.flags = 0;
+}
 
 // Planes and tubes are infinite; Embree needs finite boxes, and this one is far beyond any
 // scene a float can describe precisely while leaving headroom for Embree's own arithmetic.
@@ -235,9 +253,7 @@ HitId intersect_nearest(const SceneAccel& accel, const Ray& ray) {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit rayhit;
-  rayhit.ray = {ray.origin.x, ray.origin.y, ray.origin.z, 0.0f,
-                ray.direction.x, ray.direction.y, ray.direction.z, 0.0f,
-                ray.tmax, 0xFFFFFFFFu, 0, 0};
+  store_embree_ray(rayhit.ray, ray);
   rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(accel.top, &context, &rayhit);
@@ -256,9 +272,8 @@ HitId intersect_nearest(const SceneAccel& accel, const Ray& ray) {
 bool is_occluded(const SceneAccel& accel, const Ray& ray) {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
-  RTCRay r = {ray.origin.x, ray.origin.y, ray.origin.z, 0.0f,
-              ray.direction.x, ray.direction.y, ray.direction.z, 0.0f,
-              ray.tmax, 0xFFFFFFFFu, 0, 0};
+  RTCRay r;
+  store_embree_ray(r, ray);
   rtcOccluded1(accel.top, &context, &r);
   return r.tfar < 0;
 }

@@ -63,16 +63,19 @@ void fill_triangle_hit(const SceneAccel& accel, const HitId& id, SurfaceHit& hit
   // that is Embree's own Ng, which it computes anyway and documents as pointing out of the
   // counter-clockwise side (the accel layout test checks it against the cross product below).
   // Otherwise: the inverse transpose of the object normal, flipped for mirroring transforms.
-  hit.geometric_normal =
+  // Both normals are set from the register: copying one field of `hit` to the other would read
+  // back a vector just written as separate floats, which stalls store forwarding.
+  vec3 geometric_normal =
       identity ? normalize(id.geometric_normal_raw)
                : normalize(transform_normal(to_object, cross(e1, e2))) * accel.instance_orientation[id.instance];
-  hit.shading_normal = hit.geometric_normal;
+  hit.geometric_normal = geometric_normal;
+  hit.shading_normal = geometric_normal;
   if (!mesh.normals.empty()) {
     vec3 n = interpolate(mesh.normals, tri, b0, b1, b2);
     n = normalize(identity ? n : transform_normal(to_object, n));
     if (is_finite(n) && length_squared(n) > 0.5f) {
       // Interpolated normals live on the geometric normal's side.
-      hit.shading_normal = dot(n, hit.geometric_normal) < 0 ? -n : n;
+      hit.shading_normal = dot(n, geometric_normal) < 0 ? -n : n;
     }
   }
   if (!mesh.tangents.empty()) {

@@ -2,6 +2,7 @@
 #include "materials/bsdf.h"
 
 #include <initializer_list>
+#include <type_traits>
 
 namespace radiant {
 
@@ -22,15 +23,34 @@ BsdfParams make_params(const SurfaceMaterial& m) {
 
 BsdfMaterial::BsdfMaterial(const SurfaceMaterial& m) : params_(make_params(m)) {}
 
-// The lobes are built in place: returning the whole variant would copy the largest model's
-// lobes for every vertex, whichever model the material has.
-Bsdf::Bsdf(const BsdfMaterial& material, vec3 n, vec3 wo) {
-  const BsdfParams& params = material.params_;
-  if (auto* p = std::get_if<LambertParams>(&params)) lobes_.emplace<LambertLobes>(make_lambert_lobes(*p, n, wo));
-  else if (auto* w = std::get_if<PhongWeights>(&params)) lobes_.emplace<PhongLobes>(make_phong_lobes(*w, n, wo));
-  else if (auto* m = std::get_if<MetallicRoughnessParams>(&params))
-    lobes_.emplace<MetallicRoughnessLobes>(make_metallic_roughness_lobes(*m, n, wo));
+namespace {
+
+// Converts to `make()`'s result, so that the variant constructs its alternative straight from
+// the call (copy elision). Building the lobes in a temporary and copying them in would read
+// back as 16-byte blocks what was just written as floats, which stalls the CPU's store
+// forwarding on every path vertex.
+template <class Make>
+struct BuiltBy {
+  Make make;
+  operator std::invoke_result_t<Make>() const { return make(); }
+};
+
+// The lobes, returned as the variant itself and built in its storage: emplacing into an
+// existing variant goes through a temporary variant in libstdc++.
+BsdfLobes make_lobes(const BsdfParams& params, vec3 n, vec3 wo) {
+  if (auto* p = std::get_if<LambertParams>(&params))
+    return BsdfLobes(std::in_place_type<LambertLobes>, BuiltBy{[&] { return make_lambert_lobes(*p, n, wo); }});
+  if (auto* w = std::get_if<PhongWeights>(&params))
+    return BsdfLobes(std::in_place_type<PhongLobes>, BuiltBy{[&] { return make_phong_lobes(*w, n, wo); }});
+  if (auto* m = std::get_if<MetallicRoughnessParams>(&params))
+    return BsdfLobes(std::in_place_type<MetallicRoughnessLobes>,
+                     BuiltBy{[&] { return make_metallic_roughness_lobes(*m, n, wo); }});
+  return {};
 }
+
+}  // namespace
+
+Bsdf::Bsdf(const BsdfMaterial& material, vec3 n, vec3 wo) : lobes_(make_lobes(material.params_, n, wo)) {}
 
 color3 Bsdf::eval(vec3 wi) const {
   if (auto* l = std::get_if<LambertLobes>(&lobes_)) return eval_world(*l, wi);
