@@ -3,9 +3,11 @@
 #include <dlfcn.h>
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <mutex>
 #include <stdexcept>
+#include <vector>
 
 #include "image/png_writer.h"
 
@@ -41,6 +43,7 @@ const ImageIoModule* load_module() {
     auto entry = reinterpret_cast<const ImageIoModule* (*)()>(dlsym(handle, "radiant_image_io_module"));
     const ImageIoModule* module = entry ? entry() : nullptr;
     if (module && module->interface_version == image_io_interface_version) return module;
+    dlclose(handle);
     reasons += (reasons.empty() ? "" : "; ") + candidate.string() + ": built for another version of radiant";
   }
   throw std::runtime_error("cannot load radiant's OpenImageIO module " + std::string(module_file) +
