@@ -34,6 +34,8 @@ struct BuiltBy {
   Make make;
   operator std::invoke_result_t<Make>() const { return make(); }
 };
+template <class Make>
+BuiltBy(Make) -> BuiltBy<Make>;  // clang before 17 deduces no aggregate's arguments by itself
 
 // The lobes, returned as the variant itself and built in its storage: emplacing into an
 // existing variant goes through a temporary variant in libstdc++.
