@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "image/image_io.h"
+#include "image/png_writer.h"
 
 namespace radiant {
 
@@ -15,7 +16,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-void write_pixels(const std::string& file, const OutputImage& image, bool as_float) {
+// How `image` is stored in `path`: every channel as linear float in a float format, otherwise
+// the first three sRGB-encoded in 8 bits.
+ImageWriteSpec output_spec(const std::string& path, const OutputImage& image) {
+  bool as_float = is_float_format(path);
   ImageWriteSpec spec;
   spec.width = image.width;
   spec.height = image.height;
@@ -24,6 +28,12 @@ void write_pixels(const std::string& file, const OutputImage& image, bool as_flo
   spec.type = as_float ? PixelType::float32 : PixelType::uint8;
   spec.color_space = as_float ? "Linear" : "sRGB";
   spec.zip = as_float;
+  return spec;
+}
+
+void write_pixels(const std::string& file, const OutputImage& image) {
+  ImageWriteSpec spec = output_spec(file, image);
+  bool as_float = spec.type == PixelType::float32;
   std::vector<float> data;
   const float* source = image.pixels.data();
   if (!as_float) {
@@ -57,13 +67,15 @@ float linear_to_srgb(float v) {
 }
 
 void prepare_image_writer(const std::string& path) {
-  if (lowercase_extension(path) != ".png") image_io_module();
+  OutputImage color_only;  // what decides the writer: the format and the first three channels
+  color_only.channels = {"R", "G", "B"};
+  if (!writes_as_png(path, output_spec(path, color_only))) image_io_module();
 }
 
 void write_image(const std::string& path, const OutputImage& image) {
   std::string temporary = temporary_path_beside(path);
   try {
-    write_pixels(temporary, image, is_float_format(path));
+    write_pixels(temporary, image);
     fs::rename(temporary, path);
   } catch (const std::exception& e) {
     std::error_code ignored;

@@ -26,8 +26,8 @@ bool writes_as_png(const std::string& path, const ImageWriteSpec& spec) {
 }
 
 std::string write_png(const std::string& path, const ImageWriteSpec& spec, const float* pixels) {
+  if (!writes_as_png(path, spec)) return "the PNG writer stores 8-bit gray or RGB only";
   size_t channels = spec.channel_names.size();
-  if (channels != 1 && channels != 3) return "the PNG writer stores 1 or 3 channels, not " + std::to_string(channels);
   std::vector<uint8_t> bytes(size_t(spec.width) * size_t(spec.height) * channels);
   for (size_t i = 0; i < bytes.size(); ++i) bytes[i] = quantize(pixels[i]);
   // libpng's simplified API marks 8-bit images sRGB, reports errors in `message` and cleans up.

@@ -74,7 +74,7 @@ EnvironmentMap load_environment_map(const std::string& path) {
   std::string error;
   auto input = open_image_file(path, error);
   if (!input) throw std::runtime_error(path + ": cannot read environment map: " + error);
-  ImageHeader spec = input->header();
+  const ImageHeader& spec = input->header();
   if (spec.width <= 0 || spec.height <= 0 || spec.channels <= 0 ||
       size_t(spec.width) * spec.height > (size_t(1) << 28))
     throw std::runtime_error(path + ": environment map has an unusable size");
