@@ -25,9 +25,19 @@ file cornell_box.obj
 SCENE
 
 # embree_render SIZE SPP OUT.ppm [environment for the process...]
-embree_render() {
-  env "${@:4}" pathtracer -c "$embree_models/cornell_box.ecs" --threads "$threads" --size "$1" "$1" --spp "$2" \
-    --max-path-length 8 -o "$3" >/dev/null 2>&1
+embree_render() { embree_render_configured "" "$@"; }
+# The same, on the Embree structure radiant traces. radiant sets RTC_SCENE_FLAG_ROBUST, which
+# makes Embree build a BVH8 of Triangle4v and intersect it with the watertight Pluecker test
+# and robust traversal; the tutorial sets no flag and gets Triangle4 with the faster Moeller-
+# Trumbore test. tri_accel=bvh8.triangle4v gives the tutorial radiant's kernel: with
+# verbose=2 both report avx512::BVH8Triangle4vIntersector1Pluecker on this machine.
+embree_render_robust() { embree_render_configured "tri_accel=bvh8.triangle4v" "$@"; }
+# embree_render_configured EMBREE_CONFIG SIZE SPP OUT.ppm [environment for the process...]
+embree_render_configured() {
+  local config=$1
+  shift
+  env "${@:4}" pathtracer -c "$embree_models/cornell_box.ecs" ${config:+--rtcore "$config"} --threads "$threads" \
+    --size "$1" "$1" --spp "$2" --max-path-length 8 -o "$3" >/dev/null 2>&1
 }
 # radiant_render SIZE SPP OUT [environment for the process...]
 radiant_render() {
