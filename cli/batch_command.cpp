@@ -132,7 +132,6 @@ int batch_main(int argc, char** argv) {
     return exit_failure;
   }
 
-  std::unique_ptr<SceneDesc> scene;
   std::unique_ptr<PreparedScene> prepared;
   std::string scene_path;
   double load_seconds = 0;
@@ -143,8 +142,7 @@ int batch_main(int argc, char** argv) {
         LoadOptions options;
         options.allow_external_files = allow_external;
         prepared.reset();
-        scene = std::make_unique<SceneDesc>(load_scene(step.scene, options));
-        prepared = std::make_unique<PreparedScene>(prepare_scene(*scene));
+        prepared = std::make_unique<PreparedScene>(prepare_scene(load_scene(step.scene, options)));
         scene_path = step.scene;
         load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         continue;

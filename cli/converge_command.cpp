@@ -260,8 +260,7 @@ void run_converge(const std::string& scene_path, ConvergeFlags& flags, std::vect
   load_options.allow_external_files = flags.render.allow_external_files;
   load_options.max_memory_bytes = size_t(flags.render.max_memory_gb * double(size_t(1) << 30));
   load_options.gltf_scene = flags.render.gltf_scene;
-  SceneDesc scene = load_scene(scene_path, load_options);
-  PreparedScene prepared = prepare_scene(scene);
+  PreparedScene prepared = prepare_scene(load_scene(scene_path, load_options), options);
 
   if (flags.width) options.width = flags.width;
   if (flags.height) options.height = flags.height;

@@ -72,8 +72,8 @@ int render_main(int argc, char** argv) {
     if (!options.quiet)
       for (const std::string& warning : scene.warnings) std::cerr << "radiant: warning: " << warning << "\n";
 
-    PreparedScene prepared = prepare_scene(scene);
     try {
+      PreparedScene prepared = prepare_scene(std::move(scene), options);
       run_render_job(scene_path, prepared, {options, output, stats_path}, times);
     } catch (const std::invalid_argument& e) {
       std::cerr << "radiant render: " << e.what() << "\n";

@@ -25,8 +25,9 @@ void write_text_file_atomically(const std::string& path, const std::string& text
   std::filesystem::rename(temporary, path);
 }
 
-void run_render_job(const std::string& scene_path, const PreparedScene& prepared, const RenderJob& job, PhaseTimes& times) {
+void run_render_job(const std::string& scene_path, PreparedScene& prepared, const RenderJob& job, PhaseTimes& times) {
   using Clock = std::chrono::steady_clock;
+  prepare_view(prepared, job.options);
   times.build = prepared.build_seconds;
   prepare_image_writer(job.output);
   RenderResult result = render_prepared(prepared, job.options);

@@ -47,6 +47,8 @@ std::string render_summary(const std::string& output, const RenderResult& r, con
   std::string line = buffer;
   if (r.stats.rays.nonfinite_samples)
     line += ", " + std::to_string(r.stats.rays.nonfinite_samples) + " non-finite samples dropped";
+  if (r.stats.untraceable_rays)
+    line += ", " + std::to_string(r.stats.untraceable_rays) + " rays beyond the traceable range taken as misses";
   if (r.stats.min_pixel_samples != r.stats.max_pixel_samples) {
     std::snprintf(buffer, sizeof buffer, ", %u-%u spp per pixel (median %u), estimated relative error %.2f%%",
                   r.stats.min_pixel_samples, r.stats.max_pixel_samples, r.stats.median_pixel_samples,
@@ -85,6 +87,7 @@ std::string render_stats_json(const std::string& scene_path, const std::string& 
     << "  \"estimated_relative_error\": " << r.stats.estimated_relative_error << ",\n"
     << "  \"stopped_by_time_limit\": " << (r.stats.stopped_by_time_limit ? "true" : "false") << ",\n"
     << "  \"nonfinite_samples_dropped\": " << rays.nonfinite_samples << ",\n"
+    << "  \"untraceable_rays\": " << r.stats.untraceable_rays << ",\n"
     << "  \"peak_memory_bytes\": " << peak_memory_bytes() << "\n"
     << "}\n";
   return j.str();

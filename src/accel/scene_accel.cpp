@@ -1,13 +1,17 @@
 #include "accel/scene_accel.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "accel/analytic_shapes.h"
+#include "scene/coordinate_range.h"
 
 namespace radiant {
 
@@ -28,10 +32,6 @@ void store_embree_ray(RTCRay& embree_ray, const Ray& ray) {
   embree_ray.id = 0;
   embree_ray.flags = 0;
 }
-
-// Planes and tubes are infinite; Embree needs finite boxes, and this one is far beyond any
-// scene a float can describe precisely while leaving headroom for Embree's own arithmetic.
-constexpr float infinite_shape_extent = 1e18f;
 
 struct DeviceError {
   std::string message;
@@ -62,7 +62,8 @@ const SceneAccel& accel_of(void* user) { return *static_cast<const SceneAccel*>(
 void shape_bounds_callback(const RTCBoundsFunctionArguments* args) {
   const SceneAccel& accel = accel_of(args->geometryUserPtr);
   vec3 lower, upper;
-  shape_bounds(accel.scene->shapes[args->primID], infinite_shape_extent, lower, upper);
+  // Planes and tubes are infinite; Embree needs finite boxes: they end where rays may reach.
+  shape_bounds(accel.scene->shapes[args->primID], accel.max_ray_coordinate, lower, upper);
   *args->bounds_o = {lower.x, lower.y, lower.z, 0, upper.x, upper.y, upper.z, 0};
 }
 
@@ -70,12 +71,23 @@ Ray ray_from_embree(const RTCRay& r) {
   return {{r.org_x, r.org_y, r.org_z}, {r.dir_x, r.dir_y, r.dir_z}, r.tfar};
 }
 
+// A shape hit well inside the traceable range: rays spawned there, offset origins and shadow rays
+// to any light included, stay traceable. Only infinite planes and tubes can be hit beyond it, so
+// this cuts them off at a distance no view resolves.
+bool shape_hit_in_range(const SceneAccel& accel, const Ray& ray, const ShapeHit& hit) {
+  vec3 p = ray.origin + ray.direction * hit.t;
+  float bound = 0.5f * accel.max_ray_coordinate;
+  return std::abs(p.x) <= bound && std::abs(p.y) <= bound && std::abs(p.z) <= bound;
+}
+
 void shape_intersect_callback(const RTCIntersectFunctionNArguments* args) {
   if (!args->valid[0]) return;
   const SceneAccel& accel = accel_of(args->geometryUserPtr);
   auto* rayhit = reinterpret_cast<RTCRayHit*>(args->rayhit);
   ShapeHit hit;
-  if (!intersect_shape(accel.scene->shapes[args->primID], ray_from_embree(rayhit->ray), rayhit->ray.tnear, hit))
+  Ray ray = ray_from_embree(rayhit->ray);
+  if (!intersect_shape(accel.scene->shapes[args->primID], ray, rayhit->ray.tnear, hit) ||
+      !shape_hit_in_range(accel, ray, hit))
     return;
   rayhit->ray.tfar = hit.t;
   rayhit->hit.geomID = args->geomID;
@@ -93,7 +105,8 @@ void shape_occluded_callback(const RTCOccludedFunctionNArguments* args) {
   const SceneAccel& accel = accel_of(args->geometryUserPtr);
   auto* ray = reinterpret_cast<RTCRay*>(args->ray);
   ShapeHit hit;
-  if (intersect_shape(accel.scene->shapes[args->primID], ray_from_embree(*ray), ray->tnear, hit))
+  Ray traced = ray_from_embree(*ray);
+  if (intersect_shape(accel.scene->shapes[args->primID], traced, ray->tnear, hit) && shape_hit_in_range(accel, traced, hit))
     ray->tfar = -std::numeric_limits<float>::infinity();
 }
 
@@ -171,7 +184,8 @@ RTCScene build_mesh_scene(SceneAccel& accel, int mesh_index) {
   return scene;
 }
 
-void attach_instances(SceneAccel& accel) {
+// Attaches every instance; returns those traced through an object space of their own.
+std::vector<int> attach_instances(SceneAccel& accel) {
   const SceneDesc& scene = *accel.scene;
   // A mesh placed once joins the top level in world space when its transform moves every vertex
   // to an exact float (identity, translations and scalings that fit): rounding the vertices
@@ -184,6 +198,7 @@ void attach_instances(SceneAccel& accel) {
   accel.instance_inverse.resize(scene.instances.size());
   accel.instance_orientation.resize(scene.instances.size());
   accel.instance_identity.resize(scene.instances.size());
+  std::vector<int> instanced;
   for (size_t i = 0; i < scene.instances.size(); ++i) {
     const InstanceDesc& instance = scene.instances[i];
     if (!inverse_affine(instance.transform, accel.instance_inverse[i]))
@@ -195,6 +210,7 @@ void attach_instances(SceneAccel& accel) {
     if (placements[instance.mesh] == 1 && place_exactly(mesh, instance.transform, world_positions)) {
       geometry = new_triangle_geometry(accel, instance.mesh, world_positions);
     } else {
+      instanced.push_back(int(i));
       if (!accel.mesh_scenes[instance.mesh]) accel.mesh_scenes[instance.mesh] = build_mesh_scene(accel, instance.mesh);
       geometry = rtcNewGeometry(accel.device, RTC_GEOMETRY_TYPE_INSTANCE);
       rtcSetGeometryInstancedScene(geometry, accel.mesh_scenes[instance.mesh]);
@@ -206,6 +222,77 @@ void attach_instances(SceneAccel& accel) {
     }
     rtcAttachGeometryByID(accel.top, geometry, unsigned(i));
     rtcReleaseGeometry(geometry);
+  }
+  return instanced;
+}
+
+// How much an instance shrinks space into its object space: the row-sum norm of its inverse,
+// which bounds |object-space coordinate| / |render-space coordinate|.
+double object_space_growth(const mat4& inverse) {
+  double largest = 0;
+  for (int r = 0; r < 3; ++r)
+    largest = std::max(largest, double(std::abs(inverse.m[r][0])) + std::abs(inverse.m[r][1]) + std::abs(inverse.m[r][2]));
+  return largest;
+}
+
+// The bounding box of a mesh's object-space vertices (lower > upper when it has none).
+std::pair<vec3, vec3> mesh_box(const MeshDesc& mesh) {
+  constexpr float inf = std::numeric_limits<float>::infinity();
+  vec3 lower = {inf, inf, inf}, upper = -lower;
+  for (vec3 p : mesh.positions) lower = min(lower, p), upper = max(upper, p);
+  return {lower, upper};
+}
+
+// The largest coordinate magnitude of a box's corners placed by `transform`.
+double placed_reach(const std::pair<vec3, vec3>& box, const mat4& transform) {
+  auto [lower, upper] = box;
+  if (!(lower.x <= upper.x)) return 0;
+  double reach = 0;
+  for (int corner = 0; corner < 8; ++corner) {
+    vec3 p = {corner & 1 ? upper.x : lower.x, corner & 2 ? upper.y : lower.y, corner & 4 ? upper.z : lower.z};
+    reach = std::max(reach, double(max_component(abs(transform_point(transform, p)))));
+  }
+  return reach;
+}
+
+// Sets the traceable range from the instances' object spaces: a ray within it, transformed by
+// any instance's inverse, stays within max_traced_coordinate (origin and translation both within
+// the range, so twice the growth). Refuses a scene whose own extent does not fit.
+void set_traceable_range(SceneAccel& accel, const std::vector<int>& instanced) {
+  const SceneDesc& scene = *accel.scene;
+  double growth = 1;
+  int shrinking = -1;
+  for (int i : instanced) {
+    double g = object_space_growth(accel.instance_inverse[i]);
+    if (g > growth) growth = g, shrinking = i;
+  }
+  accel.max_ray_coordinate = float(max_traced_coordinate / (2 * growth));
+  if (shrinking < 0) return;  // validation keeps render space far inside the full range
+  std::vector<std::pair<vec3, vec3>> boxes;
+  boxes.reserve(scene.meshes.size());
+  for (const MeshDesc& mesh : scene.meshes) boxes.push_back(mesh_box(mesh));
+  double reach = 0;
+  for (const InstanceDesc& instance : scene.instances)
+    reach = std::max(reach, placed_reach(boxes[instance.mesh], instance.transform));
+  for (int i : instanced) {  // the translation enters the object-space origin as well
+    const mat4& m = scene.instances[i].transform;
+    reach = std::max(reach, double(max_component(abs(vec3{m.m[0][3], m.m[1][3], m.m[2][3]}))));
+  }
+  for (const ShapeDesc& shape : scene.shapes) {
+    if (shape.kind == ShapeKind::plane || shape.kind == ShapeKind::tube) continue;
+    vec3 lower, upper;
+    shape_bounds(shape, 0, lower, upper);
+    reach = std::max({reach, double(max_component(abs(lower))), double(max_component(abs(upper)))});
+  }
+  if (reach > 0.5 * accel.max_ray_coordinate) {
+    const std::string& name = scene.instances[shrinking].name;
+    char text[192];
+    std::snprintf(text, sizeof text,
+                  ": its transform shrinks space by %g, too much for a scene reaching %g from the camera (rays would "
+                  "leave Embree's range in its object space)",
+                  1 / growth, reach);
+    throw std::runtime_error(scene.source_path + ": instances[" + std::to_string(shrinking) + "]" +
+                             (name.empty() ? "" : " '" + name + "'") + text);
   }
 }
 
@@ -242,7 +329,7 @@ std::unique_ptr<SceneAccel> build_scene_accel(const SceneDesc& scene) {
   for (size_t m = 0; m < scene.meshes.size(); ++m) accel->alpha_masks[m] = {&scene, int(m)};
   accel->top = rtcNewScene(accel->device);
   rtcSetSceneFlags(accel->top, RTC_SCENE_FLAG_ROBUST);
-  attach_instances(*accel);
+  set_traceable_range(*accel, attach_instances(*accel));
   attach_shapes(*accel);
   rtcCommitScene(accel->top);
   throw_on_device_error();
@@ -250,6 +337,10 @@ std::unique_ptr<SceneAccel> build_scene_accel(const SceneDesc& scene) {
 }
 
 HitId intersect_nearest(const SceneAccel& accel, const Ray& ray) {
+  if (!is_traceable(accel, ray)) [[unlikely]] {
+    accel.untraceable_rays.fetch_add(1, std::memory_order_relaxed);
+    return {};
+  }
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit rayhit;
@@ -270,6 +361,10 @@ HitId intersect_nearest(const SceneAccel& accel, const Ray& ray) {
 }
 
 bool is_occluded(const SceneAccel& accel, const Ray& ray) {
+  if (!is_traceable(accel, ray)) [[unlikely]] {
+    accel.untraceable_rays.fetch_add(1, std::memory_order_relaxed);
+    return true;
+  }
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRay r;

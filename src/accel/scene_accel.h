@@ -5,6 +5,8 @@
 
 #include <embree3/rtcore.h>
 
+#include <atomic>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -40,6 +42,13 @@ struct SceneAccel {
     int mesh;
   };
   std::vector<AlphaMask> alpha_masks;
+  // Every traced ray keeps its origin within this (and its direction within twice this), so that
+  // in every instance's object space it stays inside Embree's range (scene/coordinate_range.h).
+  // Hits on infinite shapes beyond it are not taken.
+  float max_ray_coordinate = 0;
+  // Rays refused by that bound (a valid scene casts none): taken as misses, or as blocked
+  // shadow rays, and reported in the render's statistics.
+  mutable std::atomic<uint64_t> untraceable_rays{0};
 
   SceneAccel() = default;
   SceneAccel(const SceneAccel&) = delete;
@@ -48,13 +57,24 @@ struct SceneAccel {
 };
 
 // Builds the acceleration structure; `scene` must outlive it. Throws std::runtime_error when
-// Embree reports an error.
+// Embree reports an error, or when an instance shrinks space so much that the scene's extent
+// would leave Embree's range in its object space.
 std::unique_ptr<SceneAccel> build_scene_accel(const SceneDesc& scene);
 
-// Nearest hit along the ray (from t = 0 to ray.tmax).
+// Nearest hit along the ray (from t = 0 to ray.tmax); none for an untraceable ray.
 HitId intersect_nearest(const SceneAccel& accel, const Ray& ray);
-// True when anything blocks the ray before ray.tmax.
+// True when anything blocks the ray before ray.tmax, or when the ray is untraceable.
 bool is_occluded(const SceneAccel& accel, const Ray& ray);
+
+// True when Embree can trace `ray` in every space of `accel`: finite origin and direction within
+// the accelerator's bound, tmax not NaN. NaN fails every comparison, so it is caught too.
+inline bool is_traceable(const SceneAccel& accel, const Ray& ray) {
+  float o = accel.max_ray_coordinate, d = 2 * accel.max_ray_coordinate;
+  // Each comparison separately: std::max would let a NaN in its second argument through.
+  return (std::abs(ray.origin.x) <= o) & (std::abs(ray.origin.y) <= o) & (std::abs(ray.origin.z) <= o) &
+         (std::abs(ray.direction.x) <= d) & (std::abs(ray.direction.y) <= d) & (std::abs(ray.direction.z) <= d) &
+         (ray.tmax >= 0);
+}
 
 // Everything about a hit point the integrators need, in world space.
 struct SurfaceHit {

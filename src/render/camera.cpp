@@ -4,6 +4,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "scene/coordinate_range.h"
 #include "scene/scene_bounds.h"
 
 namespace radiant {
@@ -59,7 +60,16 @@ CameraDesc make_framing_camera(const SceneDesc& scene) {
   return camera;
 }
 
+// Positions given on the command line obey the scene's coordinate range.
+void check_override_range(const std::optional<vec3>& point, const char* flag) {
+  if (point && !(max_component(abs(*point)) <= max_scene_coordinate))
+    throw std::invalid_argument(std::string(flag) + " lies beyond the supported range of coordinates (magnitude up to " +
+                                max_scene_coordinate_text + ")");
+}
+
 void apply_camera_override(CameraDesc& camera, const CameraOverride& o) {
+  check_override_range(o.look_from, "--look-from");
+  check_override_range(o.look_at, "--look-at");
   if (o.look_from) camera.position = *o.look_from;
   if (o.look_at) {
     vec3 d = *o.look_at - camera.position;
@@ -83,23 +93,24 @@ void apply_camera_override(CameraDesc& camera, const CameraOverride& o) {
   camera.up = normalize(cross(normalize(right), camera.forward));
 }
 
-CameraDesc select_camera(const SceneDesc& scene, const std::string& which, bool& framed) {
+CameraDesc select_camera(const std::vector<CameraDesc>& cameras, const CameraDesc& framing, const std::string& which,
+                         bool& framed) {
   framed = false;
   if (which.empty()) {
-    if (!scene.cameras.empty()) return scene.cameras.front();
+    if (!cameras.empty()) return cameras.front();
     framed = true;
-    return make_framing_camera(scene);
+    return framing;
   }
-  for (const CameraDesc& c : scene.cameras)
+  for (const CameraDesc& c : cameras)
     if (c.name == which) return c;
   bool numeric = !which.empty() && which.find_first_not_of("0123456789") == std::string::npos;
   if (numeric) {
     size_t index = std::stoul(which);
-    if (index < scene.cameras.size()) return scene.cameras[index];
+    if (index < cameras.size()) return cameras[index];
   }
   std::string known;
-  for (size_t i = 0; i < scene.cameras.size(); ++i)
-    known += (i ? ", " : "") + std::to_string(i) + (scene.cameras[i].name.empty() ? "" : " '" + scene.cameras[i].name + "'");
+  for (size_t i = 0; i < cameras.size(); ++i)
+    known += (i ? ", " : "") + std::to_string(i) + (cameras[i].name.empty() ? "" : " '" + cameras[i].name + "'");
   throw std::invalid_argument("no camera '" + which + "' in the scene (cameras: " + (known.empty() ? "none" : known) + ")");
 }
 

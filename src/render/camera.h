@@ -25,7 +25,9 @@ CameraDesc make_framing_camera(const SceneDesc& scene);
 // Applies --look-from/--look-at/--up/--fov; throws std::invalid_argument on a degenerate view.
 void apply_camera_override(CameraDesc& camera, const CameraOverride& override_);
 
-// Picks the camera by name or index ("" = first); throws std::invalid_argument when not found.
-CameraDesc select_camera(const SceneDesc& scene, const std::string& which, bool& framed);
+// Picks the camera by name or index among `cameras` ("" = the first, or `framing` when there is
+// none, setting `framed`); throws std::invalid_argument when not found.
+CameraDesc select_camera(const std::vector<CameraDesc>& cameras, const CameraDesc& framing, const std::string& which,
+                         bool& framed);
 
 }  // namespace radiant

@@ -118,14 +118,45 @@ void print_progress(double fraction, double elapsed) {
 
 }  // namespace
 
-PreparedScene prepare_scene(const SceneDesc& scene) {
-  PreparedScene prepared;
-  prepared.scene = &scene;
+namespace {
+
+void build_accel(PreparedScene& prepared) {
   auto start = Clock::now();
-  prepared.accel = build_scene_accel(scene);
+  prepared.accel.reset();
+  prepared.accel = build_scene_accel(*prepared.scene);
   prepared.build_seconds = seconds_since(start);
-  prepared.effects = analyze_effects(scene);
+}
+
+}  // namespace
+
+CameraDesc world_view_camera(const PreparedScene& prepared, const RenderOptions& options, bool& framed) {
+  CameraDesc camera = select_camera(prepared.world.cameras, prepared.world.framing_camera, options.camera, framed);
+  apply_camera_override(camera, options.camera_override);
+  // A camera placed entirely by the flags is not a framing camera.
+  if (options.camera_override.look_from && options.camera_override.look_at) framed = false;
+  return camera;
+}
+
+PreparedScene prepare_scene(SceneDesc scene, const RenderOptions& options) {
+  PreparedScene prepared;
+  prepared.world = record_world_placement(scene);
+  prepared.scene = std::make_unique<SceneDesc>(std::move(scene));
+  bool framed = false;
+  prepared.origin = choose_render_origin(prepared.world, world_view_camera(prepared, options, framed).position);
+  place_at_render_origin(*prepared.scene, prepared.world, prepared.origin);
+  build_accel(prepared);
+  prepared.effects = analyze_effects(*prepared.scene);
   return prepared;
+}
+
+double prepare_view(PreparedScene& prepared, const RenderOptions& options) {
+  bool framed = false;
+  dvec3 origin = choose_render_origin(prepared.world, world_view_camera(prepared, options, framed).position);
+  if (origin.x == prepared.origin.x && origin.y == prepared.origin.y && origin.z == prepared.origin.z) return 0;
+  prepared.origin = origin;
+  place_at_render_origin(*prepared.scene, prepared.world, origin);
+  build_accel(prepared);
+  return prepared.build_seconds;
 }
 
 RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions& options) {
@@ -184,6 +215,7 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
   result.stats.render_seconds = seconds_since(start);
   result.stats.build_seconds = prepared.build_seconds;
   for (const RayCounts& c : counts) result.stats.rays += c;
+  result.stats.untraceable_rays = prepared.accel->untraceable_rays.exchange(0);
 
   // One pass gathers the sample counts (for their distribution) and the error estimates.
   std::vector<uint32_t> counts_per_pixel;

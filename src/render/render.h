@@ -9,17 +9,27 @@
 #include "image/image_writer.h"
 #include "integrators/render_context.h"
 #include "render/render_options.h"
+#include "render/render_space.h"
 
 namespace radiant {
 
 // Derived state built once per scene and reused for every view (`radiant batch`).
 struct PreparedScene {
-  const SceneDesc* scene = nullptr;
+  std::unique_ptr<SceneDesc> scene;  // in render space: world positions minus `origin`
+  WorldPlacement world;              // the world positions, as loaded
+  dvec3 origin = {0, 0, 0};
   std::unique_ptr<SceneAccel> accel;
   EffectSet effects;
   double build_seconds = 0;
 };
-PreparedScene prepare_scene(const SceneDesc& scene);
+// Takes a loaded (world-space) scene and builds it in the render space of the view `options`
+// ask for. Throws std::invalid_argument for a camera that does not exist or a bad view.
+PreparedScene prepare_scene(SceneDesc scene, const RenderOptions& options = {});
+// Moves `prepared` to the render origin the view of `options` needs, rebuilding the accelerator
+// only when that origin differs from the current one; returns the seconds spent.
+double prepare_view(PreparedScene& prepared, const RenderOptions& options);
+// The camera of the view `options` ask for, in world space (`framed`: the scene has none).
+CameraDesc world_view_camera(const PreparedScene& prepared, const RenderOptions& options, bool& framed);
 
 // Settings after combining flags, the scene file's settings and the defaults.
 struct ResolvedSettings {
@@ -50,6 +60,7 @@ struct RenderStats {
   uint32_t min_pixel_samples = 0, max_pixel_samples = 0;
   uint32_t median_pixel_samples = 0, p90_pixel_samples = 0;  // the distribution adaptive sampling gives
   float estimated_relative_error = 0;  // mean over pixels of the relative standard error
+  uint64_t untraceable_rays = 0;  // rays beyond the traceable range, taken as misses (none in a valid scene)
   bool stopped_by_time_limit = false;
 };
 

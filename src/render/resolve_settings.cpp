@@ -28,16 +28,27 @@ void resolve_size(const RenderOptions& options, const SceneDesc& scene, Resolved
   r.height = *height;
 }
 
+// Camera rays start at the camera (or across an orthographic view): they must lie within the
+// range the accelerator can trace (scene/coordinate_range.h).
+void check_camera_traceable(const ResolvedSettings& r, const PreparedScene& prepared) {
+  double reach = max_component(abs(r.camera.position));
+  if (r.camera.projection == Projection::orthographic)
+    reach += double(r.camera.ortho_height) * std::max(1.0, double(r.width) / r.height);
+  if (!(reach <= 0.5 * prepared.accel->max_ray_coordinate))
+    throw std::runtime_error(prepared.scene->source_path + ": the view reaches " + std::to_string(reach) +
+                             " from the scene, beyond what its smallest instance scale lets radiant trace (" +
+                             std::to_string(0.5 * prepared.accel->max_ray_coordinate) + ")");
+}
+
 }  // namespace
 
 ResolvedSettings resolve_settings(const PreparedScene& prepared, const RenderOptions& options) {
   const SceneDesc& scene = *prepared.scene;
   ResolvedSettings r;
-  r.camera = select_camera(scene, options.camera, r.camera_framed);
-  apply_camera_override(r.camera, options.camera_override);
-  // A camera placed entirely by the flags is not a framing camera.
-  if (options.camera_override.look_from && options.camera_override.look_at) r.camera_framed = false;
+  r.camera = world_view_camera(prepared, options, r.camera_framed);
+  r.camera.position = to_render_space(r.camera.position, prepared.origin);
   resolve_size(options, scene, r);
+  check_camera_traceable(r, prepared);
 
   RenderMode mode = options.mode ? *options.mode : scene.settings.mode.value_or(RenderMode::auto_select);
   if (mode == RenderMode::auto_select) mode = choose_auto_mode(scene, r.mode_reason);

@@ -1,8 +1,10 @@
 #include "scene/validate.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include "load_scene.h"
+#include "scene/coordinate_range.h"
 
 namespace radiant {
 
@@ -27,6 +29,19 @@ struct Checker {
   void finite(vec3 value, const std::string& where) const {
     if (!is_finite(value)) fail(where, "non-finite value");
   }
+  // Positions and sizes radiant can trace (scene/coordinate_range.h).
+  void in_range(double value, const std::string& where) const {
+    if (!std::isfinite(value)) fail(where, "non-finite value");
+    if (std::abs(value) > max_scene_coordinate) {
+      char text[32];
+      std::snprintf(text, sizeof text, "%g", value);
+      fail(where, std::string(text) + " is beyond the supported range of coordinates and sizes (magnitude up to " +
+                      max_scene_coordinate_text + ")");
+    }
+  }
+  void in_range(vec3 value, const std::string& where) const {
+    for (int i = 0; i < 3; ++i) in_range(value[i], where);
+  }
   void unit(vec3 value, const std::string& where) const {
     finite(value, where);
     if (!(length(value) > 0)) fail(where, "zero-length direction");
@@ -48,6 +63,13 @@ struct Checker {
     for (float f : {m.shininess, m.ior, m.alpha, m.metallic, m.roughness, m.transmission, m.normal_scale,
                     m.alpha_cutoff})
       finite(f, where);
+    // Beyond these, refraction's eta^2 overflows float and directions stop being numbers.
+    constexpr float min_ior = 1e-3f, max_ior = 1e3f;
+    if (!(m.ior >= min_ior && m.ior <= max_ior)) {
+      char text[64];
+      std::snprintf(text, sizeof text, "%g is out of range (%g to %g)", m.ior, min_ior, max_ior);
+      fail(where + ".ior", text);
+    }
     texture_ref(m.base_color_texture, where + ".base_color_texture");
     texture_ref(m.metallic_roughness_texture, where + ".metallic_roughness_texture");
     texture_ref(m.normal_texture, where + ".normal_texture");
@@ -70,7 +92,7 @@ struct Checker {
       if (m.indices[i] >= vertices)
         fail(at(where + ".indices", i), "index " + std::to_string(m.indices[i]) + " out of range (" +
                                            std::to_string(vertices) + " vertices)");
-    for (size_t i = 0; i < vertices; ++i) finite(m.positions[i], at(where + ".positions", i));
+    for (size_t i = 0; i < vertices; ++i) in_range(m.positions[i], at(where + ".positions", i));
     for (size_t i = 0; i < m.normals.size(); ++i) unit(m.normals[i], at(where + ".normals", i));
   }
 
@@ -84,17 +106,18 @@ struct Checker {
   }
 
   void camera(const CameraDesc& c, const std::string& where) const {
-    finite(c.position, where + ".position");
+    in_range(c.position, where + ".position");
     unit(c.forward, where + ".forward");
     unit(c.up, where + ".up");
     if (!(c.vertical_fov_degrees > 0 && c.vertical_fov_degrees < 180)) fail(where, "field of view out of (0, 180)");
     if (!(c.ortho_height > 0) || !std::isfinite(c.ortho_height)) fail(where, "orthographic height must be positive");
+    in_range(c.ortho_height, where + ".orthographic_height");
     if (!(c.aspect >= 0) || !std::isfinite(c.aspect)) fail(where, "aspect must be positive");
   }
 
   void light(const LightDesc& l, const std::string& where) const {
     finite(l.intensity, where + ".intensity");
-    finite(l.position, where + ".position");
+    in_range(l.position, where + ".position");
     if (l.kind == LightKind::directional || l.kind == LightKind::spot) unit(l.direction, where + ".direction");
     for (float f : {l.kc, l.kl, l.kq, l.spot_exponent, l.inner_cone, l.outer_cone, l.range})
       finite(f, where);
@@ -102,11 +125,41 @@ struct Checker {
 
   void shape(const ShapeDesc& s, const std::string& where) const {
     index(s.material, scene.materials.size(), false, where + ".material", "material");
-    finite(s.center, where + ".center");
+    in_range(s.center, where + ".center");
     if (s.kind != ShapeKind::sphere) unit(s.axis, where + ".axis");
     if (!(s.radius > 0) || !std::isfinite(s.radius)) fail(where + ".radius", "must be positive");
+    in_range(s.radius, where + ".radius");
     if (s.kind == ShapeKind::cylinder && (!(s.height > 0) || !std::isfinite(s.height)))
       fail(where + ".height", "must be positive");
+    if (s.kind == ShapeKind::cylinder) in_range(s.height, where + ".height");
+  }
+
+  // The corners of the mesh's bounding box, placed by the instance, computed in double: the
+  // placed vertices then lie within range too (an affine map keeps them inside the placed box).
+  struct Box {
+    vec3 lower, upper;
+    bool empty = true;
+  };
+  static Box mesh_box(const MeshDesc& m) {
+    Box box;
+    for (vec3 p : m.positions) {
+      box.lower = box.empty ? p : min(box.lower, p);
+      box.upper = box.empty ? p : max(box.upper, p);
+      box.empty = false;
+    }
+    return box;
+  }
+  void placed_in_range(const InstanceDesc& instance, const Box& box, const std::string& where) const {
+    if (box.empty) return;
+    vec3 lower = box.lower, upper = box.upper;
+    for (int corner = 0; corner < 8; ++corner) {
+      vec3 p = {corner & 1 ? upper.x : lower.x, corner & 2 ? upper.y : lower.y, corner & 4 ? upper.z : lower.z};
+      for (int r = 0; r < 3; ++r) {
+        const float* row = instance.transform.m[r];
+        in_range(double(row[0]) * p.x + double(row[1]) * p.y + double(row[2]) * p.z + double(row[3]),
+                 where + ".placed_vertices");
+      }
+    }
   }
 
   void run() const {
@@ -115,10 +168,14 @@ struct Checker {
       index(scene.textures[i].image, scene.images.size(), false, at("textures", i) + ".image", "image");
     for (size_t i = 0; i < scene.materials.size(); ++i) material(scene.materials[i], at("materials", i));
     for (size_t i = 0; i < scene.meshes.size(); ++i) mesh(scene.meshes[i], at("meshes", i));
+    std::vector<Box> mesh_boxes;
+    mesh_boxes.reserve(scene.meshes.size());
+    for (const MeshDesc& m : scene.meshes) mesh_boxes.push_back(mesh_box(m));
     for (size_t i = 0; i < scene.instances.size(); ++i) {
       std::string where = at("instances", i);
       index(scene.instances[i].mesh, scene.meshes.size(), false, where + ".mesh", "mesh");
       if (!is_finite(scene.instances[i].transform)) fail(where + ".transform", "non-finite value");
+      placed_in_range(scene.instances[i], mesh_boxes[scene.instances[i].mesh], where);
     }
     for (size_t i = 0; i < scene.shapes.size(); ++i) shape(scene.shapes[i], at("shapes", i));
     for (size_t i = 0; i < scene.cameras.size(); ++i) camera(scene.cameras[i], at("cameras", i));

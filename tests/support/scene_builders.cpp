@@ -71,7 +71,7 @@ CameraDesc perspective_camera(vec3 position, vec3 forward, vec3 up, float vfov_d
 }
 
 RenderResult render_scene(const SceneDesc& scene, const RenderOptions& options) {
-  PreparedScene prepared = prepare_scene(scene);
+  PreparedScene prepared = prepare_scene(scene, options);
   return render_prepared(prepared, options);
 }
 
