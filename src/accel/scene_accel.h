@@ -66,16 +66,6 @@ HitId intersect_nearest(const SceneAccel& accel, const Ray& ray);
 // True when anything blocks the ray before ray.tmax, or when the ray is untraceable.
 bool is_occluded(const SceneAccel& accel, const Ray& ray);
 
-// True when Embree can trace `ray` in every space of `accel`: finite origin and direction within
-// the accelerator's bound, tmax not NaN. NaN fails every comparison, so it is caught too.
-inline bool is_traceable(const SceneAccel& accel, const Ray& ray) {
-  float o = accel.max_ray_coordinate, d = 2 * accel.max_ray_coordinate;
-  // Each comparison separately: std::max would let a NaN in its second argument through.
-  return (std::abs(ray.origin.x) <= o) & (std::abs(ray.origin.y) <= o) & (std::abs(ray.origin.z) <= o) &
-         (std::abs(ray.direction.x) <= d) & (std::abs(ray.direction.y) <= d) & (std::abs(ray.direction.z) <= d) &
-         (ray.tmax >= 0);
-}
-
 // Everything about a hit point the integrators need, in world space.
 struct SurfaceHit {
   vec3 position;
