@@ -24,6 +24,7 @@ done
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 source bench/embree_cornell_common.sh
+source bench/quiet_machine.sh
 
 # cpu_seconds BINARY OUT_FILE: the render's user CPU time, written to OUT_FILE.
 cpu_seconds() {

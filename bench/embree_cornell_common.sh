@@ -39,10 +39,9 @@ embree_render_configured() {
   env "${@:4}" pathtracer -c "$embree_models/cornell_box.ecs" ${config:+--rtcore "$config"} --threads "$threads" \
     --size "$1" "$1" --spp "$2" --max-path-length 8 -o "$3" >/dev/null 2>&1
 }
-# radiant_render SIZE SPP OUT [environment for the process...]
+# radiant_render SIZE SPP OUT [environment for the process...]; $radiant_seed picks the seed
+# (default 0; references use others, bench/equal_error.sh).
 radiant_render() {
   env "${@:4}" build/radiant render "$work/cornell.scene" -o "$3" --width "$1" --height "$1" --spp "$2" --max-depth 8 \
-    --mode path --threads "$threads" --quiet
+    --mode path --threads "$threads" --seed "${radiant_seed:-0}" --quiet
 }
-now() { date +%s.%N; }
-median() { printf '%s\n' "$@" | sort -g | awk '{a[NR] = $1} END {print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2}'; }

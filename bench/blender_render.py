@@ -1,0 +1,108 @@
+"""Renders a glTF file with Blender Cycles the way radiant renders it (run by bench scripts):
+
+    blender -b --factory-startup -P bench/blender_render.py -- SCENE.gltf OUT SIZE SPP MAX_DEPTH SEED THREADS
+
+Settings that would make Cycles do different work than radiant are switched off: adaptive
+sampling, denoising, clamping, light-threshold culling, the Blackman-Harris pixel filter (a
+one-pixel box, as radiant's), and the Filmic view (Standard: sRGB, clamped, as radiant's PNG).
+MAX_DEPTH counts surface interactions as radiant's --max-depth does, so Cycles gets
+MAX_DEPTH - 1 bounces. Every non-metallic Principled BSDF becomes a Diffuse BSDF plus its emission
+(see as_lambert): radiant's Lambertian glTF material, metallic 0 with KHR_materials_specular
+factor 0, which Blender 3.4's importer does not read. OUT ending in
+.exr is written linear, anything else as 8-bit sRGB. Prints "render seconds: S" (scene sync, BVH
+and sampling, measured around the render call) for the bench script to read.
+"""
+import sys
+import time
+
+import bpy
+import numpy
+
+# Debian 12's Blender 3.4 glTF importer still uses numpy.bool, which its numpy (1.24) removed.
+if not hasattr(numpy, "bool"):
+    numpy.bool = bool
+
+args = sys.argv[sys.argv.index("--") + 1:]
+scene_path, out_path = args[0], args[1]
+size, spp, max_depth, seed, threads = (int(a) for a in args[2:7])
+
+bpy.ops.wm.read_factory_settings(use_empty=True)
+bpy.ops.import_scene.gltf(filepath=scene_path)
+scene = bpy.context.scene
+cameras = [o for o in scene.objects if o.type == "CAMERA"]
+if not cameras:
+    sys.exit("the glTF file has no camera")
+scene.camera = cameras[0]
+
+
+def as_lambert(material):
+    """Replaces a non-metallic Principled BSDF by a Diffuse BSDF (Lambert at roughness 0) plus its
+    emission: Blender 3.4's Principled diffuse is Burley's, whose retro-reflection makes rough
+    walls up to 20% brighter than the Lambertian glTF material (metallic 0, specular 0)."""
+    tree = material.node_tree
+    principled = next((n for n in tree.nodes if n.type == "BSDF_PRINCIPLED"), None)
+    output = next((n for n in tree.nodes if n.type == "OUTPUT_MATERIAL"), None)
+    if principled is None or output is None or principled.inputs["Metallic"].default_value != 0:
+        return
+    diffuse = tree.nodes.new("ShaderNodeBsdfDiffuse")
+    diffuse.inputs["Roughness"].default_value = 0.0
+    base = principled.inputs["Base Color"]
+    if base.is_linked:
+        tree.links.new(base.links[0].from_socket, diffuse.inputs["Color"])
+    else:
+        diffuse.inputs["Color"].default_value = base.default_value
+    emission = tree.nodes.new("ShaderNodeEmission")
+    emission.inputs["Color"].default_value = principled.inputs["Emission"].default_value
+    emission.inputs["Strength"].default_value = principled.inputs["Emission Strength"].default_value
+    add = tree.nodes.new("ShaderNodeAddShader")
+    tree.links.new(diffuse.outputs["BSDF"], add.inputs[0])
+    tree.links.new(emission.outputs["Emission"], add.inputs[1])
+    tree.links.new(add.outputs["Shader"], output.inputs["Surface"])
+
+
+for material in bpy.data.materials:
+    if material.node_tree:
+        as_lambert(material)
+
+scene.render.engine = "CYCLES"
+cycles = scene.cycles
+cycles.device = "CPU"
+cycles.samples = spp
+cycles.use_adaptive_sampling = False
+cycles.use_denoising = False
+cycles.seed = seed
+cycles.sample_clamp_direct = 0.0
+cycles.sample_clamp_indirect = 0.0
+cycles.light_sampling_threshold = 0.0
+cycles.max_bounces = max_depth - 1
+cycles.diffuse_bounces = max_depth - 1
+cycles.glossy_bounces = max_depth - 1
+cycles.transmission_bounces = max_depth - 1
+cycles.pixel_filter_type = "BOX"
+cycles.filter_width = 1.0
+scene.render.threads_mode = "FIXED"
+scene.render.threads = threads
+scene.render.resolution_x = size
+scene.render.resolution_y = size
+scene.render.resolution_percentage = 100
+scene.render.use_persistent_data = False
+scene.view_settings.view_transform = "Standard"
+scene.view_settings.look = "None"
+scene.view_settings.exposure = 0.0
+scene.view_settings.gamma = 1.0
+scene.world = bpy.data.worlds.new("black") if scene.world is None else scene.world
+scene.world.use_nodes = False
+scene.world.color = (0.0, 0.0, 0.0)
+
+settings = scene.render.image_settings
+if out_path.endswith(".exr"):
+    settings.file_format = "OPEN_EXR"
+    settings.color_depth = "32"
+else:
+    settings.file_format = "PNG"
+    settings.color_depth = "8"
+scene.render.filepath = out_path
+
+start = time.perf_counter()
+bpy.ops.render.render(write_still=True)
+print("render seconds: %.3f" % (time.perf_counter() - start))
