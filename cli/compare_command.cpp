@@ -35,6 +35,7 @@ struct CompareReport {
   CompareMetrics metrics;
   std::optional<ZTestResult> z_test;
   Verdict verdict = Verdict::pass;
+  std::string nonfinite;  // why a non-finite statistic failed the comparison, or ""
 };
 
 // CLI::Range lets NaN through (every comparison with it is false); thresholds must be numbers.
@@ -121,6 +122,8 @@ CompareReport compare_files(const CompareOptions& options) {
     report.z_test = run_z_test(report.a, report.b, options.z_test);
     report.verdict = report.z_test->verdict;
   }
+  if (report.metrics.nonfinite_pixels > 0 || (report.z_test && report.z_test->nonfinite_values > 0))
+    report.nonfinite = first_nonfinite(report.a, report.b);
   return report;
 }
 
@@ -209,6 +212,7 @@ void print_json(std::ostream& out, const CompareOptions& options, const CompareR
   } else {
     out << "null";
   }
+  out << ",\"nonfinite\":" << (report.nonfinite.empty() ? "null" : json_string(report.nonfinite));
   out << ",\"verdict\":\"" << verdict_name(report.verdict) << "\"}\n";
 }
 
@@ -245,6 +249,8 @@ void print_table(std::ostream& out, const CompareOptions& options, const Compare
         << ", fail above " << options.z_test.allowed_fail_percent << "%)"
         << "\n  bias z               " << z->bias_z << " (p " << z->bias_p_value
         << (options.z_test.bias_test ? ", fail below alpha)\n" : ", not tested: --mc-bias)\n");
+  if (!report.nonfinite.empty())
+    out << "  non-finite           " << report.nonfinite << ": fails whatever the thresholds\n";
   out << "verdict: " << verdict_name(report.verdict)
       << (report.z_test ? " (Monte Carlo z-test)\n" : " (thresholds)\n");
 }
