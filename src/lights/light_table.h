@@ -30,7 +30,7 @@ struct AreaLight {
 struct EnvironmentMap {
   int width = 0, height = 0;
   std::vector<color3> texels;      // linear radiance, top row first (+y up is the top)
-  Distribution2D distribution;     // over (u, v) in [0,1)^2, weighted by luminance * sin(theta)
+  Distribution2D distribution;     // over (u, v) in [0,1)^2, by luminance * sin(theta) / texel count
 };
 
 struct LightTable {
