@@ -59,7 +59,7 @@ RenderJob parse_render_line(std::vector<std::string> words, const fs::path& base
   app.add_option("--stats", job.stats_path);
   app.add_option("--aov", flags.aovs);
   app.add_option("--crop", flags.crop);
-  app.add_option("--noise-threshold", flags.options.noise_threshold)->check(CLI::PositiveNumber);
+  app.add_option("--noise-threshold", flags.options.noise_threshold)->check(positive_number());
   std::reverse(words.begin(), words.end());
   words.pop_back();  // "render"
   app.parse(words);

@@ -10,6 +10,7 @@
 #include "commands.h"
 #include "image/compare.h"
 #include "image/false_color.h"
+#include "option_parsing.h"
 
 namespace radiant::cli {
 
@@ -38,28 +39,12 @@ struct CompareReport {
   std::string nonfinite;  // why a non-finite statistic failed the comparison, or ""
 };
 
-// CLI::Range lets NaN through (every comparison with it is false); thresholds must be numbers.
-CLI::Validator finite_range(double low, double high) {
-  std::ostringstream bounds;
-  bounds << "[" << low << ", " << high << "]";
-  std::string name = bounds.str();
-  return CLI::Validator(
-      [=](std::string& text) -> std::string {
-        double value = 0;
-        if (!CLI::detail::lexical_cast(text, value) || !std::isfinite(value) || value < low ||
-            value > high)
-          return "must be a number in " + name + ", not " + text;
-        return "";
-      },
-      name);
-}
-
 void add_options(CLI::App& app, CompareOptions& options) {
   app.add_option("A", options.a, "first image (e.g. the new render)")->required();
   app.add_option("B", options.b, "second image (e.g. the reference)")->required();
   CompareThresholds& t = options.thresholds;
   const double huge = 1e30;
-  CLI::Validator non_negative = finite_range(0, huge), percent = finite_range(0, 100);
+  CLI::Validator non_negative = number_in(0, huge), percent = number_in(0, 100);
   app.add_option("--fail", t.fail, "a pixel fails when a channel differs by more")
       ->capture_default_str()->check(non_negative);
   app.add_option("--fail-percent", t.fail_percent, "fail when more than this % of pixels fail")
@@ -78,7 +63,7 @@ void add_options(CLI::App& app, CompareOptions& options) {
       "--no-mc", [&](int64_t) { options.mc = McMode::off; }, "use plain thresholds even with a variance");
   mc->excludes(no_mc);
   app.add_option("--alpha", options.z_test.alpha, "z-test: chance that equal-mean renders fail")
-      ->capture_default_str()->check(finite_range(1e-12, 0.5));
+      ->capture_default_str()->check(number_in(1e-12, 0.5));
   app.add_option("--mc-fail-percent", options.z_test.allowed_fail_percent,
                  "z-test: % of pixels allowed to fail")
       ->capture_default_str()->check(percent);
@@ -95,7 +80,7 @@ void add_options(CLI::App& app, CompareOptions& options) {
   app.add_option("--diff", options.diff_file, "write a false-color difference image");
   app.add_option("--diff-scale", options.diff_scale,
                  "difference mapped to white (default --fail, or the critical |z|)")
-      ->check(finite_range(1e-30, huge));
+      ->check(number_in(1e-30, huge));
   app.add_flag("--json", options.json, "print one JSON object on stdout");
 }
 
