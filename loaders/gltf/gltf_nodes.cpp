@@ -49,9 +49,9 @@ void place_node(GltfContext& context, const tinygltf::Node& node, const mat4& wo
   if (node.camera >= 0) add_camera(context, node.camera, world, node.name, where + ".camera");
   auto light = node.extensions.find("KHR_lights_punctual");
   if (light != node.extensions.end() && light->second.Has("light")) {
-    const tinygltf::Value& index = light->second.Get("light");
-    add_light(context, index.IsNumber() ? int(index.GetNumberAsDouble()) : -1, world,
-              where + ".extensions.KHR_lights_punctual.light");
+    std::string light_where = where + ".extensions.KHR_lights_punctual.light";
+    add_light(context, index_value(context, light->second.Get("light"), context.model.lights.size(), light_where, "light"),
+              world, light_where);
   }
 }
 
