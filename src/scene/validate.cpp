@@ -119,6 +119,8 @@ struct Checker {
       std::string where = at("instances", i);
       index(scene.instances[i].mesh, scene.meshes.size(), false, where + ".mesh", "mesh");
       if (!is_finite(scene.instances[i].transform)) fail(where + ".transform", "non-finite value");
+      mat4 inverse;
+      if (!inverse_affine(scene.instances[i].transform, inverse)) fail(where + ".transform", "singular transform");
     }
     for (size_t i = 0; i < scene.shapes.size(); ++i) shape(scene.shapes[i], at("shapes", i));
     for (size_t i = 0; i < scene.cameras.size(); ++i) camera(scene.cameras[i], at("cameras", i));

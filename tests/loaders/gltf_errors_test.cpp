@@ -232,3 +232,29 @@ TEST_CASE("gltf errors: indices and texCoords in extensions are checked before a
         "file.gltf: materials[0].extensions.KHR_materials_transmission.transmissionTexture.texCoord: "
         "TEXCOORD_-3e+09 is not supported (0 or 1)");
 }
+
+TEST_CASE("gltf errors: a NUL or line break in a URI is shown escaped, on one line") {
+  std::string message = error_of("{\"asset\":{\"version\":\"2.0\"},\"buffers\":[{\"byteLength\":4,"
+                                 "\"uri\":\"a\\u0000b.bin\"}]}");
+  CHECK(message == "file.gltf: buffers[0].uri: file name contains a NUL byte");
+  message = error_of("{\"asset\":{\"version\":\"2.0\"},\"buffers\":[{\"byteLength\":4,"
+                     "\"uri\":\"/abs\\nolute.bin\"}]}");
+  CHECK(message == "file.gltf: buffers[0].uri: '/abs\\nolute.bin' is an absolute path (use --allow-external-files "
+                   "to allow it)");
+}
+
+TEST_CASE("gltf: a node scaled to zero is skipped with a warning naming the file and the node") {
+  ScratchDir dir("gltf-scale-zero");
+  GltfBuilder b = quad_builder();
+  std::string path = dir.write("flat.gltf", b.gltf(std::string(quad_mesh) +
+                                                   ",\"nodes\":[{\"mesh\":0},{\"mesh\":0,\"scale\":[1,0,1]}],"
+                                                   "\"scenes\":[{\"nodes\":[0,1]}]"))
+                         .string();
+  SceneDesc scene = load_scene(path);
+  CHECK(scene.instances.size() == 1);
+  REQUIRE(scene.warnings.size() == 1);
+  CHECK(scene.warnings[0] == path + ": nodes[1]: singular transform (a zero scale): the mesh is not rendered");
+  CHECK(error_of(b.gltf(std::string(quad_mesh) + ",\"nodes\":[{\"mesh\":0,\"scale\":[0,0,0]}],"
+                                                 "\"scenes\":[{\"nodes\":[0]}]")) ==
+        "file.gltf: scene: nothing to render (no meshes placed and no shapes)");
+}

@@ -81,3 +81,10 @@ TEST_CASE("validate: a scene with nothing placed has nothing to render") {
   scene.instances.clear();
   CHECK(problem(scene) == "s.gltf: scene: nothing to render (no meshes placed and no shapes)");
 }
+
+TEST_CASE("validate: a singular instance transform names the file and the instance") {
+  // It used to surface only when the accelerator was built: "radiant: instances[0]: singular transform".
+  SceneDesc scene = triangle_scene();
+  scene.instances[0].transform.m[1][1] = 0;
+  CHECK(problem(scene) == "s.gltf: instances[0].transform: singular transform");
+}
