@@ -172,12 +172,23 @@ std::vector<std::string> uris_of(const JsonValue* array) {
   return uris;
 }
 
+// glTF 2.x only: a 1.0 file parses as JSON but means something else (objects instead of arrays).
+void check_version(const JsonValue& root, const std::string& file) {
+  const JsonValue* asset = member(root, "asset");
+  const JsonValue* version = asset ? member(*asset, "version") : nullptr;
+  if (!version || version->kind != JsonValue::Kind::string) return;  // tinygltf reports a missing one
+  if (version->text.compare(0, 2, "2.") != 0)
+    throw LoadError(file + ": asset.version: glTF " + escaped(version->text) +
+                    " is not supported (radiant reads glTF 2.x)");
+}
+
 }  // namespace
 
 GltfDeclarations read_gltf_declarations(const std::string& json, const std::string& file) {
   JsonReader reader{json, file};
   if (json.compare(0, 3, "\xEF\xBB\xBF") == 0) reader.at = 3;  // a UTF-8 byte order mark, as tinygltf allows
   JsonValue root = reader.value(0);
+  check_version(root, file);
   GltfDeclarations out;
   if (const JsonValue* buffers = member(root, "buffers")) {
     for (size_t i = 0; i < buffers->items.size(); ++i) {
@@ -206,6 +217,8 @@ static uint32_t read_u32(const std::string& bytes, size_t offset) {
 std::string glb_json_chunk(const std::string& bytes, const std::string& file) {
   if (bytes.size() < 20 || bytes.compare(0, 4, "glTF") != 0)
     throw LoadError(file + ": not a GLB file (bad header)");
+  if (uint32_t version = read_u32(bytes, 4); version != 2)
+    throw LoadError(file + ": GLB version " + std::to_string(version) + " is not supported (radiant reads glTF 2.x)");
   uint32_t chunk_length = read_u32(bytes, 12), chunk_type = read_u32(bytes, 16);
   if (chunk_type != 0x4E4F534Au || chunk_length > bytes.size() - 20)
     throw LoadError(file + ": GLB: the first chunk is not a complete JSON chunk");

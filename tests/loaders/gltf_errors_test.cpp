@@ -258,3 +258,15 @@ TEST_CASE("gltf: a node scaled to zero is skipped with a warning naming the file
                                                  "\"scenes\":[{\"nodes\":[0]}]")) ==
         "file.gltf: scene: nothing to render (no meshes placed and no shapes)");
 }
+
+TEST_CASE("gltf errors: glTF 1.0 and GLB version 1 are refused as such") {
+  CHECK(error_of("{\"asset\":{\"version\":\"1.0\"},\"meshes\":{}}") ==
+        "file.gltf: asset.version: glTF 1.0 is not supported (radiant reads glTF 2.x)");
+  CHECK(error_of("{\"asset\":{\"version\":\"3.0\"}}") ==
+        "file.gltf: asset.version: glTF 3.0 is not supported (radiant reads glTF 2.x)");
+  GltfBuilder b = quad_builder();
+  std::string glb = b.glb(std::string(quad_mesh) + placed);
+  CHECK(error_of(glb, "file.glb") == "no error");
+  glb[4] = 1;  // the header's version field
+  CHECK(error_of(glb, "file.glb") == "file.glb: GLB version 1 is not supported (radiant reads glTF 2.x)");
+}
