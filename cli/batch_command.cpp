@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "commands.h"
+#include "lights/light_table.h"
 #include "load_scene.h"
 #include "option_parsing.h"
 #include "render_job.h"
@@ -102,6 +103,31 @@ std::vector<BatchStep> parse_script(std::istream& in, const std::string& name, c
   return steps;
 }
 
+// A scene of the script, loaded while the script is checked and kept until its views are done.
+struct LoadedScene {
+  std::unique_ptr<SceneDesc> scene;
+  EffectSet effects;
+  double load_seconds = 0;
+};
+
+LoadedScene load_batch_scene(const std::string& path, bool allow_external) {
+  auto start = std::chrono::steady_clock::now();
+  LoadOptions options;
+  options.allow_external_files = allow_external;
+  LoadedScene loaded;
+  loaded.scene = std::make_unique<SceneDesc>(load_scene(path, options));
+  loaded.effects = analyze_effects(*loaded.scene);
+  loaded.load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return loaded;
+}
+
+// Everything about a view that can be known before rendering: its settings (size, crop, camera,
+// field of view, mode) and that its environment map can be read.
+void check_view(const LoadedScene& loaded, const RenderJob& job) {
+  ResolvedSettings settings = resolve_settings(*loaded.scene, loaded.effects, job.options);
+  if (!settings.environment_map.empty()) open_environment_map(settings.environment_map);
+}
+
 }  // namespace
 
 int batch_main(int argc, char** argv) {
@@ -132,21 +158,32 @@ int batch_main(int argc, char** argv) {
     return exit_failure;
   }
 
-  std::unique_ptr<SceneDesc> scene;
+  // Every scene is loaded and every view resolved before the first render: a bad later line
+  // must stop the script before anything is written.
+  std::vector<LoadedScene> scenes;
+  for (const BatchStep& step : steps) {
+    try {
+      if (!step.scene.empty()) scenes.push_back(load_batch_scene(step.scene, allow_external));
+      else check_view(scenes.back(), step.job);
+    } catch (const std::exception& e) {
+      std::cerr << "radiant batch: " << script_path << ":" << step.line << ": " << e.what() << "\n";
+      return exit_failure;
+    }
+  }
+
   std::unique_ptr<PreparedScene> prepared;
-  std::string scene_path;
+  size_t scene_index = 0;
   double load_seconds = 0;
   for (const BatchStep& step : steps) {
     try {
       if (!step.scene.empty()) {
-        auto start = std::chrono::steady_clock::now();
-        LoadOptions options;
-        options.allow_external_files = allow_external;
         prepared.reset();
-        scene = std::make_unique<SceneDesc>(load_scene(step.scene, options));
-        prepared = std::make_unique<PreparedScene>(prepare_scene(*scene));
-        scene_path = step.scene;
-        load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (scene_index > 0) scenes[scene_index - 1].scene.reset();  // its views are done
+        LoadedScene& loaded = scenes[scene_index++];
+        auto start = std::chrono::steady_clock::now();
+        prepared = std::make_unique<PreparedScene>(prepare_scene(*loaded.scene));
+        load_seconds = loaded.load_seconds +
+                       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         continue;
       }
       RenderJob job = step.job;
@@ -154,7 +191,7 @@ int batch_main(int argc, char** argv) {
       PhaseTimes times;
       times.load = load_seconds;
       load_seconds = 0;  // the load is paid once, by the first view
-      run_render_job(scene_path, *prepared, job, times);
+      run_render_job(scenes[scene_index - 1].scene->source_path, *prepared, job, times);
     } catch (const std::exception& e) {
       std::cerr << "radiant batch: " << script_path << ":" << step.line << ": " << e.what() << "\n";
       return exit_failure;

@@ -91,7 +91,7 @@ std::vector<SamplerKind> parse_samplers(const std::string& text) {
 
 // The scene's own image size scaled down so its larger side is default_converge_size.
 void choose_default_size(const PreparedScene& prepared, RenderOptions& options) {
-  ResolvedSettings s = resolve_settings(prepared, options);
+  ResolvedSettings s = resolve_settings(*prepared.scene, prepared.effects, options);
   double scale = double(default_converge_size) / std::max(s.width, s.height);
   if (scale >= 1) return;
   options.width = std::max(1, int(std::lround(s.width * scale)));
@@ -104,7 +104,7 @@ std::vector<RenderMode> resolve_modes(const PreparedScene& prepared, RenderOptio
   std::vector<RenderMode> modes;
   for (RenderMode mode : given) {
     options.mode = mode;
-    RenderMode resolved = resolve_settings(prepared, options).mode;
+    RenderMode resolved = resolve_settings(*prepared.scene, prepared.effects, options).mode;
     if (std::find(modes.begin(), modes.end(), resolved) == modes.end()) modes.push_back(resolved);
   }
   return modes;
@@ -267,7 +267,7 @@ void run_converge(const std::string& scene_path, ConvergeFlags& flags, std::vect
   if (flags.height) options.height = flags.height;
   if (!flags.width && !flags.height) choose_default_size(prepared, options);
   modes = resolve_modes(prepared, options, modes);
-  ResolvedSettings size = resolve_settings(prepared, options);
+  ResolvedSettings size = resolve_settings(*prepared.scene, prepared.effects, options);
   if (file_reference && (size.width != file_reference->image.width || size.height != file_reference->image.height))
     throw std::invalid_argument("--reference " + flags.reference_file + " is " + std::to_string(file_reference->image.width) +
                                 "x" + std::to_string(file_reference->image.height) + " but the renders are " +

@@ -85,13 +85,8 @@ void check_environment_texel(const std::string& path, const ImageHeader& spec, i
 }
 
 EnvironmentMap load_environment_map(const std::string& path) {
-  std::string error;
-  auto input = open_image_file(path, error);
-  if (!input) throw std::runtime_error(path + ": cannot read environment map: " + error);
+  std::unique_ptr<ImageSource> input = open_environment_map(path);
   const ImageHeader& spec = input->header();
-  if (spec.width <= 0 || spec.height <= 0 || spec.channels <= 0 ||
-      size_t(spec.width) * spec.height > (size_t(1) << 28))
-    throw std::runtime_error(path + ": environment map has an unusable size");
   std::vector<float> pixels(size_t(spec.width) * spec.height * spec.channels);
   if (!input->read(spec.channels, PixelType::float32, pixels.data()))
     throw std::runtime_error(path + ": cannot read environment map: " + input->error());
@@ -129,6 +124,17 @@ std::vector<float> float_weights(const std::vector<double>& weights) {
 }
 
 }  // namespace
+
+std::unique_ptr<ImageSource> open_environment_map(const std::string& path) {
+  std::string error;
+  auto input = open_image_file(path, error);
+  if (!input) throw std::runtime_error(path + ": cannot read environment map: " + error);
+  const ImageHeader& spec = input->header();
+  if (spec.width <= 0 || spec.height <= 0 || spec.channels <= 0 ||
+      size_t(spec.width) * spec.height > (size_t(1) << 28))
+    throw std::runtime_error(path + ": environment map has an unusable size");
+  return input;
+}
 
 LightTable make_light_table(const SceneDesc& scene, color3 environment_color, const std::string& environment_map_path,
                             bool use_area_lights) {

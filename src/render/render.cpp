@@ -131,7 +131,7 @@ PreparedScene prepare_scene(const SceneDesc& scene) {
 RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions& options) {
   RenderResult result;
   ResolvedSettings& s = result.settings;
-  s = resolve_settings(prepared, options);
+  s = resolve_settings(*prepared.scene, prepared.effects, options);
   bool path_like = s.mode != RenderMode::whitted;
   LightTable lights = make_light_table(*prepared.scene, s.environment_color, s.environment_map, path_like);
   lights.environment_scale = prepared.scene->environment.map_scale;

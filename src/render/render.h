@@ -36,8 +36,9 @@ struct ResolvedSettings {
   PixelWindow window;
 };
 
-// Throws std::invalid_argument for settings that make no sense (names the flag).
-ResolvedSettings resolve_settings(const PreparedScene& prepared, const RenderOptions& options);
+// Throws std::invalid_argument for settings that make no sense (names the flag). Needs only the
+// scene and its effects, so that `batch` can check every view before building anything.
+ResolvedSettings resolve_settings(const SceneDesc& scene, const EffectSet& effects, const RenderOptions& options);
 
 // auto mode's rule (docs/effects.md): Whitted when it gives the path tracer's converged answer.
 RenderMode choose_auto_mode(const SceneDesc& scene, std::string& reason);
