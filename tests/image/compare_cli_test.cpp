@@ -2,6 +2,7 @@
 #include <doctest/doctest.h>
 
 #include <cstdlib>
+#include <fstream>
 
 #include "image/compare.h"
 #include "image/compare_test_images.h"
@@ -170,6 +171,17 @@ TEST_CASE("radiant compare fails, saying why, when a variance is infinite") {
   // Plain thresholds do not read the variance; the z-test refuses it even against itself.
   CHECK(run_radiant("compare " + quoted(render) + " " + quoted(render) + " --no-mc").exit_code == 0);
   CHECK(run_radiant("compare " + quoted(render) + " " + quoted(render)).exit_code == 1);
+}
+
+TEST_CASE("radiant compare: a truncated PNG is one line on stderr, without libpng's own") {
+  ComparePair pair;
+  std::filesystem::path png = pair.dir.file("a.png"), cut = pair.dir.file("cut.png");
+  test::write_rgb(png, 8, 4, test::ramp_rgb(8, 4));
+  std::string bytes = test::read_bytes(png);
+  std::ofstream(cut, std::ios::binary) << bytes.substr(0, bytes.size() - 20);
+  test::CommandResult r = run_radiant("compare " + quoted(png) + " " + quoted(cut));
+  CHECK(r.exit_code == 2);
+  CHECK(r.err == "radiant compare: " + cut.string() + ": cannot read pixels: Read Error\n");
 }
 
 }  // namespace radiant
