@@ -142,8 +142,9 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
   PassRunner runner{ctx, s, select_integrator(s), make_camera_frame(s.camera, s.width, s.height),
                     !options.aovs.empty(), options.seed, result.film, counts};
 
-  int threads = options.threads > 0 ? options.threads : tbb::this_task_arena::max_concurrency();
-  tbb::task_arena arena(threads);
+  // More threads than TBB's limit (the cores) are not started anyway, and asking prints a warning.
+  int cores = tbb::this_task_arena::max_concurrency();
+  tbb::task_arena arena(options.threads > 0 ? std::min(options.threads, cores) : cores);
   auto start = Clock::now();
   std::vector<uint8_t> active;
   uint32_t done = 0, total = uint32_t(s.spp);

@@ -168,3 +168,17 @@ TEST_CASE("render cli: --camera picks a camera by index or name; an unknown one 
   CHECK(r.err.find("1 'top'") != std::string::npos);
   CHECK_FALSE(fs::exists(dir.file("none.png")));
 }
+
+TEST_CASE("render cli: --quiet prints nothing, not even TBB's warning for more threads than cores") {
+  ScratchDir dir("cli-many-threads");
+  fs::path scene = dir.write("plane.scene", lit_plane_scene);
+  fs::path one = dir.file("one.exr"), many = dir.file("many.exr");
+  CommandResult r = run_radiant("render " + quoted(scene) + " -o " + quoted(many) +
+                                " --width 8 --height 8 --spp 2 --mode path --quiet --threads 1024");
+  CHECK(r.exit_code == 0);
+  CHECK(r.err == "");
+  REQUIRE(run_radiant("render " + quoted(scene) + " -o " + quoted(one) +
+                      " --width 8 --height 8 --spp 2 --mode path --quiet --threads 1")
+              .exit_code == 0);
+  CHECK(read_bytes(one) == read_bytes(many));
+}
