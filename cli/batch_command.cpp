@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "commands.h"
+#include "lights/light_table.h"
 #include "load_scene.h"
 #include "option_parsing.h"
 #include "render_job.h"
@@ -59,7 +60,7 @@ RenderJob parse_render_line(std::vector<std::string> words, const fs::path& base
   app.add_option("--stats", job.stats_path);
   app.add_option("--aov", flags.aovs);
   app.add_option("--crop", flags.crop);
-  app.add_option("--noise-threshold", flags.options.noise_threshold)->check(CLI::PositiveNumber);
+  app.add_option("--noise-threshold", flags.options.noise_threshold)->check(positive_number());
   std::reverse(words.begin(), words.end());
   words.pop_back();  // "render"
   app.parse(words);
@@ -102,6 +103,30 @@ std::vector<BatchStep> parse_script(std::istream& in, const std::string& name, c
   return steps;
 }
 
+// A scene of the script, loaded and prepared while the script is checked, and kept until its
+// views are done.
+struct LoadedScene {
+  std::unique_ptr<PreparedScene> prepared;
+  double load_seconds = 0;  // loading and building, paid by its first view
+};
+
+LoadedScene load_batch_scene(const std::string& path, bool allow_external) {
+  auto start = std::chrono::steady_clock::now();
+  LoadOptions options;
+  options.allow_external_files = allow_external;
+  LoadedScene loaded;
+  loaded.prepared = std::make_unique<PreparedScene>(prepare_scene(load_scene(path, options)));
+  loaded.load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return loaded;
+}
+
+// Everything about a view that can be known before rendering: its settings (size, crop, camera,
+// field of view, mode) and that its environment map can be read.
+void check_view(const LoadedScene& loaded, const RenderJob& job) {
+  ResolvedSettings settings = resolve_settings(*loaded.prepared, job.options);
+  if (!settings.environment_map.empty()) open_environment_map(settings.environment_map);
+}
+
 }  // namespace
 
 int batch_main(int argc, char** argv) {
@@ -132,19 +157,26 @@ int batch_main(int argc, char** argv) {
     return exit_failure;
   }
 
-  std::unique_ptr<PreparedScene> prepared;
-  std::string scene_path;
+  // Every scene is loaded and every view resolved before the first render: a bad later line
+  // must stop the script before anything is written.
+  std::vector<LoadedScene> scenes;
+  for (const BatchStep& step : steps) {
+    try {
+      if (!step.scene.empty()) scenes.push_back(load_batch_scene(step.scene, allow_external));
+      else check_view(scenes.back(), step.job);
+    } catch (const std::exception& e) {
+      std::cerr << "radiant batch: " << script_path << ":" << step.line << ": " << e.what() << "\n";
+      return exit_failure;
+    }
+  }
+
+  size_t scene_index = 0;
   double load_seconds = 0;
   for (const BatchStep& step : steps) {
     try {
       if (!step.scene.empty()) {
-        auto start = std::chrono::steady_clock::now();
-        LoadOptions options;
-        options.allow_external_files = allow_external;
-        prepared.reset();
-        prepared = std::make_unique<PreparedScene>(prepare_scene(load_scene(step.scene, options)));
-        scene_path = step.scene;
-        load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (scene_index > 0) scenes[scene_index - 1].prepared.reset();  // its views are done
+        load_seconds = scenes[scene_index++].load_seconds;
         continue;
       }
       RenderJob job = step.job;
@@ -152,7 +184,8 @@ int batch_main(int argc, char** argv) {
       PhaseTimes times;
       times.load = load_seconds;
       load_seconds = 0;  // the load is paid once, by the first view
-      run_render_job(scene_path, *prepared, job, times);
+      PreparedScene& prepared = *scenes[scene_index - 1].prepared;
+      run_render_job(prepared.scene->source_path, prepared, job, times);
     } catch (const std::exception& e) {
       std::cerr << "radiant batch: " << script_path << ":" << step.line << ": " << e.what() << "\n";
       return exit_failure;

@@ -10,6 +10,7 @@
 #include "commands.h"
 #include "image/compare.h"
 #include "image/false_color.h"
+#include "option_parsing.h"
 
 namespace radiant::cli {
 
@@ -35,30 +36,15 @@ struct CompareReport {
   CompareMetrics metrics;
   std::optional<ZTestResult> z_test;
   Verdict verdict = Verdict::pass;
+  std::string nonfinite;  // why a non-finite statistic failed the comparison, or ""
 };
-
-// CLI::Range lets NaN through (every comparison with it is false); thresholds must be numbers.
-CLI::Validator finite_range(double low, double high) {
-  std::ostringstream bounds;
-  bounds << "[" << low << ", " << high << "]";
-  std::string name = bounds.str();
-  return CLI::Validator(
-      [=](std::string& text) -> std::string {
-        double value = 0;
-        if (!CLI::detail::lexical_cast(text, value) || !std::isfinite(value) || value < low ||
-            value > high)
-          return "must be a number in " + name + ", not " + text;
-        return "";
-      },
-      name);
-}
 
 void add_options(CLI::App& app, CompareOptions& options) {
   app.add_option("A", options.a, "first image (e.g. the new render)")->required();
   app.add_option("B", options.b, "second image (e.g. the reference)")->required();
   CompareThresholds& t = options.thresholds;
   const double huge = 1e30;
-  CLI::Validator non_negative = finite_range(0, huge), percent = finite_range(0, 100);
+  CLI::Validator non_negative = number_in(0, huge), percent = number_in(0, 100);
   app.add_option("--fail", t.fail, "a pixel fails when a channel differs by more")
       ->capture_default_str()->check(non_negative);
   app.add_option("--fail-percent", t.fail_percent, "fail when more than this % of pixels fail")
@@ -77,7 +63,7 @@ void add_options(CLI::App& app, CompareOptions& options) {
       "--no-mc", [&](int64_t) { options.mc = McMode::off; }, "use plain thresholds even with a variance");
   mc->excludes(no_mc);
   app.add_option("--alpha", options.z_test.alpha, "z-test: chance that equal-mean renders fail")
-      ->capture_default_str()->check(finite_range(1e-12, 0.5));
+      ->capture_default_str()->check(number_in(1e-12, 0.5));
   app.add_option("--mc-fail-percent", options.z_test.allowed_fail_percent,
                  "z-test: % of pixels allowed to fail")
       ->capture_default_str()->check(percent);
@@ -94,7 +80,7 @@ void add_options(CLI::App& app, CompareOptions& options) {
   app.add_option("--diff", options.diff_file, "write a false-color difference image");
   app.add_option("--diff-scale", options.diff_scale,
                  "difference mapped to white (default --fail, or the critical |z|)")
-      ->check(finite_range(1e-30, huge));
+      ->check(number_in(1e-30, huge));
   app.add_flag("--json", options.json, "print one JSON object on stdout");
 }
 
@@ -121,6 +107,8 @@ CompareReport compare_files(const CompareOptions& options) {
     report.z_test = run_z_test(report.a, report.b, options.z_test);
     report.verdict = report.z_test->verdict;
   }
+  if (report.metrics.nonfinite_pixels > 0 || (report.z_test && report.z_test->nonfinite_values > 0))
+    report.nonfinite = first_nonfinite(report.a, report.b);
   return report;
 }
 
@@ -209,6 +197,7 @@ void print_json(std::ostream& out, const CompareOptions& options, const CompareR
   } else {
     out << "null";
   }
+  out << ",\"nonfinite\":" << (report.nonfinite.empty() ? "null" : json_string(report.nonfinite));
   out << ",\"verdict\":\"" << verdict_name(report.verdict) << "\"}\n";
 }
 
@@ -245,6 +234,8 @@ void print_table(std::ostream& out, const CompareOptions& options, const Compare
         << ", fail above " << options.z_test.allowed_fail_percent << "%)"
         << "\n  bias z               " << z->bias_z << " (p " << z->bias_p_value
         << (options.z_test.bias_test ? ", fail below alpha)\n" : ", not tested: --mc-bias)\n");
+  if (!report.nonfinite.empty())
+    out << "  non-finite           " << report.nonfinite << ": fails whatever the thresholds\n";
   out << "verdict: " << verdict_name(report.verdict)
       << (report.z_test ? " (Monte Carlo z-test)\n" : " (thresholds)\n");
 }

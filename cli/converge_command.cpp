@@ -237,9 +237,9 @@ void bind_flags(CLI::App& app, ConvergeFlags& flags) {
       ->check(CLI::Range(1, 1 << 24));
   app.add_option("--max-spp", flags.max_spp, "Top of the default ladder 1, 2, 4, ... (default 256)")->check(CLI::Range(1, 1 << 24));
   app.add_option("--spp-ladder", flags.spp_ladder, "The ladder as a list, e.g. 1,4,16,64");
-  app.add_option("--target-error", flags.target_error, "Predict the spp and time that reach this RMSE")->check(CLI::PositiveNumber);
+  app.add_option("--target-error", flags.target_error, "Predict the spp and time that reach this RMSE")->check(positive_number());
   app.add_option("--edge-fraction", flags.edge_fraction, "Fraction of pixels counted as edges (default 0.1)")
-      ->check(CLI::Range(0.001, 1.0));
+      ->check(number_in(0.001, 1.0));
   app.add_option("--timing-runs", flags.timing.min_runs, "Time each step as the fastest of at least N runs (default 1; short steps run more)")
       ->check(CLI::Range(1, 100));
   app.add_flag("--supersampling", flags.supersampling, "The anti-aliasing table: 1, 81 and 324 spp for each sampler, edge error");

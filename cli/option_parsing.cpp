@@ -1,6 +1,7 @@
 #include "option_parsing.h"
 
 #include <cmath>
+#include <functional>
 #include <sstream>
 
 namespace radiant::cli {
@@ -15,20 +16,54 @@ std::vector<std::string> split(const std::string& text, char separator) {
   return parts;
 }
 
-double parse_number(const std::string& flag, const std::string& text) {
-  size_t used = 0;
-  double value = 0;
+constexpr double largest_float = std::numeric_limits<float>::max();
+
+// A number whose float is finite; `used` is how much of `text` it took (0 when none).
+bool read_float_number(const std::string& text, double& value, size_t& used) {
   try {
     value = std::stod(text, &used);
   } catch (const std::exception&) {
     used = 0;
   }
-  if (used != text.size() || text.empty() || !std::isfinite(value))
-    throw CLI::ValidationError(flag, "'" + text + "' is not a finite number");
+  return used > 0 && used == text.size() && std::abs(value) <= largest_float;
+}
+
+double parse_number(const std::string& flag, const std::string& text) {
+  double value = 0;
+  size_t used = 0;
+  if (!read_float_number(text, value, used)) throw CLI::ValidationError(flag, "'" + text + "' is not a finite number");
   return value;
 }
 
+// A validator accepting numbers finite in a float that `accept` takes; `what` describes them.
+CLI::Validator number_validator(std::function<bool(double)> accept, const std::string& what) {
+  return CLI::Validator(
+      [=](std::string& text) -> std::string {
+        double value = 0;
+        size_t used = 0;
+        if (!read_float_number(text, value, used) || !accept(value)) return "must be " + what + ", not " + text;
+        return "";
+      },
+      what);
+}
+
+std::string number_text(double value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
+
 }  // namespace
+
+CLI::Validator number_in(double low, double high) {
+  return number_validator([=](double v) { return v >= low && v <= high; },
+                          "a number in [" + number_text(low) + ", " + number_text(high) + "]");
+}
+
+CLI::Validator positive_number(double high) {
+  return number_validator([=](double v) { return v > 0 && v <= high; },
+                          "a number in (0, " + number_text(high) + "]");
+}
 
 vec3 parse_vec3(const std::string& flag, const std::string& text) {
   auto parts = split(text, ',');
@@ -113,7 +148,7 @@ void RenderFlags::bind(CLI::App& app, bool image_flags) {
   app.add_option("--look-from", look_from, "Camera position X,Y,Z");
   app.add_option("--look-at", look_at, "Point the camera looks at X,Y,Z");
   app.add_option("--up", up, "Camera up vector X,Y,Z");
-  app.add_option("--fov", fov, "Vertical field of view in degrees");
+  app.add_option("--fov", fov, "Vertical field of view in degrees")->check(positive_number(180));
   app.add_option("--effects", options.effects, "Switch effects off/on: e.g. -shadows,-indirect, or 'all' (generic integrator)");
   app.add_flag("--allow-external-files", allow_external_files, "Let scene files refer to files outside their folder");
   app.add_option("--max-memory", max_memory_gb, "Refuse scenes declaring more geometry/texture memory (GiB; default 1/4 of RAM)")

@@ -3,13 +3,20 @@
 
 #include <CLI/CLI.hpp>
 
+#include <limits>
 #include <string>
 
 #include "render/render_options.h"
 
 namespace radiant::cli {
 
-// Each throws CLI::ValidationError naming `flag` on bad input.
+// Validators for numeric flags. CLI11's Range and PositiveNumber let NaN through (every
+// comparison with it is false) and check a double, while most flags are stored in a float:
+// these take numbers finite in a float and in [low, high], or (0, high] for the positive one.
+CLI::Validator number_in(double low, double high);
+CLI::Validator positive_number(double high = std::numeric_limits<float>::max());
+
+// Each throws CLI::ValidationError naming `flag` on bad input. Numbers must be finite as floats.
 vec3 parse_vec3(const std::string& flag, const std::string& text);
 RenderMode parse_mode(const std::string& flag, const std::string& text);
 SamplerKind parse_sampler(const std::string& flag, const std::string& text);

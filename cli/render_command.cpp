@@ -39,7 +39,7 @@ int render_main(int argc, char** argv) {
   app.add_option("--time-limit", flags.options.time_limit_seconds, "Stop after this many seconds (loading included)")
       ->check(CLI::PositiveNumber);
   app.add_option("--noise-threshold", flags.options.noise_threshold, "Adaptive sampling: stop pixels under this relative error")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   app.add_option("--crop", flags.crop, "Render only pixels X0,Y0,X1,Y1 (half-open)");
   app.add_option("--aov", flags.aovs, "Extra EXR channels: albedo,normal,depth,variance,spp");
   app.add_option("--stats", stats_path, "Write render statistics as JSON");

@@ -24,16 +24,16 @@ fs::path resolve_inside(const fs::path& base_dir, const std::string& uri, bool a
   if (allow_external) return (relative.is_absolute() ? relative : base_dir / relative).lexically_normal();
   const std::string hint = " (use --allow-external-files to allow it)";
   if (relative.is_absolute() || relative.has_root_name() || relative.has_root_directory())
-    throw LoadError(where + ": '" + uri + "' is an absolute path" + hint);
+    throw LoadError(where + ": '" + escaped(uri) + "' is an absolute path" + hint);
   fs::path normal = relative.lexically_normal();
   if (!normal.empty() && *normal.begin() == "..")
-    throw LoadError(where + ": '" + uri + "' leaves the scene's folder" + hint);
+    throw LoadError(where + ": '" + escaped(uri) + "' leaves the scene's folder" + hint);
   // Symlinks may still lead outside: compare the real locations.
   std::error_code ec;
   fs::path real_base = fs::weakly_canonical(fs::absolute(base_dir), ec);
   fs::path real_file = fs::weakly_canonical(fs::absolute(base_dir / normal), ec);
   if (ec || !is_inside(real_base, real_file))
-    throw LoadError(where + ": '" + uri + "' leads outside the scene's folder through a symlink" + hint);
+    throw LoadError(where + ": '" + escaped(uri) + "' leads outside the scene's folder through a symlink" + hint);
   return real_file;
 }
 

@@ -24,6 +24,10 @@ struct LoadOptions {
 // Joins a library's multi-line message into one line ("; " between non-empty lines).
 std::string one_line(const std::string& text);
 
+// Text from a file (a URI, a name) made safe to show inside a one-line message: control bytes,
+// NUL included, are written as \n, \r, \t or \xNN instead of cutting or breaking the line.
+std::string escaped(const std::string& text);
+
 // A quarter of physical memory: the default for LoadOptions::max_memory_bytes.
 size_t default_max_memory();
 

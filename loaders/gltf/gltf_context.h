@@ -4,7 +4,10 @@
 
 #include <tiny_gltf.h>
 
+#include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -47,6 +50,34 @@ inline void check_index(const GltfContext& context, int index, size_t size, cons
   if (index < 0 || size_t(index) >= size)
     context.fail(where, what + " " + std::to_string(index) + " out of range (" + std::to_string(size) +
                             " " + plural(what) + ")");
+}
+
+// A number from the file as messages show it: "1e+10", "-0.5", "3".
+inline std::string number_text(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+// A radiance or intensity from the file as a float: it must be a non-negative number a float holds.
+inline float non_negative_float(const GltfContext& context, double value, const std::string& where) {
+  if (value < 0) context.fail(where, "must not be negative, got " + number_text(value));
+  if (!(value <= std::numeric_limits<float>::max())) context.fail(where, number_text(value) + " does not fit in a float");
+  return float(value);
+}
+
+// An index that tinygltf leaves as a JSON value (extensions): a whole number inside an array of
+// `size` elements, checked before it becomes an int (a double out of int's range is undefined
+// behaviour to convert).
+inline int index_value(const GltfContext& context, const tinygltf::Value& value, size_t size,
+                       const std::string& where, const std::string& what) {
+  if (!value.IsNumber()) context.fail(where, "expected a " + what + " index, found a non-number");
+  double index = value.GetNumberAsDouble();
+  if (index != std::floor(index)) context.fail(where, what + " " + number_text(index) + " is not a whole number");
+  if (!(index >= 0 && index < double(size)))
+    context.fail(where, what + " " + number_text(index) + " out of range (" + std::to_string(size) + " " +
+                            plural(what) + ")");
+  return int(index);
 }
 
 }  // namespace radiant

@@ -32,7 +32,7 @@ static std::string where_of(const GltfFileAccess& access, const std::string& uri
   };
   std::string where = find(access.declarations->buffer_uris, "buffers");
   if (where.empty()) where = find(access.declarations->image_uris, "images");
-  if (where.empty()) where = "uri '" + uri + "'";
+  if (where.empty()) where = "uri '" + escaped(uri) + "'";
   return access.file + ": " + where;
 }
 

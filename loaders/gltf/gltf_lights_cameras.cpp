@@ -14,13 +14,14 @@ static vec3 world_forward(const GltfContext& context, const mat4& world, const s
 void add_light(GltfContext& context, int index, const mat4& world, const std::string& where) {
   check_index(context, index, context.model.lights.size(), where, "light");
   const tinygltf::Light& source = context.model.lights[index];
+  std::string at = "extensions.KHR_lights_punctual." + element("lights", size_t(index));
   LightDesc light;
   light.name = source.name.empty() ? element("lights", size_t(index)) : source.name;
-  color3 color = source.color.size() >= 3
-                     ? color3{float(source.color[0]), float(source.color[1]), float(source.color[2])}
-                     : color3{1, 1, 1};
+  color3 color = {1, 1, 1};
+  if (source.color.size() >= 3)
+    for (int c = 0; c < 3; ++c) color[c] = non_negative_float(context, source.color[size_t(c)], at + ".color");
   // Radiometric 1:1 (docs/gltf-obj.md): cd -> W/sr, lux -> W/m^2.
-  light.intensity = color * float(source.intensity);
+  light.intensity = color * non_negative_float(context, source.intensity, at + ".intensity");
   light.position = transform_point(world, {0, 0, 0});
   light.direction = world_forward(context, world, where);
   light.kc = 0, light.kl = 0, light.kq = 1;

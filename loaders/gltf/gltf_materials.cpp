@@ -75,21 +75,31 @@ static vec2 pair_of(const tinygltf::Value& object, const char* key, vec2 fallbac
   return {float(v.Get(0).GetNumberAsDouble()), float(v.Get(1).GetNumberAsDouble())};
 }
 
-static TextureRef texture_ref(const GltfContext& context, int index, int texcoord,
+// The UV set a texture reads: TEXCOORD_0 or _1, checked while still a double (extensions give
+// any JSON number, and converting one outside int's range is undefined behaviour).
+static int texcoord_set(const GltfContext& context, double texcoord, const std::string& where) {
+  if (texcoord != 0 && texcoord != 1)
+    context.fail(where, "TEXCOORD_" + number_text(texcoord) + " is not supported (0 or 1)");
+  return int(texcoord);
+}
+
+static TextureRef texture_ref(const GltfContext& context, int index, double texcoord,
                               const tinygltf::ExtensionMap& extensions, const std::string& where) {
   TextureRef ref;
   if (index < 0) return ref;
   check_index(context, index, context.model.textures.size(), where + ".index", "texture");
   ref.texture = index;
-  ref.texcoord = texcoord;
+  std::string texcoord_where = where + ".texCoord";
   if (const tinygltf::Value* transform = extension(extensions, "KHR_texture_transform")) {
     ref.offset = pair_of(*transform, "offset", ref.offset);
     ref.scale = pair_of(*transform, "scale", ref.scale);
     ref.rotation = float(number(*transform, "rotation", 0));
-    ref.texcoord = int(number(*transform, "texCoord", texcoord));
+    if (transform->Has("texCoord")) {
+      texcoord = number(*transform, "texCoord", texcoord);
+      texcoord_where = where + ".extensions.KHR_texture_transform.texCoord";
+    }
   }
-  if (ref.texcoord < 0 || ref.texcoord > 1)
-    context.fail(where + ".texCoord", "TEXCOORD_" + std::to_string(ref.texcoord) + " is not supported (0 or 1)");
+  ref.texcoord = texcoord_set(context, texcoord, texcoord_where);
   return ref;
 }
 
@@ -121,8 +131,13 @@ static MaterialDesc convert_material(const GltfContext& context, const tinygltf:
                                           source.emissiveTexture.extensions, where + ".emissiveTexture");
   float strength = 1;
   if (const tinygltf::Value* emissive = extension(source.extensions, "KHR_materials_emissive_strength"))
-    strength = float(number(*emissive, "emissiveStrength", 1));
-  material.emission = color_of(source.emissiveFactor, {0, 0, 0}) * strength;
+    strength = non_negative_float(context, number(*emissive, "emissiveStrength", 1),
+                                  where + ".extensions.KHR_materials_emissive_strength.emissiveStrength");
+  color3 emissive_factor = {0, 0, 0};
+  if (source.emissiveFactor.size() >= 3)
+    for (int c = 0; c < 3; ++c)
+      emissive_factor[c] = non_negative_float(context, source.emissiveFactor[size_t(c)], where + ".emissiveFactor");
+  material.emission = emissive_factor * strength;
   if (source.alphaMode == "MASK") material.alpha_mode = AlphaMode::mask;
   else if (source.alphaMode == "BLEND") material.alpha_mode = AlphaMode::blend;
   material.alpha_cutoff = float(source.alphaCutoff);
@@ -131,9 +146,11 @@ static MaterialDesc convert_material(const GltfContext& context, const tinygltf:
     material.transmission = float(number(*transmission, "transmissionFactor", 0));
     if (transmission->Has("transmissionTexture")) {
       const tinygltf::Value& info = transmission->Get("transmissionTexture");
-      material.transmission_texture = texture_ref(context, int(number(info, "index", -1)),
-                                                  int(number(info, "texCoord", 0)), {},
-                                                  where + ".extensions.KHR_materials_transmission.transmissionTexture");
+      std::string info_where = where + ".extensions.KHR_materials_transmission.transmissionTexture";
+      int index = info.Has("index") ? index_value(context, info.Get("index"), context.model.textures.size(),
+                                                  info_where + ".index", "texture")
+                                    : -1;
+      material.transmission_texture = texture_ref(context, index, number(info, "texCoord", 0), {}, info_where);
     }
   }
   if (const tinygltf::Value* ior = extension(source.extensions, "KHR_materials_ior"))

@@ -1,5 +1,7 @@
 #include "gltf/gltf_meshes.h"
 
+#include <cmath>
+
 #include "gltf/gltf_accessors.h"
 #include "gltf/gltf_materials.h"
 #include "scene/mesh_ops.h"
@@ -7,6 +9,15 @@
 namespace radiant {
 
 namespace {
+
+// Every vertex attribute must be finite: a NaN color or texture coordinate reaches the AOVs and
+// the texture lookups, where no sample check sees where it came from.
+void check_finite(const GltfContext& context, const std::vector<float>& values, int components,
+                  const std::string& where) {
+  for (size_t i = 0; i < values.size(); ++i)
+    if (!std::isfinite(values[i]))
+      context.fail(where, "non-finite value in element " + std::to_string(i / size_t(components)));
+}
 
 template <typename Vec, int N>
 std::vector<Vec> attribute(const GltfContext& context, const tinygltf::Primitive& primitive, const char* name,
@@ -17,6 +28,7 @@ std::vector<Vec> attribute(const GltfContext& context, const tinygltf::Primitive
   std::string at = where + ".attributes." + name;
   int components = 0;
   std::vector<float> values = read_accessor_floats(context, it->second, at, types, components);
+  check_finite(context, values, components, at);
   size_t count = values.size() / components;
   if (count != vertex_count)
     context.fail(at, std::to_string(count) + " elements, but POSITION has " + std::to_string(vertex_count));
@@ -29,11 +41,6 @@ std::vector<Vec> attribute(const GltfContext& context, const tinygltf::Primitive
     else out[i] = Vec{v[0], v[1], v[2], v[3]};
   }
   return out;
-}
-
-void check_finite(const GltfContext& context, const std::vector<vec3>& values, const std::string& where) {
-  for (size_t i = 0; i < values.size(); ++i)
-    if (!is_finite(values[i])) context.fail(where, "non-finite value in element " + std::to_string(i));
 }
 
 // Triangle list from the vertex order of TRIANGLES, TRIANGLE_STRIP or TRIANGLE_FAN (glTF 3.7.2.1).
@@ -99,12 +106,11 @@ bool convert_primitive(GltfContext& context, const tinygltf::Primitive& primitiv
   int components = 0;
   std::vector<float> xyz = read_accessor_floats(context, primitive.attributes.at("POSITION"),
                                                 where + ".attributes.POSITION", T{TINYGLTF_TYPE_VEC3}, components);
+  check_finite(context, xyz, 3, where + ".attributes.POSITION");
   size_t count = xyz.size() / 3;
   mesh.positions.resize(count);
   for (size_t i = 0; i < count; ++i) mesh.positions[i] = {xyz[i * 3], xyz[i * 3 + 1], xyz[i * 3 + 2]};
-  check_finite(context, mesh.positions, where + ".attributes.POSITION");
   mesh.normals = attribute<vec3, 3>(context, primitive, "NORMAL", T{TINYGLTF_TYPE_VEC3}, count, where);
-  check_finite(context, mesh.normals, where + ".attributes.NORMAL");
   mesh.tangents = attribute<vec4, 4>(context, primitive, "TANGENT", T{TINYGLTF_TYPE_VEC4}, count, where);
   mesh.texcoords0 = attribute<vec2, 2>(context, primitive, "TEXCOORD_0", T{TINYGLTF_TYPE_VEC2}, count, where);
   mesh.texcoords1 = attribute<vec2, 2>(context, primitive, "TEXCOORD_1", T{TINYGLTF_TYPE_VEC2}, count, where);

@@ -37,21 +37,27 @@ namespace {
 void place_node(GltfContext& context, const tinygltf::Node& node, const mat4& world, const std::string& where) {
   if (node.mesh >= 0) {
     check_index(context, node.mesh, context.model.meshes.size(), where + ".mesh", "mesh");
-    bool mirrors = determinant3(world) < 0;
-    for (int part : context.mesh_parts[node.mesh]) {
-      InstanceDesc instance;
-      instance.mesh = mirrors ? mirrored_mesh(context, part) : part;
-      instance.transform = world;
-      instance.name = node.name;
-      context.scene.instances.push_back(instance);
+    mat4 inverse;
+    if (!inverse_affine(world, inverse)) {
+      // glTF allows a zero scale (it hides a node); a flattened mesh has no area to render.
+      context.warn(where + ": singular transform (a zero scale): the mesh is not rendered");
+    } else {
+      bool mirrors = determinant3(world) < 0;
+      for (int part : context.mesh_parts[node.mesh]) {
+        InstanceDesc instance;
+        instance.mesh = mirrors ? mirrored_mesh(context, part) : part;
+        instance.transform = world;
+        instance.name = node.name;
+        context.scene.instances.push_back(instance);
+      }
     }
   }
   if (node.camera >= 0) add_camera(context, node.camera, world, node.name, where + ".camera");
   auto light = node.extensions.find("KHR_lights_punctual");
   if (light != node.extensions.end() && light->second.Has("light")) {
-    const tinygltf::Value& index = light->second.Get("light");
-    add_light(context, index.IsNumber() ? int(index.GetNumberAsDouble()) : -1, world,
-              where + ".extensions.KHR_lights_punctual.light");
+    std::string light_where = where + ".extensions.KHR_lights_punctual.light";
+    add_light(context, index_value(context, light->second.Get("light"), context.model.lights.size(), light_where, "light"),
+              world, light_where);
   }
 }
 

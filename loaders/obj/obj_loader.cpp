@@ -7,6 +7,7 @@
 
 #include "file_access.h"
 #include "obj/obj_materials.h"
+#include "obj/obj_numbers.h"
 #include "scene/mesh_ops.h"
 
 namespace radiant {
@@ -27,6 +28,9 @@ struct MtlReader : tinyobj::MaterialReader {
       auto path = resolve_inside(base_dir, name, options.allow_external_files, file + ": mtllib");
       std::ifstream in(path);
       if (!in) throw LoadError(file + ": mtllib: cannot open '" + name + "'");
+      check_mtl_numbers(in, (std::filesystem::path(file).parent_path() / name).string());
+      in.clear();
+      in.seekg(0);
       tinyobj::LoadMtl(names, materials, &in, warn, err);
       return true;
     } catch (const LoadError& error) {
@@ -49,6 +53,9 @@ ObjData parse_obj(const std::string& path, const LoadOptions& options, std::vect
   if (size > options.max_memory_bytes / 8) throw LoadError(path + ": the file exceeds the memory limit");
   std::ifstream in(path);
   if (!in) throw LoadError(path + ": cannot open");
+  check_obj_numbers(in, path);
+  in.clear();
+  in.seekg(0);
   ObjData data;
   MtlReader reader(std::filesystem::absolute(path).parent_path(), path, options);
   std::string warning, error;

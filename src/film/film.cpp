@@ -1,6 +1,7 @@
 #include "film/film.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace radiant {
 
@@ -25,7 +26,7 @@ color3 pixel_mean_variance(const FilmPixel& p) {
   for (int c = 0; c < 3; ++c) {
     double mean = p.sum[c] / n;
     double sample_variance = std::max(0.0, (p.sum_squares[c] - n * mean * mean) / (n - 1));
-    v[c] = float(sample_variance / n);
+    v[c] = float(std::min(sample_variance / n, double(std::numeric_limits<float>::max())));
   }
   return v;
 }

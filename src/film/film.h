@@ -13,10 +13,11 @@ struct FilmPixel {
   double sum[3] = {0, 0, 0};
   double sum_squares[3] = {0, 0, 0};
   uint32_t samples = 0;
-  // First-hit auxiliary values, summed.
-  float albedo[3] = {0, 0, 0};
-  float normal[3] = {0, 0, 0};
-  float depth = 0;
+  // First-hit auxiliary values, summed in double like the radiance: float sums of large finite
+  // values (an albedo or a depth near 1e38) would overflow to infinity.
+  double albedo[3] = {0, 0, 0};
+  double normal[3] = {0, 0, 0};
+  double depth = 0;
 };
 
 struct Film {
@@ -38,7 +39,9 @@ inline void add_sample(FilmPixel& p, color3 radiance) {
 
 // Mean radiance of a pixel (black without samples).
 color3 pixel_mean(const FilmPixel& p);
-// Variance of the pixel mean (sample variance / samples), per channel.
+// Variance of the pixel mean (sample variance / samples), per channel. It saturates at the
+// largest float, which only pixels whose mean exceeds ~1.8e19 reach: the value written is
+// always finite, and a smaller variance only makes a comparison stricter.
 color3 pixel_mean_variance(const FilmPixel& p);
 
 }  // namespace radiant

@@ -56,6 +56,16 @@ void check_comparable(const CompareImage& a, const CompareImage& b);
 // Equal numbers, equal infinities, or NaN facing NaN: values that do not differ.
 inline bool same_value(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
 
+// A NaN or infinity facing a different value: a difference no threshold or noise explains.
+inline bool nonfinite_difference(double a, double b) {
+  return !same_value(a, b) && (!std::isfinite(a) || !std::isfinite(b));
+}
+
+// The first non-finite statistic that fails a comparison whatever its thresholds, for the
+// message: a NaN or infinity facing a different value ("b.exr: R at (7, 0) is nan where a.exr
+// has 0.5"), else a NaN or infinite variance ("a.exr: variance.R at (0, 0) is inf"); "" if none.
+std::string first_nonfinite(const CompareImage& a, const CompareImage& b);
+
 // -----------------------------------------------------------------------------------------------
 // Plain metrics and thresholds
 // -----------------------------------------------------------------------------------------------
@@ -88,13 +98,15 @@ struct CompareMetrics {
   size_t warn_pixels = 0;          // pixels with a channel differing by more than `warn`
   double fail_fraction = 0;        // fail_pixels / pixels
   double warn_fraction = 0;        // warn_pixels / pixels
+  size_t nonfinite_pixels = 0;     // pixels with a nonfinite_difference: fail the test outright
 };
 
 // The metrics of `a` against `b` (same size and channel count; see check_comparable).
 CompareMetrics compute_metrics(const CompareImage& a, const CompareImage& b,
                                const CompareThresholds& thresholds);
 
-// Fail or warn when the pixel fractions or the mean relative error exceed the thresholds.
+// Fail when a pixel has a nonfinite_difference; fail or warn when the pixel fractions or the
+// mean relative error exceed the thresholds.
 Verdict threshold_verdict(const CompareMetrics& metrics, const CompareThresholds& thresholds);
 
 // -----------------------------------------------------------------------------------------------
@@ -122,6 +134,9 @@ struct ZTestResult {
   double fail_fraction = 0;     // fail_pixels / pixels
   double bias_z = 0;            // Σz/√N over the finite z: standard normal for equal means
   double bias_p_value = 1;      // its two-sided p-value
+  // Values no z can be computed for: a NaN or infinite variance (which would pass any
+  // difference as noise) or a nonfinite_difference. Any of them fails the test.
+  size_t nonfinite_values = 0;
   std::vector<float> abs_z;     // per pixel, the largest |z| over its channels
   Verdict verdict = Verdict::pass;
 };

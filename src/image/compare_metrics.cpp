@@ -2,6 +2,7 @@
 // thresholds; here only what it lacks (the mean relative error, fractions, the verdict).
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 #include "image/compare.h"
 #include "image/image_io.h"
@@ -39,7 +40,48 @@ size_t nan_only_pixels(const CompareImage& a, const CompareImage& b, double thre
   return count;
 }
 
+size_t nonfinite_pixels(const CompareImage& a, const CompareImage& b) {
+  int channels = a.channels();
+  size_t count = 0;
+  for (size_t p = 0; p < a.pixel_count(); ++p) {
+    bool differs = false;
+    for (int c = 0; c < channels; ++c)
+      differs = differs || nonfinite_difference(a.values[p * channels + c], b.values[p * channels + c]);
+    count += differs ? 1 : 0;
+  }
+  return count;
+}
+
+// "nan", "inf", "-inf" or the number as the table prints it.
+std::string value_text(float value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
+
+// "R at (7, 0)": channel `c` of value `i` of `image`, named for messages.
+std::string place_of(const CompareImage& image, size_t i, const std::string& prefix = "") {
+  size_t p = i / size_t(image.channels());
+  return prefix + image.channel_names[i % size_t(image.channels())] + " at (" +
+         std::to_string(p % size_t(image.width)) + ", " + std::to_string(p / size_t(image.width)) + ")";
+}
+
 }  // namespace
+
+std::string first_nonfinite(const CompareImage& a, const CompareImage& b) {
+  for (size_t i = 0; i < a.values.size(); ++i)
+    if (nonfinite_difference(a.values[i], b.values[i])) {
+      const CompareImage& odd = std::isfinite(a.values[i]) ? b : a;
+      const CompareImage& other = &odd == &a ? b : a;
+      return odd.path + ": " + place_of(odd, i) + " is " + value_text(odd.values[i]) + " where " +
+             other.path + " has " + value_text(other.values[i]);
+    }
+  for (const CompareImage* image : {&a, &b})
+    for (size_t i = 0; i < image->variance.size(); ++i)
+      if (!std::isfinite(image->variance[i]))
+        return image->path + ": " + place_of(*image, i, "variance.") + " is " + value_text(image->variance[i]);
+  return "";
+}
 
 const char* verdict_name(Verdict verdict) {
   switch (verdict) {
@@ -70,11 +112,12 @@ CompareMetrics compute_metrics(const CompareImage& a, const CompareImage& b,
   metrics.warn_pixels = result.warn_pixels + nan_only_pixels(a, b, thresholds.warn);
   metrics.fail_fraction = double(metrics.fail_pixels) / double(metrics.pixels);
   metrics.warn_fraction = double(metrics.warn_pixels) / double(metrics.pixels);
+  metrics.nonfinite_pixels = nonfinite_pixels(a, b);
   return metrics;
 }
 
 Verdict threshold_verdict(const CompareMetrics& metrics, const CompareThresholds& thresholds) {
-  if (metrics.fail_fraction * 100 > thresholds.fail_percent ||
+  if (metrics.nonfinite_pixels > 0 || metrics.fail_fraction * 100 > thresholds.fail_percent ||
       metrics.mean_relative_error > thresholds.fail_relative)
     return Verdict::fail;
   if (metrics.warn_fraction * 100 > thresholds.warn_percent ||

@@ -21,7 +21,8 @@ double two_sided_p_value(double abs_z) { return std::erfc(abs_z / std::sqrt(2.0)
 
 Verdict z_test_verdict(const ZTestResult& result, const ZTestParams& params) {
   bool biased = params.bias_test && result.bias_p_value < params.alpha;
-  if (result.fail_fraction * 100 > params.allowed_fail_percent || biased) return Verdict::fail;
+  if (result.nonfinite_values > 0 || result.fail_fraction * 100 > params.allowed_fail_percent || biased)
+    return Verdict::fail;
   return result.fail_pixels > 0 ? Verdict::warn : Verdict::pass;
 }
 
@@ -56,6 +57,8 @@ ZTestResult run_z_test(const CompareImage& a, const CompareImage& b, const ZTest
       size_t i = p * channels + c;
       double variance = (a.variance.empty() ? 0.0 : a.variance[i]) +
                         (b.variance.empty() ? 0.0 : b.variance[i]);
+      if (!std::isfinite(variance) || nonfinite_difference(a.values[i], b.values[i]))
+        result.nonfinite_values += 1;
       double z_signed = signed_z(a.values[i], b.values[i], variance > 0 ? variance : 0.0,
                                  params.epsilon);
       if (std::isfinite(z_signed)) {

@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "image/png_reader.h"
 #include "image/png_writer.h"
 
 namespace radiant {
@@ -61,6 +62,7 @@ const ImageIoModule& image_io_module() {
 }
 
 std::unique_ptr<ImageSource> open_image_file(const std::string& path, std::string& error) {
+  if (is_png_file(path)) return open_png(path, error);
   return image_io_module().open(path, error);
 }
 

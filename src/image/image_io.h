@@ -1,4 +1,4 @@
-// Image files for the rest of radiant: PNG output written directly (libpng), everything else
+// Image files for the rest of radiant: PNG read and written directly (libpng), everything else
 // through the OpenImageIO module (image_io_module.h), loaded the first time it is needed.
 #pragma once
 

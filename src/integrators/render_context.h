@@ -2,6 +2,7 @@
 // resolved settings, and per-thread ray counters.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -33,6 +34,9 @@ struct FirstHit {
   vec3 normal;
   float depth = 0;
 };
+inline bool is_finite(const FirstHit& hit) {
+  return is_finite(hit.albedo) && is_finite(hit.normal) && std::isfinite(hit.depth);
+}
 
 struct RenderContext {
   const SceneDesc* scene = nullptr;

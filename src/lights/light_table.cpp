@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 
 #include "image/image_io.h"
@@ -70,14 +71,22 @@ void add_emissive_spheres(const SceneDesc& scene, LightTable& table) {
   }
 }
 
+// A texel must be radiance: finite and not negative. Throws naming the file, pixel and channel.
+void check_environment_texel(const std::string& path, const ImageHeader& spec, int x, int y, color3 c) {
+  for (int k = 0; k < 3; ++k) {
+    if (std::isfinite(c[k]) && c[k] >= 0) continue;
+    std::string channel = spec.channels >= 3 ? spec.channel_names[size_t(k)] : spec.channel_names[0];
+    std::ostringstream value;
+    value << c[k];
+    throw std::runtime_error(path + ": pixel (" + std::to_string(x) + ", " + std::to_string(y) + "): " + channel +
+                             " is " + value.str() + ": environment radiance must " +
+                             (std::isfinite(c[k]) ? "not be negative" : "be finite"));
+  }
+}
+
 EnvironmentMap load_environment_map(const std::string& path) {
-  std::string error;
-  auto input = open_image_file(path, error);
-  if (!input) throw std::runtime_error(path + ": cannot read environment map: " + error);
+  std::unique_ptr<ImageSource> input = open_environment_map(path);
   const ImageHeader& spec = input->header();
-  if (spec.width <= 0 || spec.height <= 0 || spec.channels <= 0 ||
-      size_t(spec.width) * spec.height > (size_t(1) << 28))
-    throw std::runtime_error(path + ": environment map has an unusable size");
   std::vector<float> pixels(size_t(spec.width) * spec.height * spec.channels);
   if (!input->read(spec.channels, PixelType::float32, pixels.data()))
     throw std::runtime_error(path + ": cannot read environment map: " + input->error());
@@ -92,16 +101,40 @@ EnvironmentMap load_environment_map(const std::string& path) {
       size_t i = size_t(y) * map.width + x;
       const float* p = &pixels[i * spec.channels];
       color3 c = spec.channels >= 3 ? color3{p[0], p[1], p[2]} : color3{p[0], p[0], p[0]};
-      if (!is_finite(c)) c = {0, 0, 0};
-      map.texels[i] = max(c, color3{0, 0, 0});
-      weights[i] = luminance(map.texels[i]) * sin_theta;
+      check_environment_texel(path, spec, x, y, c);
+      map.texels[i] = c;
+      // Divided by the texel count, so that the weights' sum (the distribution's total, a float)
+      // is the map's mean and cannot overflow however bright its texels are.
+      weights[i] = float(double(luminance(map.texels[i])) * sin_theta / double(map.texels.size()));
     }
   }
   map.distribution = make_distribution_2d(weights, map.width, map.height);
   return map;
 }
 
+// Weights as floats with the same ratios: scaled down together when their sum nears float's
+// range (make_distribution keeps the total as a float).
+std::vector<float> float_weights(const std::vector<double>& weights) {
+  double total = 0;
+  for (double w : weights) total += w;
+  double scale = total > 1e30 ? 1e30 / total : 1;
+  std::vector<float> scaled;
+  for (double w : weights) scaled.push_back(float(w * scale));
+  return scaled;
+}
+
 }  // namespace
+
+std::unique_ptr<ImageSource> open_environment_map(const std::string& path) {
+  std::string error;
+  auto input = open_image_file(path, error);
+  if (!input) throw std::runtime_error(path + ": cannot read environment map: " + error);
+  const ImageHeader& spec = input->header();
+  if (spec.width <= 0 || spec.height <= 0 || spec.channels <= 0 ||
+      size_t(spec.width) * spec.height > (size_t(1) << 28))
+    throw std::runtime_error(path + ": environment map has an unusable size");
+  return input;
+}
 
 LightTable make_light_table(const SceneDesc& scene, color3 environment_color, const std::string& environment_map_path,
                             bool use_area_lights) {
@@ -116,25 +149,25 @@ LightTable make_light_table(const SceneDesc& scene, color3 environment_color, co
   table.environment_color = environment_color;
   if (!environment_map_path.empty()) table.environment_map = load_environment_map(environment_map_path);
 
-  // Selection weights: each light's emitted power (up to a common factor).
-  float disk = pi * table.scene_radius * table.scene_radius;
-  std::vector<float> weights;
+  // Selection weights: each light's emitted power (up to a common factor), in double: a light of
+  // 1e38 has a power beyond float's range, which make_distribution would read as zero.
+  double disk = pi * double(table.scene_radius) * table.scene_radius;
+  std::vector<double> weights;
   for (int index : table.delta_lights) {
     const LightDesc& l = scene.lights[index];
-    float power = luminance(l.intensity);
+    double power = luminance(l.intensity);
     if (l.kind == LightKind::directional) weights.push_back(power * disk);
     else weights.push_back(power * 4 * pi / std::max(l.kc + l.kl + l.kq, 1e-6f));
   }
   for (const AreaLight& l : table.area_lights)
-    weights.push_back(luminance(scene.materials[l.material].emission) * l.area * pi * (l.two_sided ? 2.0f : 1.0f));
+    weights.push_back(double(luminance(scene.materials[l.material].emission)) * l.area * pi * (l.two_sided ? 2 : 1));
   if (table.has_environment()) {
-    float average = luminance(table.environment_color);
+    double average = luminance(table.environment_color);
     if (table.environment_map.width > 0)
-      average += table.environment_map.distribution.marginal.total /
-                 float(table.environment_map.width * table.environment_map.height) * pi / 2;
-    weights.push_back(std::max(average, 1e-6f) * disk * 4);
+      average += double(table.environment_map.distribution.marginal.total) * pi / 2;
+    weights.push_back(std::max(average, 1e-6) * disk * 4);
   }
-  table.selection = make_distribution(weights);
+  table.selection = make_distribution(float_weights(weights));
   return table;
 }
 

@@ -3,8 +3,11 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
+#include <string>
 #include <vector>
 
+#include "image/image_io_module.h"
 #include "math/vec.h"
 #include "sampling/distribution.h"
 #include "scene/scene_desc.h"
@@ -30,7 +33,7 @@ struct AreaLight {
 struct EnvironmentMap {
   int width = 0, height = 0;
   std::vector<color3> texels;      // linear radiance, top row first (+y up is the top)
-  Distribution2D distribution;     // over (u, v) in [0,1)^2, weighted by luminance * sin(theta)
+  Distribution2D distribution;     // over (u, v) in [0,1)^2, by luminance * sin(theta) / texel count
 };
 
 struct LightTable {
@@ -54,6 +57,10 @@ struct LightTable {
 // (scene, then --env-color/--env). Throws std::runtime_error when the map cannot be read.
 LightTable make_light_table(const SceneDesc& scene, color3 environment_color, const std::string& environment_map_path,
                             bool use_area_lights);
+
+// Opens an environment map and checks its header (readable, of a usable size): what `batch`
+// checks of every view before rendering. Throws std::runtime_error naming the file.
+std::unique_ptr<ImageSource> open_environment_map(const std::string& path);
 
 // Environment radiance seen along unit direction `d`.
 color3 eval_environment(const LightTable& lights, vec3 d);

@@ -84,8 +84,8 @@ struct PassRunner {
       Ray ray = generate_camera_ray(frame, float(x) + offset.x, float(y) + offset.y);
       FirstHit first_hit;
       color3 value = radiance(ctx, ray, sample, c, want_aovs ? &first_hit : nullptr);
-      if (!is_finite(value)) {
-        c.nonfinite_samples++;  // dropped: never reaches the film
+      if (!is_finite(value) || (want_aovs && !is_finite(first_hit))) {
+        c.nonfinite_samples++;  // dropped, AOVs and all: never reaches the film
         continue;
       }
       add_sample(p, value);
@@ -173,8 +173,9 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
   PassRunner runner{ctx, s, select_integrator(s), make_camera_frame(s.camera, s.width, s.height),
                     !options.aovs.empty(), options.seed, result.film, counts};
 
-  int threads = options.threads > 0 ? options.threads : tbb::this_task_arena::max_concurrency();
-  tbb::task_arena arena(threads);
+  // More threads than TBB's limit (the cores) are not started anyway, and asking prints a warning.
+  int cores = tbb::this_task_arena::max_concurrency();
+  tbb::task_arena arena(options.threads > 0 ? std::min(options.threads, cores) : cores);
   auto start = Clock::now();
   std::vector<uint8_t> active;
   uint32_t done = 0, total = uint32_t(s.spp);
@@ -261,13 +262,13 @@ OutputImage film_to_image(const Film& film, const std::vector<std::string>& aovs
     float* out = &image.pixels[i * stride];
     color3 mean = pixel_mean(p);
     *out++ = mean.x, *out++ = mean.y, *out++ = mean.z;
-    float n = p.samples ? float(p.samples) : 1.0f;
+    double n = p.samples ? double(p.samples) : 1.0;
     for (const std::string& aov : aovs) {
-      if (aov == "albedo") for (int k = 0; k < 3; ++k) *out++ = p.albedo[k] / n;
+      if (aov == "albedo") for (int k = 0; k < 3; ++k) *out++ = float(p.albedo[k] / n);
       else if (aov == "normal") {
-        vec3 normal = normalize(vec3{p.normal[0], p.normal[1], p.normal[2]});
+        vec3 normal = normalize(vec3{float(p.normal[0]), float(p.normal[1]), float(p.normal[2])});
         *out++ = normal.x, *out++ = normal.y, *out++ = normal.z;
-      } else if (aov == "depth") *out++ = p.depth / n;
+      } else if (aov == "depth") *out++ = float(p.depth / n);
       else if (aov == "variance") {
         color3 v = pixel_mean_variance(p);
         *out++ = v.x, *out++ = v.y, *out++ = v.z;

@@ -46,7 +46,8 @@ struct ResolvedSettings {
   PixelWindow window;
 };
 
-// Throws std::invalid_argument for settings that make no sense (names the flag).
+// Throws std::invalid_argument for settings that make no sense (names the flag). The camera is
+// resolved in world space and placed in the prepared scene's render space.
 ResolvedSettings resolve_settings(const PreparedScene& prepared, const RenderOptions& options);
 
 // auto mode's rule (docs/effects.md): Whitted when it gives the path tracer's converged answer.

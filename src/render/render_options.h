@@ -26,7 +26,7 @@ struct RenderOptions {
   std::optional<int> width, height, spp, max_depth;
   std::optional<RenderMode> mode;
   std::optional<SamplerKind> sampler;
-  int threads = 0;  // 0 = all cores
+  int threads = 0;  // 0 = all cores; more than the cores runs on the cores
   uint32_t seed = 0;
   std::string camera;  // name or index; empty = the first
   CameraOverride camera_override;

@@ -1,5 +1,6 @@
 // Combining command-line options, the scene file's settings and the defaults.
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 #include "render/camera.h"
@@ -9,23 +10,32 @@ namespace radiant {
 
 namespace {
 
+// A side as the message shows it: "80000", "5e+32".
+std::string side_text(double side) {
+  std::ostringstream text;
+  text << side;
+  return text.str();
+}
+
 void resolve_size(const RenderOptions& options, const SceneDesc& scene, ResolvedSettings& r) {
-  std::optional<int> width = options.width ? options.width : scene.settings.width;
-  std::optional<int> height = options.height ? options.height : scene.settings.height;
+  // In double until checked: a side derived from an extreme aspect may not fit in an int.
+  std::optional<double> width, height;
+  if (std::optional<int> w = options.width ? options.width : scene.settings.width) width = *w;
+  if (std::optional<int> h = options.height ? options.height : scene.settings.height) height = *h;
   if (!width && r.camera.width > 0) width = r.camera.width;
   if (!height && r.camera.height > 0) height = r.camera.height;
-  float aspect = r.camera.aspect > 0 ? r.camera.aspect : 1.0f;
-  if (width && !height) height = std::max(1, int(std::lround(*width / aspect)));
-  if (height && !width) width = std::max(1, int(std::lround(*height * aspect)));
+  double aspect = r.camera.aspect > 0 ? r.camera.aspect : 1.0;
+  if (width && !height) height = std::max(1.0, std::round(*width / aspect));
+  if (height && !width) width = std::max(1.0, std::round(*height * aspect));
   if (!width) {
-    width = aspect >= 1 ? default_image_size : std::max(1, int(std::lround(default_image_size * aspect)));
-    height = aspect >= 1 ? std::max(1, int(std::lround(default_image_size / aspect))) : default_image_size;
+    width = aspect >= 1 ? default_image_size : std::max(1.0, std::round(default_image_size * aspect));
+    height = aspect >= 1 ? std::max(1.0, std::round(default_image_size / aspect)) : default_image_size;
   }
-  if (*width < 1 || *height < 1 || *width > 65536 || *height > 65536)
-    throw std::invalid_argument("image size " + std::to_string(*width) + "x" + std::to_string(*height) +
+  if (!(*width >= 1 && *height >= 1 && *width <= 65536 && *height <= 65536))
+    throw std::invalid_argument("image size " + side_text(*width) + "x" + side_text(*height) +
                                 " is out of range (1 to 65536)");
-  r.width = *width;
-  r.height = *height;
+  r.width = int(*width);
+  r.height = int(*height);
 }
 
 // Camera rays start at the camera (or across an orthographic view): they must lie within the

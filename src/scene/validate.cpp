@@ -42,6 +42,11 @@ struct Checker {
   void in_range(vec3 value, const std::string& where) const {
     for (int i = 0; i < 3; ++i) in_range(value[i], where);
   }
+  // Radiance, reflectance and intensity: finite and not negative (negative light has no meaning).
+  void non_negative(vec3 value, const std::string& where) const {
+    finite(value, where);
+    if (min_component(value) < 0) fail(where, "negative value");
+  }
   void unit(vec3 value, const std::string& where) const {
     finite(value, where);
     if (!(length(value) > 0)) fail(where, "zero-length direction");
@@ -59,7 +64,9 @@ struct Checker {
   }
 
   void material(const MaterialDesc& m, const std::string& where) const {
-    for (vec3 c : {m.ka, m.kd, m.ks, m.kr, m.kt, m.base_color, m.emission}) finite(c, where);
+    const std::pair<const char*, vec3> colors[] = {{"ka", m.ka}, {"kd", m.kd}, {"ks", m.ks}, {"kr", m.kr},
+                                                   {"kt", m.kt}, {"base_color", m.base_color}, {"emission", m.emission}};
+    for (const auto& [name, color] : colors) non_negative(color, where + "." + name);
     for (float f : {m.shininess, m.ior, m.alpha, m.metallic, m.roughness, m.transmission, m.normal_scale,
                     m.alpha_cutoff})
       finite(f, where);
@@ -116,7 +123,7 @@ struct Checker {
   }
 
   void light(const LightDesc& l, const std::string& where) const {
-    finite(l.intensity, where + ".intensity");
+    non_negative(l.intensity, where + ".intensity");
     in_range(l.position, where + ".position");
     if (l.kind == LightKind::directional || l.kind == LightKind::spot) unit(l.direction, where + ".direction");
     for (float f : {l.kc, l.kl, l.kq, l.spot_exponent, l.inner_cone, l.outer_cone, l.range})
@@ -175,12 +182,14 @@ struct Checker {
       std::string where = at("instances", i);
       index(scene.instances[i].mesh, scene.meshes.size(), false, where + ".mesh", "mesh");
       if (!is_finite(scene.instances[i].transform)) fail(where + ".transform", "non-finite value");
+      mat4 inverse;
+      if (!inverse_affine(scene.instances[i].transform, inverse)) fail(where + ".transform", "singular transform");
       placed_in_range(scene.instances[i], mesh_boxes[scene.instances[i].mesh], where);
     }
     for (size_t i = 0; i < scene.shapes.size(); ++i) shape(scene.shapes[i], at("shapes", i));
     for (size_t i = 0; i < scene.cameras.size(); ++i) camera(scene.cameras[i], at("cameras", i));
     for (size_t i = 0; i < scene.lights.size(); ++i) light(scene.lights[i], at("lights", i));
-    finite(scene.environment.color, "environment.color");
+    non_negative(scene.environment.color, "environment.color");
     finite(scene.environment.map_scale, "environment.map_scale");
     if (scene.instances.empty() && scene.shapes.empty()) fail("scene", "nothing to render (no meshes placed and no shapes)");
   }

@@ -1,6 +1,7 @@
 // `radiant info` and `radiant batch` as scripts use them.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "support/test_support.h"
@@ -64,5 +65,44 @@ TEST_CASE("batch: a bad line is reported as script:line before anything renders"
   CommandResult r = run_radiant("batch " + quoted(script));
   CHECK(r.exit_code == 1);
   CHECK(r.err.find("views.txt:3:") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir.file("a.png")));
+}
+
+TEST_CASE("batch: every line is resolved before the first render: a later bad crop, size, camera or scene writes nothing") {
+  ScratchDir dir("batch-check-all");
+  fs::copy_file(source_path("assets/first-render.scene"), dir.file("s.scene"));
+  const std::string good = "scene s.scene\nrender -o a.png --width 32 --height 32 --spp 1 --quiet\n";
+  struct Case {
+    std::string line;
+    std::string message;  // what follows "views.txt:3: "
+  };
+  for (const Case& c : {Case{"render -o b.png --width 32 --height 32 --spp 1 --crop 0,0,40,8",
+                             "--crop must lie inside the 32x32 image with x0 < x1 and y0 < y1"},
+                        Case{"render -o b.png --spp 1 --camera nosuch", ""},
+                        Case{"render -o b.png --spp 1 --fov 180", "--fov must be in (0, 180) degrees"},
+                        Case{"render -o b.png --spp 1 --env \"" + dir.file("sky.exr").string() + "\"",
+                             dir.file("sky.exr").string() + ": cannot read environment map"},
+                        Case{"scene missing.scene", ""}}) {
+    CAPTURE(c.line);
+    fs::path script = dir.write("views.txt", good + c.line + "\n");
+    CommandResult r = run_radiant("batch " + quoted(script));
+    CHECK(r.exit_code == 1);
+    CHECK(r.err.rfind("radiant batch: " + script.string() + ":3: " + c.message, 0) == 0);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK_FALSE(fs::exists(dir.file("a.png")));
+    CHECK_FALSE(fs::exists(dir.file("b.png")));
+  }
+}
+
+TEST_CASE("batch: an image size out of range on a later line writes nothing") {
+  ScratchDir dir("batch-size");
+  // A camera four times wider than tall: --height 20000 asks for an 80000-pixel width.
+  dir.write("wide.scene", "@camera\nposition 0 0 5\ndirection 0 0 -1\nup 0 1 0\nview-distance 1\nview-size 4 1\n"
+                          "@sphere\ncenter 0 0 0\nradius 1\n@light point\nposition 0 3 3\n");
+  fs::path script = dir.write("views.txt", "scene wide.scene\nrender -o a.png --height 8 --spp 1 --quiet\n"
+                                           "render -o b.png --height 20000 --spp 1\n");
+  CommandResult r = run_radiant("batch " + quoted(script));
+  CHECK(r.exit_code == 1);
+  CHECK(r.err == "radiant batch: " + script.string() + ":3: image size 80000x20000 is out of range (1 to 65536)\n");
   CHECK_FALSE(fs::exists(dir.file("a.png")));
 }

@@ -168,3 +168,31 @@ TEST_CASE("render cli: --camera picks a camera by index or name; an unknown one 
   CHECK(r.err.find("1 'top'") != std::string::npos);
   CHECK_FALSE(fs::exists(dir.file("none.png")));
 }
+
+TEST_CASE("render cli: --quiet prints nothing, not even TBB's warning for more threads than cores") {
+  ScratchDir dir("cli-many-threads");
+  fs::path scene = dir.write("plane.scene", lit_plane_scene);
+  fs::path one = dir.file("one.exr"), many = dir.file("many.exr");
+  CommandResult r = run_radiant("render " + quoted(scene) + " -o " + quoted(many) +
+                                " --width 8 --height 8 --spp 2 --mode path --quiet --threads 1024");
+  CHECK(r.exit_code == 0);
+  CHECK(r.err == "");
+  REQUIRE(run_radiant("render " + quoted(scene) + " -o " + quoted(one) +
+                      " --width 8 --height 8 --spp 2 --mode path --quiet --threads 1")
+              .exit_code == 0);
+  CHECK(read_bytes(one) == read_bytes(many));
+}
+
+TEST_CASE("render cli: a side derived from an extreme camera aspect is out of range, not an int overflow") {
+  // Width 8 over an aspect of 1e-30 asks for a height of 8e30: lround's result did not fit in an
+  // int, and the image came out 8x1.
+  ScratchDir dir("cli-extreme-aspect");
+  fs::path scene = dir.write("tall.scene", "@camera\nposition 0 0 5\ndirection 0 0 -1\nup 0 1 0\nview-distance 1\n"
+                                           "view-size 1e-30 1\n@sphere\ncenter 0 0 0\nradius 1\n@light point\n"
+                                           "position 0 3 3\n");
+  fs::path out = dir.file("tall.png");
+  CommandResult r = run_radiant("render " + quoted(scene) + " -o " + quoted(out) + " --width 8 --spp 1 --quiet");
+  CHECK(r.exit_code == 2);
+  CHECK(r.err == "radiant render: image size 8x8e+30 is out of range (1 to 65536)\n");
+  CHECK_FALSE(fs::exists(out));
+}

@@ -2,6 +2,7 @@
 #include <doctest/doctest.h>
 
 #include <cstdlib>
+#include <fstream>
 
 #include "image/compare.h"
 #include "image/compare_test_images.h"
@@ -149,6 +150,38 @@ TEST_CASE("radiant compare --diff writes a false-color image of the inputs' size
   int files = 0;
   for (auto& entry : std::filesystem::directory_iterator(pair.dir.path)) files += entry.is_regular_file();
   CHECK(files == 5);  // the four inputs and diff.png: no temporary left behind
+}
+
+TEST_CASE("radiant compare fails, saying why, when a variance is infinite") {
+  // A render whose variance overflowed would pass any image as noise: 0.9 against 0.0.
+  ScratchDir dir("compare-nonfinite");
+  std::filesystem::path render = dir.file("render.exr"), black = dir.file("black.exr");
+  test::write_rgb_with_variance(render, 2, 2, std::vector<float>(12, 0.9f), INFINITY);
+  test::write_rgb(black, 2, 2, std::vector<float>(12, 0.0f));
+  test::CommandResult table = run_radiant("compare " + quoted(render) + " " + quoted(black));
+  CHECK(table.exit_code == 1);
+  CHECK(table.out.find("\n  non-finite           " + render.string() +
+                       ": variance.R at (0, 0) is inf: fails whatever the thresholds\n") != std::string::npos);
+  CHECK(table.out.find("verdict: fail") != std::string::npos);
+  test::CommandResult json = run_radiant("compare " + quoted(render) + " " + quoted(black) + " --json");
+  CHECK(json.exit_code == 1);
+  CHECK(json.out.find("\"nonfinite\":\"" + render.string() + ": variance.R at (0, 0) is inf\"") !=
+        std::string::npos);
+  CHECK(json.out.find("\"verdict\":\"fail\"") != std::string::npos);
+  // Plain thresholds do not read the variance; the z-test refuses it even against itself.
+  CHECK(run_radiant("compare " + quoted(render) + " " + quoted(render) + " --no-mc").exit_code == 0);
+  CHECK(run_radiant("compare " + quoted(render) + " " + quoted(render)).exit_code == 1);
+}
+
+TEST_CASE("radiant compare: a truncated PNG is one line on stderr, without libpng's own") {
+  ComparePair pair;
+  std::filesystem::path png = pair.dir.file("a.png"), cut = pair.dir.file("cut.png");
+  test::write_rgb(png, 8, 4, test::ramp_rgb(8, 4));
+  std::string bytes = test::read_bytes(png);
+  std::ofstream(cut, std::ios::binary) << bytes.substr(0, bytes.size() - 20);
+  test::CommandResult r = run_radiant("compare " + quoted(png) + " " + quoted(cut));
+  CHECK(r.exit_code == 2);
+  CHECK(r.err == "radiant compare: " + cut.string() + ": cannot read pixels: Read Error\n");
 }
 
 }  // namespace radiant

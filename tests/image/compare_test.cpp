@@ -190,4 +190,52 @@ TEST_CASE("compare fails a NaN against a number and passes NaN against NaN and e
   CHECK(run_z_test(a, nan, {}).fail_pixels == 1);
 }
 
+TEST_CASE("compare fails a NaN or infinity facing another value whatever the thresholds") {
+  // One such pixel in a thousand is under --fail-percent, but no noise explains it.
+  CompareImage a;
+  a.path = "a";
+  a.width = 1000;
+  a.height = 1;
+  a.channel_names = {"Y"};
+  a.values.assign(1000, 0.5f);
+  for (float bad : {NAN, INFINITY}) {
+    CompareImage b = a;
+    b.path = "b";
+    b.values[7] = bad;
+    CompareMetrics m = compute_metrics(a, b, {});
+    CHECK(m.nonfinite_pixels == 1);
+    CHECK(threshold_verdict(m, {}) == Verdict::fail);
+    CHECK(first_nonfinite(a, b) == "b: Y at (7, 0) is " + std::string(std::isnan(bad) ? "nan" : "inf") +
+                                       " where a has 0.5");
+    b.variance.assign(1000, 0.01f);
+    ZTestResult z = run_z_test(a, b, {});
+    CHECK(z.nonfinite_values == 1);
+    CHECK(z.verdict == Verdict::fail);
+  }
+  CHECK(first_nonfinite(a, a).empty());
+}
+
+TEST_CASE("z-test fails a non-finite variance: 0.9 against 0.0 cannot pass as noise") {
+  CompareImage a, b;
+  a.path = "a.exr";
+  b.path = "b.exr";
+  a.width = b.width = 4;
+  a.height = b.height = 1;
+  a.channel_names = b.channel_names = {"R"};
+  a.values.assign(4, 0.9f);
+  b.values.assign(4, 0.0f);
+  a.variance.assign(4, INFINITY);
+  ZTestResult z = run_z_test(a, b, {});
+  CHECK(z.nonfinite_values == 4);
+  CHECK(z.verdict == Verdict::fail);
+  CHECK(first_nonfinite(a, b) == "a.exr: variance.R at (0, 0) is inf");
+  // NaN too, and even identical values: the statistic itself is broken.
+  a.variance.assign(4, 0.0f);
+  a.variance[2] = NAN;
+  CHECK(run_z_test(a, a, {}).verdict == Verdict::fail);
+  CHECK(first_nonfinite(a, b) == "a.exr: variance.R at (2, 0) is nan");
+  a.variance[2] = 0.01f;
+  CHECK(first_nonfinite(a, b).empty());
+}
+
 }  // namespace radiant

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
 
 #include "image/image_io.h"
 #include "support/test_support.h"
@@ -52,7 +53,7 @@ TEST_CASE("image files: a render to PNG never loads OpenImageIO; a render to EXR
   CHECK(fs::exists(exr_dir.file("out.exr")));
 }
 
-TEST_CASE("image files: a PNG written directly reads back through OpenImageIO as sRGB, each value rounded to 8 bits") {
+TEST_CASE("image files: a PNG written directly reads back as sRGB, each value rounded to 8 bits") {
   ScratchDir dir("io-roundtrip");
   // 2x1 RGB: rounding at the half-step, clamping of out-of-range values and NaN.
   std::vector<float> values = {0.5f, 1.0f / 255 * 0.49f, 1.0f / 255 * 0.51f, -0.25f, 1.75f, std::nanf("")};
@@ -80,4 +81,61 @@ TEST_CASE("image files: an unknown extension is an error naming the reason, and 
   std::string error = write_image_file(dir.file("out.unknownformat").string(), spec, pixel);
   CHECK(!error.empty());
   CHECK(!fs::exists(dir.file("out.unknownformat")));
+}
+
+TEST_CASE("image files: radiant's PNG reader agrees with OpenImageIO's, alpha read as stored") {
+  ScratchDir dir("io-png-reader");
+  struct Case {
+    const char* name;
+    std::vector<std::string> channels;
+    std::vector<float> values;  // 2x1 pixels
+  };
+  for (const Case& c : {Case{"gray.png", {"Y"}, {0.25f, 0.75f}},
+                        Case{"rgb.png", {"R", "G", "B"}, {0.1f, 0.2f, 0.3f, 0.9f, 0.8f, 0.7f}},
+                        Case{"rgba.png", {"R", "G", "B", "A"}, {0.1f, 0.2f, 0.3f, 1, 0.9f, 0.8f, 0.7f, 1}}}) {
+    CAPTURE(c.name);
+    fs::path file = dir.file(c.name);
+    write_test_image(file, 2, 1, c.channels, c.values);
+    std::string error;
+    auto ours = open_image_file(file.string(), error);
+    auto theirs = image_io_module().open(file.string(), error);
+    REQUIRE(ours);
+    REQUIRE(theirs);
+    CHECK(ours->header().channel_names == theirs->header().channel_names);
+    CHECK(ours->header().alpha_channel == theirs->header().alpha_channel);
+    CHECK(ours->header().color_space == theirs->header().color_space);
+    int channels = ours->header().channels;
+    std::vector<float> a(2 * size_t(channels)), b(a.size());
+    REQUIRE(ours->read(channels, PixelType::float32, a.data()));
+    REQUIRE(theirs->read(channels, PixelType::float32, b.data()));
+    CHECK(a == b);
+  }
+  // Partly transparent: OpenImageIO premultiplies on reading; the file's own values are unassociated.
+  fs::path file = dir.file("half.png");
+  // OpenImageIO's writer unpremultiplies: the file stores 0.2 / 0.4 = 0.5 (127) and alpha 102.
+  write_test_image(file, 1, 1, {"R", "G", "B", "A"}, {0.2f, 0.2f, 0.2f, 0.4f});
+  std::string error;
+  auto input = open_image_file(file.string(), error);
+  REQUIRE(input);
+  std::vector<unsigned char> bytes(4);
+  REQUIRE(input->read(4, PixelType::uint8, bytes.data()));
+  CHECK(bytes == std::vector<unsigned char>{127, 127, 127, 102});
+}
+
+TEST_CASE("image files: a truncated PNG fails with libpng's reason and prints nothing") {
+  ScratchDir dir("io-png-truncated");
+  std::vector<float> values(16 * 16 * 3);
+  for (size_t i = 0; i < values.size(); ++i) values[i] = float(i % 7) / 7;
+  fs::path whole = dir.file("whole.png"), cut = dir.file("cut.png");
+  write_test_image(whole, 16, 16, {"R", "G", "B"}, values);
+  std::string bytes = read_bytes(whole);
+  std::ofstream(cut, std::ios::binary) << bytes.substr(0, bytes.size() / 2);
+  std::string error;
+  auto input = open_image_file(cut.string(), error);
+  REQUIRE(input);  // the header is intact
+  std::vector<float> pixels(values.size());
+  CHECK_FALSE(input->read(3, PixelType::float32, pixels.data()));
+  CHECK(input->error() == "Read Error");
+  CHECK_FALSE(open_image_file(dir.write("header.png", bytes.substr(0, 20)).string(), error));
+  CHECK_FALSE(error.empty());
 }

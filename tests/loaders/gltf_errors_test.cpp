@@ -1,6 +1,9 @@
 // glTF errors: each names the file and the JSON path, in one line.
 #include <doctest/doctest.h>
 
+#include <cmath>
+#include <limits>
+
 #include "loaders/gltf_builder.h"
 #include "load_scene.h"
 #include "support/test_support.h"
@@ -138,4 +141,132 @@ TEST_CASE("gltf errors: reading one accessor from many primitives is charged eve
         std::string::npos);
   options.max_memory_bytes = text.size() + 60 + 40 * 72 + 16;
   CHECK(error_of(text, "file.gltf", options) == "no error");
+}
+
+TEST_CASE("gltf errors: non-finite texture coordinates, tangents and vertex colors name the attribute") {
+  // A NaN COLOR_0 used to reach the albedo AOV while the color stayed clean.
+  float nan = std::nanf(""), inf = std::numeric_limits<float>::infinity();
+  struct Case {
+    const char* attribute;
+    std::vector<float> values;
+    const char* type;
+    int components;
+    const char* element;
+  };
+  for (const Case& c : {Case{"COLOR_0", {1, 1, 1, 1, 1, 1, nan, 1, 1, 1, 1, 1}, "VEC3", 3, "2"},
+                        Case{"TEXCOORD_0", {0, 0, 1, 0, 1, inf, 0, 1}, "VEC2", 2, "2"},
+                        Case{"TEXCOORD_1", {0, 0, 1, 0, 1, 1, 0, -inf}, "VEC2", 2, "3"},
+                        Case{"TANGENT", {1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, nan}, "VEC4", 4, "3"}}) {
+    CAPTURE(c.attribute);
+    GltfBuilder b = quad_builder();
+    int bad = b.floats(c.values, c.type, c.components);
+    std::string attributes = "{\"POSITION\":0,\"" + std::string(c.attribute) + "\":" + std::to_string(bad) + "}";
+    CHECK(error_of(b.gltf("\"meshes\":[{\"primitives\":[{\"attributes\":" + attributes + ",\"indices\":1}]}]" +
+                          placed)) == "file.gltf: meshes[0].primitives[0].attributes." + std::string(c.attribute) +
+                                          ": non-finite value in element " + c.element);
+  }
+}
+
+TEST_CASE("gltf errors: negative light intensity and color, emissive factor and strength name the place") {
+  std::string lights_used = ",\"extensionsUsed\":[\"KHR_lights_punctual\",\"KHR_materials_emissive_strength\"]";
+  auto with_light = [&](const std::string& light) {
+    GltfBuilder b = quad_builder();
+    return error_of(b.gltf(std::string(quad_mesh) +
+                           ",\"nodes\":[{\"mesh\":0},{\"extensions\":{\"KHR_lights_punctual\":{\"light\":0}}}],"
+                           "\"scenes\":[{\"nodes\":[0,1]}],\"extensions\":{\"KHR_lights_punctual\":{\"lights\":[" +
+                           light + "]}}" + lights_used));
+  };
+  std::string lights = "file.gltf: extensions.KHR_lights_punctual.lights[0].";
+  CHECK(with_light("{\"type\":\"point\",\"intensity\":-1}") == lights + "intensity: must not be negative, got -1");
+  CHECK(with_light("{\"type\":\"point\",\"color\":[1,-0.5,1]}") == lights + "color: must not be negative, got -0.5");
+  CHECK(with_light("{\"type\":\"point\",\"intensity\":1e39}") ==
+        lights + "intensity: 1e+39 does not fit in a float");
+  auto with_material = [&](const std::string& material) {
+    GltfBuilder b = quad_builder();
+    return error_of(b.gltf("\"materials\":[" + material +
+                           "],\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0},\"indices\":1,"
+                           "\"material\":0}]}]" + placed + lights_used));
+  };
+  CHECK(with_material("{\"emissiveFactor\":[1,1,-1]}") ==
+        "file.gltf: materials[0].emissiveFactor: must not be negative, got -1");
+  CHECK(with_material("{\"emissiveFactor\":[1,1,1],\"extensions\":{\"KHR_materials_emissive_strength\":"
+                      "{\"emissiveStrength\":-2}}}") ==
+        "file.gltf: materials[0].extensions.KHR_materials_emissive_strength.emissiveStrength: must not be "
+        "negative, got -2");
+}
+
+TEST_CASE("gltf errors: indices and texCoords in extensions are checked before any conversion to int") {
+  // `light: 1e10` was cast straight to int (undefined behaviour, caught by UBSan).
+  auto with_light_index = [&](const std::string& index) {
+    GltfBuilder b = quad_builder();
+    return error_of(b.gltf(std::string(quad_mesh) + ",\"nodes\":[{\"mesh\":0,\"extensions\":{\"KHR_lights_punctual\":"
+                                                    "{\"light\":" + index + "}}}],\"scenes\":[{\"nodes\":[0]}],"
+                           "\"extensions\":{\"KHR_lights_punctual\":{\"lights\":[{\"type\":\"point\"}]}},"
+                           "\"extensionsUsed\":[\"KHR_lights_punctual\"]"));
+  };
+  std::string where = "file.gltf: nodes[0].extensions.KHR_lights_punctual.light: ";
+  CHECK(with_light_index("1e10") == where + "light 1e+10 out of range (1 lights)");
+  CHECK(with_light_index("-1e300") == where + "light -1e+300 out of range (1 lights)");
+  CHECK(with_light_index("0.5") == where + "light 0.5 is not a whole number");
+  CHECK(with_light_index("\"0\"") == where + "expected a light index, found a non-number");
+  CHECK(with_light_index("0") == "no error");
+  auto with_texture = [&](const std::string& material) {
+    GltfBuilder b = quad_builder();
+    b.floats({0, 0, 1, 0, 1, 1, 0, 1}, "VEC2", 2);
+    return error_of(b.gltf("\"materials\":[" + material +
+                           "],\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0,\"TEXCOORD_0\":2},"
+                           "\"indices\":1,\"material\":0}]}]" + placed +
+                           ",\"textures\":[{\"source\":0}],\"images\":[{\"uri\":\"data:image/png;base64,"
+                           "iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAYAAAAfFcSJAAAADUlEQVR42mNkYPhfDwAChwGA60e6kgAAAABJRU5ErkJggg==\"}],"
+                           "\"extensionsUsed\":[\"KHR_texture_transform\",\"KHR_materials_transmission\"]"));
+  };
+  CHECK(with_texture("{\"pbrMetallicRoughness\":{\"baseColorTexture\":{\"index\":0,\"extensions\":"
+                     "{\"KHR_texture_transform\":{\"texCoord\":1e10}}}}}") ==
+        "file.gltf: materials[0].pbrMetallicRoughness.baseColorTexture.extensions.KHR_texture_transform.texCoord: "
+        "TEXCOORD_1e+10 is not supported (0 or 1)");
+  CHECK(with_texture("{\"extensions\":{\"KHR_materials_transmission\":{\"transmissionTexture\":{\"index\":1e10}}}}") ==
+        "file.gltf: materials[0].extensions.KHR_materials_transmission.transmissionTexture.index: texture 1e+10 out "
+        "of range (1 textures)");
+  CHECK(with_texture("{\"extensions\":{\"KHR_materials_transmission\":{\"transmissionTexture\":{\"index\":0,"
+                     "\"texCoord\":-3e9}}}}") ==
+        "file.gltf: materials[0].extensions.KHR_materials_transmission.transmissionTexture.texCoord: "
+        "TEXCOORD_-3e+09 is not supported (0 or 1)");
+}
+
+TEST_CASE("gltf errors: a NUL or line break in a URI is shown escaped, on one line") {
+  std::string message = error_of("{\"asset\":{\"version\":\"2.0\"},\"buffers\":[{\"byteLength\":4,"
+                                 "\"uri\":\"a\\u0000b.bin\"}]}");
+  CHECK(message == "file.gltf: buffers[0].uri: file name contains a NUL byte");
+  message = error_of("{\"asset\":{\"version\":\"2.0\"},\"buffers\":[{\"byteLength\":4,"
+                     "\"uri\":\"/abs\\nolute.bin\"}]}");
+  CHECK(message == "file.gltf: buffers[0].uri: '/abs\\nolute.bin' is an absolute path (use --allow-external-files "
+                   "to allow it)");
+}
+
+TEST_CASE("gltf: a node scaled to zero is skipped with a warning naming the file and the node") {
+  ScratchDir dir("gltf-scale-zero");
+  GltfBuilder b = quad_builder();
+  std::string path = dir.write("flat.gltf", b.gltf(std::string(quad_mesh) +
+                                                   ",\"nodes\":[{\"mesh\":0},{\"mesh\":0,\"scale\":[1,0,1]}],"
+                                                   "\"scenes\":[{\"nodes\":[0,1]}]"))
+                         .string();
+  SceneDesc scene = load_scene(path);
+  CHECK(scene.instances.size() == 1);
+  REQUIRE(scene.warnings.size() == 1);
+  CHECK(scene.warnings[0] == path + ": nodes[1]: singular transform (a zero scale): the mesh is not rendered");
+  CHECK(error_of(b.gltf(std::string(quad_mesh) + ",\"nodes\":[{\"mesh\":0,\"scale\":[0,0,0]}],"
+                                                 "\"scenes\":[{\"nodes\":[0]}]")) ==
+        "file.gltf: scene: nothing to render (no meshes placed and no shapes)");
+}
+
+TEST_CASE("gltf errors: glTF 1.0 and GLB version 1 are refused as such") {
+  CHECK(error_of("{\"asset\":{\"version\":\"1.0\"},\"meshes\":{}}") ==
+        "file.gltf: asset.version: glTF 1.0 is not supported (radiant reads glTF 2.x)");
+  CHECK(error_of("{\"asset\":{\"version\":\"3.0\"}}") ==
+        "file.gltf: asset.version: glTF 3.0 is not supported (radiant reads glTF 2.x)");
+  GltfBuilder b = quad_builder();
+  std::string glb = b.glb(std::string(quad_mesh) + placed);
+  CHECK(error_of(glb, "file.glb") == "no error");
+  glb[4] = 1;  // the header's version field
+  CHECK(error_of(glb, "file.glb") == "file.glb: GLB version 1 is not supported (radiant reads glTF 2.x)");
 }

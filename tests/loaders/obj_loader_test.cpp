@@ -108,3 +108,39 @@ TEST_CASE("obj: append_obj places the meshes and can override their material") {
   CHECK(scene.meshes[0].material == 0);
   CHECK(scene.materials.size() == 1);
 }
+
+// The message of loading `obj` (beside `mtl` as m.mtl), with the scratch folder removed.
+static std::string obj_error(const std::string& obj, const std::string& mtl = "") {
+  ScratchDir dir("obj-numbers");
+  if (!mtl.empty()) dir.write("m.mtl", mtl);
+  try {
+    load_scene(dir.write("a.obj", obj).string());
+  } catch (const LoadError& error) {
+    std::string message = error.what();
+    std::string folder = dir.path.string() + "/";
+    for (size_t at; (at = message.find(folder)) != std::string::npos;) message.erase(at, folder.size());
+    return message;
+  }
+  return "no error";
+}
+
+TEST_CASE("obj: nan, inf and numbers a float cannot hold are refused as file:line:col, not read as 0") {
+  const std::string face = "f 1 2 3\n";
+  CHECK(obj_error("v 0 0 0\nv 1 0 0\nv nan 1 0\n" + face) == "a.obj:3:3: v: 'nan' is not a number");
+  CHECK(obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 inf\n" + face) == "a.obj:4:8: vn: 'inf' is not a number");
+  CHECK(obj_error("v 0 0 0\nv 1 0 0\n  v 0 1e39 0\n" + face) == "a.obj:3:7: v: '1e39' does not fit in a float");
+  CHECK(obj_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0.5 0,5\n" + face) == "a.obj:4:8: vt: '0,5' is not a number");
+  CHECK(obj_error("v 0 0 0\nv 1 0 0\nv 0 1\n" + face) == "a.obj:3:1: v: expected 3 numbers, found 2");
+  CHECK(obj_error("v 0 0 0 # origin\nv 1 0 0\nv 0 1 0\nvt .5 -1.e-3\n" + face) == "no error");
+}
+
+TEST_CASE("obj: MTL numbers are checked, and negative colors and emission are refused naming the MTL line") {
+  const std::string obj = "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl lamp\nf 1 2 3\n";
+  CHECK(obj_error(obj, "newmtl lamp\nKd 0.5 0.5 0.5\nKe 1 -1 1\n") ==
+        "m.mtl:3:6: Ke: '-1' is negative (a color or emission must not be)");
+  CHECK(obj_error(obj, "newmtl lamp\nKd -0.5 0.5 0.5\n") ==
+        "m.mtl:2:4: Kd: '-0.5' is negative (a color or emission must not be)");
+  CHECK(obj_error(obj, "newmtl lamp\nNs nan\n") == "m.mtl:2:4: Ns: 'nan' is not a number");
+  CHECK(obj_error(obj, "newmtl lamp\n\tKe 1e39 0 0\n") == "m.mtl:2:5: Ke: '1e39' does not fit in a float");
+  CHECK(obj_error(obj, "newmtl lamp\nKe 4 4 4\nNi 1.5\nd 1\nillum 2\n") == "no error");
+}

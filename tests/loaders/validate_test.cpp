@@ -81,3 +81,26 @@ TEST_CASE("validate: a scene with nothing placed has nothing to render") {
   scene.instances.clear();
   CHECK(problem(scene) == "s.gltf: scene: nothing to render (no meshes placed and no shapes)");
 }
+
+TEST_CASE("validate: a singular instance transform names the file and the instance") {
+  // It used to surface only when the accelerator was built: "radiant: instances[0]: singular transform".
+  SceneDesc scene = triangle_scene();
+  scene.instances[0].transform.m[1][1] = 0;
+  CHECK(problem(scene) == "s.gltf: instances[0].transform: singular transform");
+}
+
+TEST_CASE("validate: negative radiance, reflectance and light intensity are refused") {
+  SceneDesc scene = triangle_scene();
+  scene.materials[0].emission = {1, -1, 1};
+  CHECK(problem(scene) == "s.gltf: materials[0].emission: negative value");
+  scene = triangle_scene();
+  scene.materials[0].kd = {-0.5f, 0, 0};
+  CHECK(problem(scene) == "s.gltf: materials[0].kd: negative value");
+  scene = triangle_scene();
+  scene.lights.push_back({});
+  scene.lights[0].intensity = {0, 0, -1};
+  CHECK(problem(scene) == "s.gltf: lights[0].intensity: negative value");
+  scene = triangle_scene();
+  scene.environment.color = {-1, 0, 0};
+  CHECK(problem(scene) == "s.gltf: environment.color: negative value");
+}

@@ -101,3 +101,22 @@ TEST_CASE("output: an unreadable environment map is an error naming the file") {
   CHECK(r.err.find("nope.exr") != std::string::npos);
   CHECK_FALSE(fs::exists(dir.file("x.exr")));
 }
+
+TEST_CASE("output: an environment map with a negative or non-finite pixel is refused naming the pixel") {
+  // It used to be clamped to 0 (negative) or zeroed (NaN, infinity) without a word.
+  ScratchDir dir("env-negative");
+  fs::path scene = dir.write("plane.scene", plane_scene);
+  for (auto [bad, message] : {std::pair{-1.0f, "G is -1: environment radiance must not be negative"},
+                              {std::nanf(""), "G is nan: environment radiance must be finite"},
+                              {INFINITY, "G is inf: environment radiance must be finite"}}) {
+    std::vector<float> pixels(4 * 2 * 3, 1.0f);
+    pixels[(1 * 4 + 2) * 3 + 1] = bad;  // pixel (2, 1), G
+    fs::path sky = dir.file("sky.exr");
+    write_test_image(sky, 4, 2, {"R", "G", "B"}, pixels);
+    CommandResult r = run_radiant("render " + quoted(scene) + " -o " + quoted(dir.file("x.exr")) + " --env " +
+                                  quoted(sky) + " --mode path --width 4 --height 4 --spp 1 --quiet");
+    CHECK(r.exit_code == 1);
+    CHECK(r.err == "radiant: " + sky.string() + ": pixel (2, 1): " + message + "\n");
+    CHECK_FALSE(fs::exists(dir.file("x.exr")));
+  }
+}
