@@ -15,7 +15,8 @@
 #include "converge_report.h"
 #include "load_scene.h"
 #include "option_parsing.h"
-#include "render_job.h"
+#include "output/output_paths.h"
+#include "output/output_set.h"
 
 namespace radiant::cli {
 
@@ -213,17 +214,49 @@ std::string plot_chart(const fs::path& json, const fs::path& png) {
   return why;
 }
 
-void write_outputs(const ConvergeReport& report, const fs::path& out, const std::string& stem, bool quiet) {
-  fs::create_directories(out);
-  write_text_file_atomically((out / (stem + ".csv")).string(), converge_csv(report));
-  write_text_file_atomically((out / (stem + ".json")).string(), converge_json(report));
+// The report's files: the folder, then NAME.csv, NAME.json and NAME.png in it.
+struct ReportFiles {
+  fs::path folder, csv, json, chart;
+};
+
+ReportFiles report_files(const ConvergeFlags& flags) {
+  std::string stem = flags.supersampling ? "supersampling" : "converge";
+  fs::path folder = flags.out;
+  return {folder, folder / (stem + ".csv"), folder / (stem + ".json"), folder / (stem + ".png")};
+}
+
+// Before any work: the report's folder can be written in (or created), and no report file is a
+// folder or an input. std::invalid_argument for usage errors.
+void check_report_files(const ReportFiles& report, const std::string& scene_path, const ConvergeFlags& flags) {
+  DistinctFiles files;
+  if (scene_path != "-") files.add_input({"the scene", scene_path});
+  if (!flags.reference_file.empty()) files.add_input({"--reference", flags.reference_file});
+  if (!flags.render.options.env_map.empty()) files.add_input({"--env", flags.render.options.env_map});
+  check_output_folder(report.folder.string());
+  for (const fs::path& file : {report.csv, report.json, report.chart}) {
+    files.add_output({"the report file", file.string()});
+    if (fs::exists(report.folder)) check_output_place(file.string());
+  }
+}
+
+// The CSV, the JSON and the chart, committed together (a chart that cannot be drawn is left out
+// with a warning).
+void write_outputs(const ConvergeReport& report, const ReportFiles& files, bool quiet) {
+  fs::create_directories(files.folder);
+  OutputSet outputs;
+  outputs.create(files.csv.string()).write(converge_csv(report));
+  TemporaryFile& json = outputs.create(files.json.string());
+  json.write(converge_json(report));
+  TemporaryFile& chart = outputs.create(files.chart.string());
+  std::string why = plot_chart(json.path(), chart.path());
+  if (!why.empty()) outputs.remove(chart);
+  outputs.commit();
   if (!quiet) std::cout << converge_table(report) << std::flush;
-  std::string why = plot_chart(out / (stem + ".json"), out / (stem + ".png"));
   if (!why.empty())
-    std::cerr << "radiant converge: warning: no chart " << (out / (stem + ".png")).string() << ": " << why
+    std::cerr << "radiant converge: warning: no chart " << files.chart.string() << ": " << why
               << "; wrote the CSV and JSON\n";
   else if (!quiet)
-    std::cerr << "radiant: wrote " << (out / (stem + ".csv")).string() << ", .json and .png\n";
+    std::cerr << "radiant: wrote " << files.csv.string() << ", .json and .png\n";
 }
 
 void bind_flags(CLI::App& app, ConvergeFlags& flags) {
@@ -251,6 +284,8 @@ void bind_flags(CLI::App& app, ConvergeFlags& flags) {
 void run_converge(const std::string& scene_path, ConvergeFlags& flags, std::vector<RenderMode> modes,
                   const std::vector<int>& ladder) {
   RenderOptions& options = flags.render.options;
+  ReportFiles files = report_files(flags);
+  check_report_files(files, scene_path, flags);
   std::optional<Reference> file_reference;
   if (!flags.reference_file.empty()) {
     file_reference = load_reference(flags.reference_file, flags.edge_fraction);
@@ -286,7 +321,7 @@ void run_converge(const std::string& scene_path, ConvergeFlags& flags, std::vect
   report.target_error = flags.target_error;
   report.title = scene_title(scene_path) + (flags.supersampling ? ": anti-aliasing error at edges against render time"
                                                                 : ": RMSE against render time");
-  write_outputs(report, flags.out, flags.supersampling ? "supersampling" : "converge", options.quiet);
+  write_outputs(report, files, options.quiet);
 }
 
 }  // namespace

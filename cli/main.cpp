@@ -1,4 +1,5 @@
 // radiant's entry point: dispatches `radiant COMMAND ...` to the command's own parser.
+#include <csignal>
 #include <cstring>
 #include <iostream>
 #include <string>
@@ -21,6 +22,9 @@ void print_usage(std::ostream& out) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Past a file size limit (ulimit -f) a write then fails with EFBIG and is reported like a full
+  // disk, instead of the process dying in the middle of it with its temporaries left behind.
+  std::signal(SIGXFSZ, SIG_IGN);
   if (argc < 2) {
     print_usage(std::cerr);
     return 2;

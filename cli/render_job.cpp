@@ -1,34 +1,27 @@
 #include "render_job.h"
 
-#include <unistd.h>
-
 #include <chrono>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
 
 #include "option_parsing.h"
+#include "output/output_set.h"
 
 namespace radiant::cli {
 
-void write_text_file_atomically(const std::string& path, const std::string& text) {
-  std::string temporary = path + ".tmp-" + std::to_string(getpid());
-  {
-    std::ofstream out(temporary, std::ios::binary);
-    out << text;
-    if (!out.good()) {
-      std::error_code ignored;
-      std::filesystem::remove(temporary, ignored);
-      throw std::runtime_error("cannot write '" + path + "'");
-    }
-  }
-  std::filesystem::rename(temporary, path);
+std::vector<NamedFile> render_job_outputs(const RenderJob& job) {
+  std::vector<NamedFile> outputs = {{"-o", job.output}};
+  if (!job.stats_path.empty()) outputs.push_back({"--stats", job.stats_path});
+  return outputs;
+}
+
+void check_render_job_outputs(const RenderJob& job) {
+  check_image_output(job.output);
+  for (const NamedFile& output : render_job_outputs(job)) check_output_place(output.path);
 }
 
 void run_render_job(const std::string& scene_path, const PreparedScene& prepared, const RenderJob& job, PhaseTimes& times) {
   using Clock = std::chrono::steady_clock;
   times.build = prepared.build_seconds;
-  prepare_image_writer(job.output);
   RenderResult result = render_prepared(prepared, job.options);
   times.render = result.stats.render_seconds;
   const ResolvedSettings& s = result.settings;
@@ -37,10 +30,12 @@ void run_render_job(const std::string& scene_path, const PreparedScene& prepared
     if (!s.mode_reason.empty()) std::cerr << "radiant: mode " << mode_name(s.mode) << ": " << s.mode_reason << "\n";
   }
   auto write_start = Clock::now();
-  write_image(job.output, film_to_image(result.film, job.options.aovs));
+  OutputSet outputs;
+  write_image(outputs.create(job.output), film_to_image(result.film, job.options.aovs));
   times.write = std::chrono::duration<double>(Clock::now() - write_start).count();
   if (!job.stats_path.empty())
-    write_text_file_atomically(job.stats_path, render_stats_json(scene_path, job.output, result, times));
+    outputs.create(job.stats_path).write(render_stats_json(scene_path, job.output, result, times));
+  outputs.commit();
   if (!job.options.quiet) std::cerr << "radiant: " << render_summary(job.output, result, times) << "\n";
 }
 
