@@ -37,7 +37,7 @@ int render_main(int argc, char** argv) {
   app.add_option("-o,--output", output, "Output image (.png is 8-bit sRGB, .exr linear float)")->required();
   flags.bind(app, true);
   app.add_option("--time-limit", flags.options.time_limit_seconds, "Stop after this many seconds (loading included)")
-      ->check(CLI::PositiveNumber);
+      ->check(time_limit_range());
   app.add_option("--noise-threshold", flags.options.noise_threshold, "Adaptive sampling: stop pixels under this relative error")
       ->check(CLI::PositiveNumber);
   app.add_option("--crop", flags.crop, "Render only pixels X0,Y0,X1,Y1 (half-open)");
