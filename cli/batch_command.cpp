@@ -6,6 +6,8 @@
 //   render -o views/side.png --look-from 600,273,-400 --look-at 278,273,279
 //
 // The whole script is checked before anything renders; an error names `script:line`.
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
@@ -176,6 +178,7 @@ int batch_main(int argc, char** argv) {
       }
       RenderJob job = step.job;
       job.options.quiet = job.options.quiet || quiet;
+      job.options.progress = isatty(STDERR_FILENO) && !job.options.quiet;
       PhaseTimes times;
       times.load = load_seconds;
       load_seconds = 0;  // the load is paid once, by the first view

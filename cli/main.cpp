@@ -1,10 +1,10 @@
 // radiant's entry point: dispatches `radiant COMMAND ...` to the command's own parser.
-#include <csignal>
 #include <cstring>
 #include <iostream>
 #include <string>
 
 #include "commands.h"
+#include "interrupts.h"
 
 namespace {
 
@@ -22,9 +22,7 @@ void print_usage(std::ostream& out) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // Past a file size limit (ulimit -f) a write then fails with EFBIG and is reported like a full
-  // disk, instead of the process dying in the middle of it with its temporaries left behind.
-  std::signal(SIGXFSZ, SIG_IGN);
+  radiant::cli::install_signal_handlers();
   if (argc < 2) {
     print_usage(std::cerr);
     return 2;
@@ -38,8 +36,14 @@ int main(int argc, char** argv) {
     std::cout << "radiant " RADIANT_VERSION "\n";
     return 0;
   }
-  for (const radiant::cli::Command& c : radiant::cli::commands())
-    if (command == c.name) return c.run(argc - 1, argv + 1);
+  for (const radiant::cli::Command& c : radiant::cli::commands()) {
+    if (command != c.name) continue;
+    try {
+      return c.run(argc - 1, argv + 1);
+    } catch (const radiant::cli::Interrupted& interrupted) {
+      return interrupted.exit_code();
+    }
+  }
   std::cerr << "radiant: unknown command '" << command << "'\n";
   print_usage(std::cerr);
   return 2;

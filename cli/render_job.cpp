@@ -1,8 +1,10 @@
 #include "render_job.h"
 
+#include <algorithm>
 #include <chrono>
 #include <iostream>
 
+#include "interrupts.h"
 #include "option_parsing.h"
 #include "output/output_set.h"
 
@@ -19,10 +21,30 @@ void check_render_job_outputs(const RenderJob& job) {
   for (const NamedFile& output : render_job_outputs(job)) check_output_place(output.path);
 }
 
+namespace {
+
+// The image to write: what the film holds, marked partial when a signal stopped the render, and
+// in a float format with the per-pixel sample counts, which say how far each pixel got.
+OutputImage output_image(const RenderJob& job, const RenderResult& result) {
+  std::vector<std::string> aovs = job.options.aovs;
+  bool partial = result.stats.interrupted;
+  if (partial && is_float_format(job.output) && std::find(aovs.begin(), aovs.end(), "spp") == aovs.end())
+    aovs.push_back("spp");
+  OutputImage image = film_to_image(result.film, aovs);
+  if (partial) image.metadata.emplace_back("radiant:partial", std::string("interrupted by ") + signal_name(interrupt_signal()));
+  return image;
+}
+
+}  // namespace
+
 void run_render_job(const std::string& scene_path, const PreparedScene& prepared, const RenderJob& job, PhaseTimes& times) {
   using Clock = std::chrono::steady_clock;
+  DeferredInterrupts deferred;  // a signal stops the render; what it rendered is still written
+  RenderOptions options = job.options;
+  options.stop_request = &interrupt_signal();
   times.build = prepared.build_seconds;
-  RenderResult result = render_prepared(prepared, job.options);
+  RenderResult result = render_prepared(prepared, options);
+  if (result.stats.interrupted && result.stats.samples == 0) throw_if_interrupted();  // nothing to save
   times.render = result.stats.render_seconds;
   const ResolvedSettings& s = result.settings;
   if (!job.options.quiet) {
@@ -31,12 +53,16 @@ void run_render_job(const std::string& scene_path, const PreparedScene& prepared
   }
   auto write_start = Clock::now();
   OutputSet outputs;
-  write_image(outputs.create(job.output), film_to_image(result.film, job.options.aovs));
+  write_image(outputs.create(job.output), output_image(job, result));
   times.write = std::chrono::duration<double>(Clock::now() - write_start).count();
   if (!job.stats_path.empty())
     outputs.create(job.stats_path).write(render_stats_json(scene_path, job.output, result, times));
   outputs.commit();
   if (!job.options.quiet) std::cerr << "radiant: " << render_summary(job.output, result, times) << "\n";
+  if (int signal = interrupt_signal())
+    std::cerr << "radiant: interrupted by " << signal_name(signal) << "; wrote " << job.output
+              << (result.stats.interrupted ? " with what was rendered, marked partial\n" : "\n");
+  throw_if_interrupted();
 }
 
 }  // namespace radiant::cli

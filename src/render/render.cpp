@@ -70,12 +70,14 @@ float pixel_relative_error(const FilmPixel& p) {
 // a stop lands within one pixel's samples of a pass at any image size. Once one thread sees it,
 // every thread does, and the film keeps exactly the samples taken.
 struct StopCheck {
+  const std::atomic<int>* request = nullptr;  // a signal
   std::optional<Clock::time_point> deadline;  // the time limit
   mutable std::atomic<bool> stopped{false};
 
+  bool requested() const { return request && request->load(std::memory_order_relaxed) != 0; }
   bool operator()() const {
     if (stopped.load(std::memory_order_relaxed)) return true;
-    if (!deadline || Clock::now() < *deadline) return false;
+    if (!requested() && (!deadline || Clock::now() < *deadline)) return false;
     stopped.store(true, std::memory_order_relaxed);
     return true;
   }
@@ -129,9 +131,12 @@ struct PassRunner {
   }
 };
 
+// Printed at the start too (without an estimate yet), so that the terminal shows the load is over.
 void print_progress(double fraction, double elapsed) {
-  double eta = fraction > 0 ? elapsed * (1 - fraction) / fraction : 0;
-  std::fprintf(stderr, "\rrendering %3d%%  ETA %5.1fs ", int(fraction * 100), eta);
+  if (fraction > 0)
+    std::fprintf(stderr, "\rrendering %3d%%  ETA %5.1fs ", int(fraction * 100), elapsed * (1 - fraction) / fraction);
+  else
+    std::fprintf(stderr, "\rrendering   0%%%14s", "");
   std::fflush(stderr);
 }
 
@@ -161,6 +166,7 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
   auto start = Clock::now();
   bool adaptive = options.noise_threshold > 0, timed = options.time_limit_seconds > 0;
   StopCheck stop;
+  stop.request = options.stop_request;
   if (timed) {
     double limit = std::min(options.time_limit_seconds, max_time_limit_seconds);
     stop.deadline = options.deadline.value_or(
@@ -175,13 +181,15 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
   uint32_t done = 0, total = uint32_t(s.spp);
   // One pass for a plain render; growing passes when a budget or a noise target may stop early.
   uint32_t pass = (adaptive || timed) ? std::min<uint32_t>(total, adaptive ? 8u : 1u) : total;
+  if (options.progress && !options.quiet) print_progress(0, 0);
   while (done < total) {
     uint32_t end = std::min(total, done + pass);
     arena.execute([&] { runner.run(done, end, active); });
     done = end;
     result.stats.passes++;
     if (stop.stopped) {
-      result.stats.stopped_by_time_limit = true;
+      result.stats.interrupted = stop.requested();
+      result.stats.stopped_by_time_limit = !result.stats.interrupted;
       break;
     }
     if (options.progress && !options.quiet) print_progress(double(done) / total, seconds_since(start));

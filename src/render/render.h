@@ -51,6 +51,7 @@ struct RenderStats {
   uint32_t median_pixel_samples = 0, p90_pixel_samples = 0;  // the distribution adaptive sampling gives
   float estimated_relative_error = 0;  // mean over pixels of the relative standard error
   bool stopped_by_time_limit = false;
+  bool interrupted = false;  // stopped by RenderOptions::stop_request: the film is partial
 };
 
 struct RenderResult {

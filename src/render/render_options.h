@@ -2,6 +2,7 @@
 // Unset optionals fall back to the scene file's settings, then to the defaults of the mode.
 #pragma once
 
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <optional>
@@ -38,6 +39,8 @@ struct RenderOptions {
   double time_limit_seconds = 0;  // 0 = none; at most max_time_limit_seconds
   // When set, the time limit ends here (the CLI starts it before loading the scene).
   std::optional<std::chrono::steady_clock::time_point> deadline;
+  // When set and nonzero, the render stops at the next pixel (the CLI's SIGINT/SIGTERM handler).
+  const std::atomic<int>* stop_request = nullptr;
   float noise_threshold = 0;      // 0 = off
   float contribution_cutoff = 0.001f;  // Whitted: stop recursing below this weight
   bool quiet = false;

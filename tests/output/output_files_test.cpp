@@ -9,6 +9,7 @@
 
 #include "output/output_paths.h"
 #include "output/output_set.h"
+#include "output/temporary_registry.h"
 #include "support/test_support.h"
 
 using namespace radiant;
@@ -115,4 +116,19 @@ TEST_CASE("distinct files: the same file by path spelling, symlink or hard link 
   outputs.add_output({"-o", dir.file("new/../out.png").string()});
   CHECK_THROWS_AS(outputs.add_output({"--diff", dir.file("out.png").string()}), std::invalid_argument);
   CHECK_NOTHROW(outputs.add_output({"--stats", dir.file("out.json").string()}));
+}
+
+TEST_CASE("temporary registry: the signal handler's sweep unlinks every live temporary, and only those") {
+  ScratchDir dir("registry");
+  fs::path kept = dir.write("kept.png", "committed earlier");
+  {
+    TemporaryFile image(dir.file("out.png").string()), stats(dir.file("stats.json").string());
+    image.write("partial");
+    CHECK(std::distance(fs::directory_iterator(dir.path), fs::directory_iterator()) == 3);
+    remove_registered_temporaries();  // what a second SIGINT does before _exit
+    CHECK_FALSE(fs::exists(image.path()));
+    CHECK_FALSE(fs::exists(stats.path()));
+  }
+  CHECK(read_bytes(kept) == "committed earlier");
+  CHECK(std::distance(fs::directory_iterator(dir.path), fs::directory_iterator()) == 1);
 }
