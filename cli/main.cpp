@@ -1,4 +1,6 @@
 // radiant's entry point: dispatches `radiant COMMAND ...` to the command's own parser.
+#include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <iostream>
 #include <string>
@@ -17,6 +19,18 @@ void print_usage(std::ostream& out) {
          "  radiant converge SCENE [--out DIR]      accuracy-versus-time report\n"
          "  radiant batch FILE|-                    render many views of one loaded scene\n"
          "  radiant --version\n";
+}
+
+// What a command prints is part of its result (`radiant compare --json > report.json`): a write
+// to standard output that failed, at the final flush too, fails the command.
+int check_standard_output(int code) {
+  std::cout.flush();
+  errno = 0;
+  bool flushed = std::fflush(stdout) == 0;
+  if (flushed && !std::ferror(stdout) && std::cout.good()) return code;
+  std::cerr << "radiant: cannot write to standard output: " << (!flushed && errno ? std::strerror(errno) : "a write failed")
+            << "\n";
+  return code == 0 ? 1 : code;
 }
 
 }  // namespace
@@ -39,7 +53,7 @@ int main(int argc, char** argv) {
   for (const radiant::cli::Command& c : radiant::cli::commands()) {
     if (command != c.name) continue;
     try {
-      return c.run(argc - 1, argv + 1);
+      return check_standard_output(c.run(argc - 1, argv + 1));
     } catch (const radiant::cli::Interrupted& interrupted) {
       return interrupted.exit_code();
     }

@@ -122,3 +122,12 @@ TEST_CASE("checked writes: converge on a full disk exits 1 and replaces none of 
   CHECK(read_bytes(json) == "old json");
   CHECK(hidden_files(dir.path).empty());
 }
+
+TEST_CASE("checked writes: standard output that cannot be written (a redirect to a full disk) exits 1") {
+  ScratchDir dir("full-stdout");
+  fs::path scene = dir.write("plane.scene", lit_plane_scene);
+  // The JSON takes over 500 bytes; the limit leaves room for the error on stderr.
+  CommandResult r = run_radiant_with({"info", scene, "--json"}, full_disk(200));
+  CHECK(r.exit_code == 1);
+  CHECK(r.err.find("cannot write to standard output") != std::string::npos);
+}
