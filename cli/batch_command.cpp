@@ -6,6 +6,8 @@
 //   render -o views/side.png --look-from 600,273,-400 --look-at 278,273,279
 //
 // The whole script is checked before anything renders; an error names `script:line`.
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
@@ -127,6 +129,29 @@ void check_view(const LoadedScene& loaded, const RenderJob& job) {
   if (!settings.environment_map.empty()) open_environment_map(settings.environment_map);
 }
 
+// Every output of the script, checked before anything loads: formats and places, and no file
+// written twice or over an input (the script, a scene, an environment map).
+void check_script_outputs(const std::vector<BatchStep>& steps, const std::string& name, const std::string& script_path) {
+  DistinctFiles files;
+  if (script_path != "-") files.add_input({"the script", script_path});
+  for (const BatchStep& step : steps) {
+    if (!step.scene.empty()) files.add_input({"the scene", step.scene});
+    else if (!step.job.options.env_map.empty()) files.add_input({"--env", step.job.options.env_map});
+  }
+  for (const BatchStep& step : steps) {
+    if (!step.scene.empty()) continue;
+    try {
+      for (NamedFile output : render_job_outputs(step.job)) {
+        output.name += " (line " + std::to_string(step.line) + ")";
+        files.add_output(output);
+      }
+      check_render_job_outputs(step.job);
+    } catch (const std::exception& e) {
+      throw std::invalid_argument(name + ":" + std::to_string(step.line) + ": " + e.what());
+    }
+  }
+}
+
 }  // namespace
 
 int batch_main(int argc, char** argv) {
@@ -147,10 +172,12 @@ int batch_main(int argc, char** argv) {
   try {
     if (script_path == "-") {
       steps = parse_script(std::cin, "<stdin>", fs::current_path());
+      check_script_outputs(steps, "<stdin>", script_path);
     } else {
       std::ifstream in(script_path);
       if (!in) throw std::runtime_error(script_path + ": cannot open the script");
       steps = parse_script(in, script_path, fs::absolute(script_path).parent_path());
+      check_script_outputs(steps, script_path, script_path);
     }
   } catch (const std::exception& e) {
     std::cerr << "radiant batch: " << e.what() << "\n";
@@ -181,6 +208,7 @@ int batch_main(int argc, char** argv) {
       }
       RenderJob job = step.job;
       job.options.quiet = job.options.quiet || quiet;
+      job.options.progress = isatty(STDERR_FILENO) && !job.options.quiet;
       PhaseTimes times;
       times.load = load_seconds;
       load_seconds = 0;  // the load is paid once, by the first view

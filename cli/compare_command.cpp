@@ -10,6 +10,9 @@
 #include "commands.h"
 #include "image/compare.h"
 #include "image/false_color.h"
+#include "image/image_writer.h"
+#include "output/output_paths.h"
+#include "output/output_set.h"
 #include "option_parsing.h"
 
 namespace radiant::cli {
@@ -112,16 +115,29 @@ CompareReport compare_files(const CompareOptions& options) {
   return report;
 }
 
+// Before any image is read: --diff names a format radiant writes, can be created where it goes,
+// and is none of the inputs.
+void check_difference_output(const CompareOptions& options) {
+  DistinctFiles files;
+  files.add_input({"A", options.a});
+  files.add_input({"B", options.b});
+  if (!options.variance_file.empty()) files.add_input({"--variance", options.variance_file});
+  files.add_output({"--diff", options.diff_file});
+  check_image_output(options.diff_file);
+  check_output_place(options.diff_file);
+}
+
 void write_difference(const CompareOptions& options, const CompareReport& report) {
+  OutputSet outputs;
+  TemporaryFile& file = outputs.create(options.diff_file);
   if (report.z_test) {
     double top = options.diff_scale.value_or(report.z_test->z_critical);
-    write_false_color(options.diff_file, report.z_test->abs_z, report.a.width, report.a.height,
-                      float(top));
+    write_false_color(file, report.z_test->abs_z, report.a.width, report.a.height, float(top));
   } else {
     double top = options.diff_scale.value_or(options.thresholds.fail);
-    write_false_color(options.diff_file, pixel_max_difference(report.a, report.b),
-                      report.a.width, report.a.height, float(top));
+    write_false_color(file, pixel_max_difference(report.a, report.b), report.a.width, report.a.height, float(top));
   }
+  outputs.commit();
 }
 
 // Mixing an sRGB-encoded file with a linear one compares different encodings: say so.
@@ -255,13 +271,14 @@ int compare_main(int argc, char** argv) {
     return exit_usage;
   }
   try {
+    if (!options.diff_file.empty()) check_difference_output(options);
     CompareReport report = compare_files(options);
     warn_about_encodings(report);
     if (!options.diff_file.empty()) write_difference(options, report);
     if (options.json) print_json(std::cout, options, report);
     else print_table(std::cout, options, report);
     return report.verdict == Verdict::fail ? exit_failure : exit_ok;
-  } catch (const CompareError& error) {
+  } catch (const std::exception& error) {  // CompareError, and the difference image's errors
     std::cerr << "radiant compare: " << error.what() << "\n";
     return exit_usage;
   }

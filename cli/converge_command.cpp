@@ -1,10 +1,13 @@
 // `radiant converge SCENE [--out DIR]`: what accuracy costs in time. Renders a reference, then a
 // ladder of samples per pixel per mode (or, with --supersampling, per sampler), and writes the
 // table, converge.csv, converge.json and a log-log chart of error against time.
+#include <signal.h>
+#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -13,9 +16,11 @@
 
 #include "commands.h"
 #include "converge_report.h"
+#include "interrupts.h"
 #include "load_scene.h"
 #include "option_parsing.h"
-#include "render_job.h"
+#include "output/output_paths.h"
+#include "output/output_set.h"
 
 namespace radiant::cli {
 
@@ -189,10 +194,30 @@ std::optional<fs::path> find_plot_script() {
   return std::nullopt;
 }
 
-std::string shell_quote(const std::string& text) {
-  std::string quoted = "'";
-  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
+// Runs `program` with `arguments` and waits for it; its exit code, 127 when it cannot be run, or
+// -1 when a signal ended it. Not std::system: that ignores SIGINT while it waits, and a ^C meant
+// for radiant would be lost.
+int run_program(const std::string& program, const std::vector<std::string>& arguments) {
+  std::vector<std::string> words = {program};
+  words.insert(words.end(), arguments.begin(), arguments.end());
+  std::vector<char*> argv;
+  for (std::string& word : words) argv.push_back(word.data());
+  argv.push_back(nullptr);
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  sigset_t defaults;
+  sigemptyset(&defaults);
+  sigaddset(&defaults, SIGXFSZ);  // radiant ignores it; the child need not
+  posix_spawnattr_setsigdefault(&attributes, &defaults);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF);
+  pid_t child = 0;
+  int spawned = posix_spawnp(&child, program.c_str(), nullptr, &attributes, argv.data(), environ);
+  posix_spawnattr_destroy(&attributes);
+  if (spawned != 0) return 127;
+  int status = 0;
+  while (waitpid(child, &status, 0) < 0)
+    if (errno != EINTR) return -1;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
 // Runs the script with python3, then with the system's python3 (a virtualenv or pyenv
@@ -202,10 +227,7 @@ std::string plot_chart(const fs::path& json, const fs::path& png) {
   if (!script) return "scripts/plot_convergence.py not found";
   std::string why = "python3 not found";
   for (const char* python : {"python3", "/usr/bin/python3"}) {
-    std::string command = std::string(python) + " " + shell_quote(script->string()) + " " + shell_quote(json.string()) +
-                          " " + shell_quote(png.string());
-    int status = std::system(command.c_str());
-    int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    int code = run_program(python, {script->string(), json.string(), png.string()});
     if (code == 0) return "";
     if (code == 3) why = "python3 has no matplotlib (apt-get install python3-matplotlib)";
     else if (code != 127) return "the plotting script failed (exit " + std::to_string(code) + ")";
@@ -213,17 +235,51 @@ std::string plot_chart(const fs::path& json, const fs::path& png) {
   return why;
 }
 
-void write_outputs(const ConvergeReport& report, const fs::path& out, const std::string& stem, bool quiet) {
-  fs::create_directories(out);
-  write_text_file_atomically((out / (stem + ".csv")).string(), converge_csv(report));
-  write_text_file_atomically((out / (stem + ".json")).string(), converge_json(report));
+// The report's files: the folder, then NAME.csv, NAME.json and NAME.png in it.
+struct ReportFiles {
+  fs::path folder, csv, json, chart;
+};
+
+ReportFiles report_files(const ConvergeFlags& flags) {
+  std::string stem = flags.supersampling ? "supersampling" : "converge";
+  fs::path folder = flags.out;
+  return {folder, folder / (stem + ".csv"), folder / (stem + ".json"), folder / (stem + ".png")};
+}
+
+// Before any work: the report's folder can be written in (or created), and no report file is a
+// folder or an input. std::invalid_argument for usage errors.
+void check_report_files(const ReportFiles& report, const std::string& scene_path, const ConvergeFlags& flags) {
+  DistinctFiles files;
+  if (scene_path != "-") files.add_input({"the scene", scene_path});
+  if (!flags.reference_file.empty()) files.add_input({"--reference", flags.reference_file});
+  if (!flags.render.options.env_map.empty()) files.add_input({"--env", flags.render.options.env_map});
+  check_output_folder(report.folder.string());
+  for (const fs::path& file : {report.csv, report.json, report.chart}) {
+    files.add_output({"the report file", file.string()});
+    if (fs::exists(report.folder)) check_output_place(file.string());
+  }
+}
+
+// The CSV, the JSON and the chart, committed together (a chart that cannot be drawn is left out
+// with a warning). A first signal while they are written lets them be committed, then exits.
+void write_outputs(const ConvergeReport& report, const ReportFiles& files, bool quiet) {
+  DeferredInterrupts deferred;
+  fs::create_directories(files.folder);
+  OutputSet outputs;
+  outputs.create(files.csv.string()).write(converge_csv(report));
+  TemporaryFile& json = outputs.create(files.json.string());
+  json.write(converge_json(report));
+  TemporaryFile& chart = outputs.create(files.chart.string());
+  std::string why = plot_chart(json.path(), chart.path());
+  if (!why.empty()) outputs.remove(chart);
+  outputs.commit();
   if (!quiet) std::cout << converge_table(report) << std::flush;
-  std::string why = plot_chart(out / (stem + ".json"), out / (stem + ".png"));
   if (!why.empty())
-    std::cerr << "radiant converge: warning: no chart " << (out / (stem + ".png")).string() << ": " << why
+    std::cerr << "radiant converge: warning: no chart " << files.chart.string() << ": " << why
               << "; wrote the CSV and JSON\n";
   else if (!quiet)
-    std::cerr << "radiant: wrote " << (out / (stem + ".csv")).string() << ", .json and .png\n";
+    std::cerr << "radiant: wrote " << files.csv.string() << ", .json and .png\n";
+  throw_if_interrupted();
 }
 
 void bind_flags(CLI::App& app, ConvergeFlags& flags) {
@@ -251,6 +307,8 @@ void bind_flags(CLI::App& app, ConvergeFlags& flags) {
 void run_converge(const std::string& scene_path, ConvergeFlags& flags, std::vector<RenderMode> modes,
                   const std::vector<int>& ladder) {
   RenderOptions& options = flags.render.options;
+  ReportFiles files = report_files(flags);
+  check_report_files(files, scene_path, flags);
   std::optional<Reference> file_reference;
   if (!flags.reference_file.empty()) {
     file_reference = load_reference(flags.reference_file, flags.edge_fraction);
@@ -285,7 +343,7 @@ void run_converge(const std::string& scene_path, ConvergeFlags& flags, std::vect
   report.target_error = flags.target_error;
   report.title = scene_title(scene_path) + (flags.supersampling ? ": anti-aliasing error at edges against render time"
                                                                 : ": RMSE against render time");
-  write_outputs(report, flags.out, flags.supersampling ? "supersampling" : "converge", options.quiet);
+  write_outputs(report, files, options.quiet);
 }
 
 }  // namespace

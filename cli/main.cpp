@@ -1,9 +1,12 @@
 // radiant's entry point: dispatches `radiant COMMAND ...` to the command's own parser.
+#include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <iostream>
 #include <string>
 
 #include "commands.h"
+#include "interrupts.h"
 
 namespace {
 
@@ -18,9 +21,22 @@ void print_usage(std::ostream& out) {
          "  radiant --version\n";
 }
 
+// What a command prints is part of its result (`radiant compare --json > report.json`): a write
+// to standard output that failed, at the final flush too, fails the command.
+int check_standard_output(int code) {
+  std::cout.flush();
+  errno = 0;
+  bool flushed = std::fflush(stdout) == 0;
+  if (flushed && !std::ferror(stdout) && std::cout.good()) return code;
+  std::cerr << "radiant: cannot write to standard output: " << (!flushed && errno ? std::strerror(errno) : "a write failed")
+            << "\n";
+  return code == 0 ? 1 : code;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  radiant::cli::install_signal_handlers();
   if (argc < 2) {
     print_usage(std::cerr);
     return 2;
@@ -34,8 +50,14 @@ int main(int argc, char** argv) {
     std::cout << "radiant " RADIANT_VERSION "\n";
     return 0;
   }
-  for (const radiant::cli::Command& c : radiant::cli::commands())
-    if (command == c.name) return c.run(argc - 1, argv + 1);
+  for (const radiant::cli::Command& c : radiant::cli::commands()) {
+    if (command != c.name) continue;
+    try {
+      return check_standard_output(c.run(argc - 1, argv + 1));
+    } catch (const radiant::cli::Interrupted& interrupted) {
+      return interrupted.exit_code();
+    }
+  }
   std::cerr << "radiant: unknown command '" << command << "'\n";
   print_usage(std::cerr);
   return 2;

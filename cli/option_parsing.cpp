@@ -110,6 +110,16 @@ std::vector<std::string> parse_aovs(const std::string& flag, const std::string& 
   return aovs;
 }
 
+CLI::Validator time_limit_range() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        double seconds = 0;
+        if (CLI::detail::lexical_cast(text, seconds) && seconds > 0 && seconds <= max_time_limit_seconds) return "";
+        return "'" + text + "' is not a number of seconds in (0, 1e9]";
+      },
+      "SECONDS");
+}
+
 const char* mode_name(RenderMode mode) {
   switch (mode) {
     case RenderMode::whitted: return "whitted";

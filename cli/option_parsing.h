@@ -22,6 +22,9 @@ RenderMode parse_mode(const std::string& flag, const std::string& text);
 SamplerKind parse_sampler(const std::string& flag, const std::string& text);
 PixelWindow parse_window(const std::string& flag, const std::string& text);
 std::vector<std::string> parse_aovs(const std::string& flag, const std::string& text);
+// --time-limit's check: seconds in (0, max_time_limit_seconds] (CLI::PositiveNumber lets NaN
+// through, and 1e308 seconds overflows the deadline).
+CLI::Validator time_limit_range();
 const char* mode_name(RenderMode mode);
 const char* sampler_name(SamplerKind kind);
 

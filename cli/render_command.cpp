@@ -37,7 +37,7 @@ int render_main(int argc, char** argv) {
   app.add_option("-o,--output", output, "Output image (.png is 8-bit sRGB, .exr linear float)")->required();
   flags.bind(app, true);
   app.add_option("--time-limit", flags.options.time_limit_seconds, "Stop after this many seconds (loading included)")
-      ->check(CLI::PositiveNumber);
+      ->check(time_limit_range());
   app.add_option("--noise-threshold", flags.options.noise_threshold, "Adaptive sampling: stop pixels under this relative error")
       ->check(positive_number());
   app.add_option("--crop", flags.crop, "Render only pixels X0,Y0,X1,Y1 (half-open)");
@@ -61,7 +61,21 @@ int render_main(int argc, char** argv) {
     return exit_usage;
   }
 
+  RenderJob job{options, output, stats_path};
   PhaseTimes times;
+  try {
+    DistinctFiles files;
+    if (scene_path != "-") files.add_input({"the scene", scene_path});
+    if (!options.env_map.empty()) files.add_input({"--env", options.env_map});
+    for (const NamedFile& file : render_job_outputs(job)) files.add_output(file);
+    check_render_job_outputs(job);
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "radiant render: " << e.what() << "\n";
+    return exit_usage;
+  } catch (const std::exception& e) {
+    std::cerr << "radiant: " << e.what() << "\n";
+    return exit_failure;
+  }
   try {
     LoadOptions load_options;
     load_options.allow_external_files = flags.allow_external_files;
@@ -74,7 +88,7 @@ int render_main(int argc, char** argv) {
 
     try {
       PreparedScene prepared = prepare_scene(std::move(scene), options);
-      run_render_job(scene_path, prepared, {options, output, stats_path}, times);
+      run_render_job(scene_path, prepared, job, times);
     } catch (const std::invalid_argument& e) {
       std::cerr << "radiant render: " << e.what() << "\n";
       return exit_usage;

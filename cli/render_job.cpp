@@ -1,36 +1,51 @@
 #include "render_job.h"
 
-#include <unistd.h>
-
+#include <algorithm>
 #include <chrono>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
 
+#include "interrupts.h"
 #include "option_parsing.h"
+#include "output/output_set.h"
 
 namespace radiant::cli {
 
-void write_text_file_atomically(const std::string& path, const std::string& text) {
-  std::string temporary = path + ".tmp-" + std::to_string(getpid());
-  {
-    std::ofstream out(temporary, std::ios::binary);
-    out << text;
-    if (!out.good()) {
-      std::error_code ignored;
-      std::filesystem::remove(temporary, ignored);
-      throw std::runtime_error("cannot write '" + path + "'");
-    }
-  }
-  std::filesystem::rename(temporary, path);
+std::vector<NamedFile> render_job_outputs(const RenderJob& job) {
+  std::vector<NamedFile> outputs = {{"-o", job.output}};
+  if (!job.stats_path.empty()) outputs.push_back({"--stats", job.stats_path});
+  return outputs;
 }
+
+void check_render_job_outputs(const RenderJob& job) {
+  check_image_output(job.output);
+  for (const NamedFile& output : render_job_outputs(job)) check_output_place(output.path);
+}
+
+namespace {
+
+// The image to write: what the film holds, marked partial when a signal stopped the render, and
+// in a float format with the per-pixel sample counts, which say how far each pixel got.
+OutputImage output_image(const RenderJob& job, const RenderResult& result) {
+  std::vector<std::string> aovs = job.options.aovs;
+  bool partial = result.stats.interrupted;
+  if (partial && is_float_format(job.output) && std::find(aovs.begin(), aovs.end(), "spp") == aovs.end())
+    aovs.push_back("spp");
+  OutputImage image = film_to_image(result.film, aovs);
+  if (partial) image.metadata.emplace_back("radiant:partial", std::string("interrupted by ") + signal_name(interrupt_signal()));
+  return image;
+}
+
+}  // namespace
 
 void run_render_job(const std::string& scene_path, PreparedScene& prepared, const RenderJob& job, PhaseTimes& times) {
   using Clock = std::chrono::steady_clock;
+  DeferredInterrupts deferred;  // a signal stops the render; what it rendered is still written
+  RenderOptions options = job.options;
+  options.stop_request = &interrupt_signal();
   prepare_view(prepared, job.options);
   times.build = prepared.build_seconds;
-  prepare_image_writer(job.output);
-  RenderResult result = render_prepared(prepared, job.options);
+  RenderResult result = render_prepared(prepared, options);
+  if (result.stats.interrupted && result.stats.samples == 0) throw_if_interrupted();  // nothing to save
   times.render = result.stats.render_seconds;
   const ResolvedSettings& s = result.settings;
   if (!job.options.quiet) {
@@ -38,11 +53,17 @@ void run_render_job(const std::string& scene_path, PreparedScene& prepared, cons
     if (!s.mode_reason.empty()) std::cerr << "radiant: mode " << mode_name(s.mode) << ": " << s.mode_reason << "\n";
   }
   auto write_start = Clock::now();
-  write_image(job.output, film_to_image(result.film, job.options.aovs));
+  OutputSet outputs;
+  write_image(outputs.create(job.output), output_image(job, result));
   times.write = std::chrono::duration<double>(Clock::now() - write_start).count();
   if (!job.stats_path.empty())
-    write_text_file_atomically(job.stats_path, render_stats_json(scene_path, job.output, result, times));
+    outputs.create(job.stats_path).write(render_stats_json(scene_path, job.output, result, times));
+  outputs.commit();
   if (!job.options.quiet) std::cerr << "radiant: " << render_summary(job.output, result, times) << "\n";
+  if (int signal = interrupt_signal())
+    std::cerr << "radiant: interrupted by " << signal_name(signal) << "; wrote " << job.output
+              << (result.stats.interrupted ? " with what was rendered, marked partial\n" : "\n");
+  throw_if_interrupted();
 }
 
 }  // namespace radiant::cli

@@ -2,7 +2,9 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
+#include "output/output_paths.h"
 #include "render/render.h"
 #include "render_report.h"
 
@@ -14,13 +16,19 @@ struct RenderJob {
   std::string stats_path;
 };
 
-// Renders, writes the image (atomically) and the stats, prints notes and the summary unless
-// quiet. `times` carries the load time in and gets the rest filled. Throws on failure;
-// std::invalid_argument means a bad setting (usage error). Moves `prepared` to the render origin
-// of this view first (render/render_space.h).
-void run_render_job(const std::string& scene_path, PreparedScene& prepared, const RenderJob& job, PhaseTimes& times);
+// The job's outputs, named by their flags.
+std::vector<NamedFile> render_job_outputs(const RenderJob& job);
 
-// Writes `text` to `path` through a temporary file and a rename.
-void write_text_file_atomically(const std::string& path, const std::string& text);
+// What must hold before any work: -o names an image format (std::invalid_argument, a usage
+// error, when not; it also loads the image writer) and every output can be created where it
+// goes (std::runtime_error).
+void check_render_job_outputs(const RenderJob& job);
+
+// Renders, writes the image and the stats and commits them together (neither replaces an
+// existing file unless both were written), prints notes and the summary unless quiet. `times`
+// carries the load time in and gets the rest filled. Throws on failure; std::invalid_argument
+// means a bad setting (usage error). Moves `prepared` to the render origin of this view first
+// (render/render_space.h).
+void run_render_job(const std::string& scene_path, PreparedScene& prepared, const RenderJob& job, PhaseTimes& times);
 
 }  // namespace radiant::cli

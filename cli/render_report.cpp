@@ -57,6 +57,7 @@ std::string render_summary(const std::string& output, const RenderResult& r, con
   }
   if (r.stats.stopped_by_time_limit)
     line += ", time limit reached at " + std::to_string(r.stats.samples / std::max<size_t>(1, r.film.pixels.size())) + " spp";
+  if (r.stats.interrupted) line += ", interrupted: partial image";
   return line;
 }
 
@@ -86,6 +87,7 @@ std::string render_stats_json(const std::string& scene_path, const std::string& 
     << double(r.stats.samples) / double(std::max<size_t>(1, r.film.pixels.size())) << "},\n"
     << "  \"estimated_relative_error\": " << r.stats.estimated_relative_error << ",\n"
     << "  \"stopped_by_time_limit\": " << (r.stats.stopped_by_time_limit ? "true" : "false") << ",\n"
+    << "  \"interrupted\": " << (r.stats.interrupted ? "true" : "false") << ",\n"
     << "  \"nonfinite_samples_dropped\": " << rays.nonfinite_samples << ",\n"
     << "  \"untraceable_rays\": " << r.stats.untraceable_rays << ",\n"
     << "  \"peak_memory_bytes\": " << peak_memory_bytes() << "\n"

@@ -3,6 +3,7 @@
 per series (mode or sampler), with a 1/sqrt(t) guide line.
 
 Usage: plot_convergence.py converge.json converge.png
+radiant passes a temporary for converge.png and renames it into place itself.
 Exit codes: 0 written, 2 usage or unreadable JSON, 3 matplotlib missing.
 """
 import json
@@ -64,9 +65,7 @@ def main():
     axes.grid(True, which="both", linewidth=0.3)
     axes.legend(fontsize=8)
     figure.tight_layout()
-    temporary = png_path + ".tmp.png"
-    figure.savefig(temporary)
-    os.replace(temporary, png_path)
+    figure.savefig(png_path, format="png")
     return 0
 
 

@@ -1,9 +1,14 @@
 // radiant's OpenImageIO module: the ImageIoModule interface (src/image/image_io_module.h) on
 // OpenImageIO. Built as a shared library that radiant loads on first use.
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <mutex>
 
 #include "image/image_io_module.h"
 
@@ -38,6 +43,9 @@ class OiioImageSource final : public ImageSource {
     header_.deep = spec.deep;
     header_.channel_names = spec.channelnames;
     header_.color_space = spec.get_string_attribute("oiio:ColorSpace");
+    for (const OIIO::ParamValue& attribute : spec.extra_attribs)
+      if (attribute.type() == OIIO::TypeDesc::STRING)
+        header_.metadata.emplace_back(attribute.name().string(), attribute.get_string());
   }
   const ImageHeader& header() const override { return header_; }
   bool read(int channels, PixelType type, void* out) override {
@@ -59,9 +67,66 @@ std::unique_ptr<ImageSource> open_image(const std::string& path, std::string& er
   return std::make_unique<OiioImageSource>(std::move(input));
 }
 
-std::string write_image(const std::string& path, const ImageWriteSpec& spec, const float* pixels) {
+// Writes to a descriptor radiant opened (an exclusive temporary) and keeps the first error:
+// OpenImageIO's writers do not all check what their proxy returns.
+class DescriptorOutput final : public OIIO::Filesystem::IOProxy {
+ public:
+  DescriptorOutput(int descriptor, const std::string& path) : IOProxy(path, Write), descriptor_(descriptor) {}
+  const char* proxytype() const override { return "descriptor"; }
+  size_t read(void* data, size_t size) override {
+    size_t got = pread(data, size, m_pos);
+    m_pos += int64_t(got);
+    return got;
+  }
+  size_t write(const void* data, size_t size) override {
+    size_t written = pwrite(data, size, m_pos);
+    m_pos += int64_t(written);
+    return written;
+  }
+  size_t pread(void* data, size_t size, int64_t offset) override {
+    ssize_t got = ::pread(descriptor_, data, size, offset);
+    return got > 0 ? size_t(got) : 0;
+  }
+  size_t pwrite(const void* data, size_t size, int64_t offset) override {
+    const char* bytes = static_cast<const char*>(data);
+    size_t done = 0;
+    while (done < size) {
+      ssize_t n = ::pwrite(descriptor_, bytes + done, size - done, offset + int64_t(done));
+      if (n < 0 && errno == EINTR) continue;
+      if (n < 0) {
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (!error_number_) error_number_ = errno;
+        break;
+      }
+      done += size_t(n);
+    }
+    std::lock_guard<std::mutex> lock(mutex_);
+    size_ = std::max(size_, size_t(offset) + done);
+    return done;
+  }
+  size_t size() const override {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return size_;
+  }
+  // The first failed write's errno, or 0.
+  int error_number() const { return error_number_; }
+
+ private:
+  int descriptor_;
+  size_t size_ = 0;
+  int error_number_ = 0;
+  mutable std::mutex mutex_;
+};
+
+bool can_write(const std::string& path) {
+  if (OIIO::ImageOutput::create(path)) return true;
+  OIIO::geterror();  // read, so that OpenImageIO does not print it at exit
+  return false;
+}
+
+std::string write_image(int descriptor, const std::string& path, const ImageWriteSpec& spec, const float* pixels) {
   auto output = OIIO::ImageOutput::create(path);
-  if (!output) return "no image format for this extension";
+  if (!output) return first_line(OIIO::geterror());
   OIIO::ImageSpec file_spec(spec.width, spec.height, int(spec.channel_names.size()), type_desc(spec.type));
   file_spec.channelnames = spec.channel_names;
   // Alpha by name only (the constructor guesses channel 3 of four, which may be an AOV).
@@ -71,9 +136,15 @@ std::string write_image(const std::string& path, const ImageWriteSpec& spec, con
   file_spec.attribute("DateTime", "");
   if (!spec.color_space.empty()) file_spec.attribute("oiio:ColorSpace", spec.color_space);
   if (spec.zip) file_spec.attribute("compression", "zip");
-  if (!output->open(path, file_spec) || !output->write_image(OIIO::TypeDesc::FLOAT, pixels) || !output->close())
-    return first_line(output->geterror());
-  return "";
+  for (const auto& [name, value] : spec.metadata) file_spec.attribute(name, value);
+  DescriptorOutput proxy(descriptor, path);
+  // OpenImageIO 2.4's TIFF writer, given any proxy, writes a directory without ImageLength when
+  // it rewrites the Exif directory: TIFF goes by name.
+  bool by_name = !output->supports("ioproxy") || std::string(output->format_name()) == "tiff";
+  if (!by_name && !output->set_ioproxy(&proxy)) return first_line(output->geterror());
+  bool written = output->open(path, file_spec) && output->write_image(OIIO::TypeDesc::FLOAT, pixels) && output->close();
+  if (proxy.error_number()) return std::strerror(proxy.error_number());
+  return written ? "" : first_line(output->geterror());
 }
 
 PixelDifference compare_pixels(const float* a, const float* b, int width, int height, int channels,
@@ -97,7 +168,7 @@ PixelDifference compare_pixels(const float* a, const float* b, int width, int he
   return difference;
 }
 
-constexpr ImageIoModule module_table = {image_io_interface_version, open_image, write_image, compare_pixels};
+constexpr ImageIoModule module_table = {image_io_interface_version, open_image, can_write, write_image, compare_pixels};
 
 }  // namespace
 

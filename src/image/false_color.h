@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "math/vec.h"
+#include "output/temporary_file.h"
 
 namespace radiant {
 
@@ -13,9 +14,9 @@ namespace radiant {
 color3 false_color(float t);
 
 // Writes `magnitude` (width×height, row-major) as an RGB false-color image with `top` mapping to
-// white, to `path` (any OIIO format, by extension) through a temporary file in the same folder
-// renamed into place, so a failed write leaves nothing behind. Throws CompareError.
-void write_false_color(const std::string& path, const std::vector<float>& magnitude, int width,
-                       int height, float top);
+// white, to `file` (any format radiant writes, by its target's extension: half float in EXR,
+// else 8 bits). Throws std::runtime_error naming the target.
+void write_false_color(TemporaryFile& file, const std::vector<float>& magnitude, int width, int height,
+                       float top);
 
 }  // namespace radiant

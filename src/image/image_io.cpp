@@ -66,9 +66,18 @@ std::unique_ptr<ImageSource> open_image_file(const std::string& path, std::strin
   return image_io_module().open(path, error);
 }
 
-std::string write_image_file(const std::string& path, const ImageWriteSpec& spec, const float* pixels) {
-  if (writes_as_png(path, spec)) return write_png(path, spec, pixels);
-  return image_io_module().write(path, spec, pixels);
+void write_image_file(TemporaryFile& file, const ImageWriteSpec& spec, const float* pixels) {
+  std::string error;
+  if (writes_as_png(file.target(), spec)) {
+    std::vector<unsigned char> bytes = encode_png(spec, pixels, error);
+    if (error.empty()) file.write(bytes.data(), bytes.size());
+  } else {
+    // The temporary's name keeps the target's extension, which names the format.
+    error = image_io_module().write(file.descriptor(), file.path(), spec, pixels);
+    // Name the file the user asked for, not the temporary one.
+    for (size_t at; (at = error.find(file.path())) != std::string::npos;) error.replace(at, file.path().size(), file.target());
+  }
+  if (!error.empty()) file.fail(error);
 }
 
 std::string lowercase_extension(const std::string& path) {

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "image/image_io_module.h"
+#include "output/temporary_file.h"
 
 namespace radiant {
 
@@ -16,11 +17,10 @@ const ImageIoModule& image_io_module();
 // Opens `path` for reading. Returns null with the reason (one line) in `error`.
 std::unique_ptr<ImageSource> open_image_file(const std::string& path, std::string& error);
 
-// Writes `pixels` (spec.channel_names.size() floats per pixel, top row first) to `path` in the
-// format its extension names: 8-bit PNG directly, any other format through the module. Values
-// for uint8 are display values in [0, 1]. Returns "" or the reason. Not atomic; callers write a
-// temporary file and rename it.
-std::string write_image_file(const std::string& path, const ImageWriteSpec& spec, const float* pixels);
+// Writes `pixels` (spec.channel_names.size() floats per pixel, top row first) to `file` in the
+// format its target's extension names: 8-bit PNG directly, any other format through the module.
+// Values for uint8 are display values in [0, 1]. Throws std::runtime_error naming the target.
+void write_image_file(TemporaryFile& file, const ImageWriteSpec& spec, const float* pixels);
 
 // The path's extension in lower case, with its dot (".png"), or "".
 std::string lowercase_extension(const std::string& path);

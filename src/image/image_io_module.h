@@ -9,11 +9,15 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace radiant {
 
 enum class PixelType { uint8, half, float32 };
+
+// A file's text attributes as name and value: PNG tEXt chunks, EXR string header attributes.
+using ImageMetadata = std::vector<std::pair<std::string, std::string>>;
 
 // What a file says about subimage 0.
 struct ImageHeader {
@@ -22,6 +26,7 @@ struct ImageHeader {
   bool deep = false;
   std::vector<std::string> channel_names;
   std::string color_space;  // OpenImageIO's "oiio:ColorSpace": "sRGB", "Linear", ... or empty
+  ImageMetadata metadata;   // every string attribute
 };
 
 // An open image file: its header first, so that callers can refuse absurd sizes before any
@@ -43,6 +48,7 @@ struct ImageWriteSpec {
   PixelType type = PixelType::uint8;       // what the file stores (values quantized as given)
   std::string color_space;                 // recorded in the file when not empty
   bool zip = false;                        // lossless zip compression (EXR)
+  ImageMetadata metadata;                  // recorded in the file (EXR: header attributes)
 };
 
 // OpenImageIO's ImageBufAlgo::compare over two float images of the same layout.
@@ -57,15 +63,19 @@ struct ImageIoModule {
   uint32_t interface_version;
   // The file opened, or null with the reason (one line) in `error`.
   std::unique_ptr<ImageSource> (*open)(const std::string& path, std::string& error);
-  // Writes `pixels` (spec.channel_names.size() floats per pixel) to `path`, in the format its
-  // extension names. Returns "" or the reason.
-  std::string (*write)(const std::string& path, const ImageWriteSpec& spec, const float* pixels);
+  // Whether OpenImageIO has a writer for `path`'s extension.
+  bool (*can_write)(const std::string& path);
+  // Writes `pixels` (spec.channel_names.size() floats per pixel) in the format `path`'s extension
+  // names to the open file `descriptor`, whose name is `path`. Formats that cannot write through
+  // a descriptor (OpenImageIO's SGI, ICO, FITS, HEIF, RLA, zfile, and TIFF) open `path` by name. Returns ""
+  // or the reason.
+  std::string (*write)(int descriptor, const std::string& path, const ImageWriteSpec& spec, const float* pixels);
   PixelDifference (*compare)(const float* a, const float* b, int width, int height, int channels,
                              float fail_threshold, float warn_threshold);
 };
 
 // Raised whenever the struct above changes, so that a stale module is refused, not misread.
-constexpr uint32_t image_io_interface_version = 1;
+constexpr uint32_t image_io_interface_version = 2;
 
 }  // namespace radiant
 

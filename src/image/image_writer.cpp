@@ -1,18 +1,13 @@
 #include "image/image_writer.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <stdexcept>
 
 #include "image/image_io.h"
 #include "image/png_writer.h"
 
 namespace radiant {
-
-namespace fs = std::filesystem;
 
 namespace {
 
@@ -28,11 +23,14 @@ ImageWriteSpec output_spec(const std::string& path, const OutputImage& image) {
   spec.type = as_float ? PixelType::float32 : PixelType::uint8;
   spec.color_space = as_float ? "Linear" : "sRGB";
   spec.zip = as_float;
+  spec.metadata = image.metadata;
   return spec;
 }
 
-void write_pixels(const std::string& file, const OutputImage& image) {
-  ImageWriteSpec spec = output_spec(file, image);
+}  // namespace
+
+void write_image(TemporaryFile& file, const OutputImage& image) {
+  ImageWriteSpec spec = output_spec(file.target(), image);
   bool as_float = spec.type == PixelType::float32;
   std::vector<float> data;
   const float* source = image.pixels.data();
@@ -44,17 +42,7 @@ void write_pixels(const std::string& file, const OutputImage& image) {
       for (int c = 0; c < 3; ++c) data[i * 3 + c] = linear_to_srgb(std::clamp(image.pixels[i * stride + c], 0.0f, 1.0f));
     source = data.data();
   }
-  std::string error = write_image_file(file, spec, source);
-  if (!error.empty()) throw std::runtime_error(error);
-}
-
-}  // namespace
-
-std::string temporary_path_beside(const std::string& path) {
-  fs::path p(path);
-  // Keep the extension: it names the format.
-  std::string name = "." + p.stem().string() + ".tmp-" + std::to_string(getpid()) + p.extension().string();
-  return (p.parent_path() / name).string();
+  write_image_file(file, spec, source);
 }
 
 bool is_float_format(const std::string& path) {
@@ -66,25 +54,16 @@ float linear_to_srgb(float v) {
   return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
 }
 
-void prepare_image_writer(const std::string& path) {
+void check_image_output(const std::string& path) {
   OutputImage color_only;  // what decides the writer: the format and the first three channels
   color_only.channels = {"R", "G", "B"};
-  if (!writes_as_png(path, output_spec(path, color_only))) image_io_module();
-}
-
-void write_image(const std::string& path, const OutputImage& image) {
-  std::string temporary = temporary_path_beside(path);
-  try {
-    write_pixels(temporary, image);
-    fs::rename(temporary, path);
-  } catch (const std::exception& e) {
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
-    // Name the file the user asked for, not the temporary one.
-    std::string reason = e.what();
-    for (size_t at; (at = reason.find(temporary)) != std::string::npos;) reason.replace(at, temporary.size(), path);
-    throw std::runtime_error("cannot write '" + path + "': " + reason);
-  }
+  if (writes_as_png(path, output_spec(path, color_only))) return;
+  std::string extension = lowercase_extension(path);
+  if (extension.empty())
+    throw std::invalid_argument("cannot write '" + path + "': no extension names its image format (.png, .exr, ...)");
+  if (!image_io_module().can_write(path))
+    throw std::invalid_argument("cannot write '" + path + "': no image format radiant writes has the extension '" +
+                                extension + "'");
 }
 
 }  // namespace radiant

@@ -4,6 +4,9 @@
 #include <string>
 #include <vector>
 
+#include "image/image_io_module.h"
+#include "output/temporary_file.h"
+
 namespace radiant {
 
 // A float image with named channels ("R", "G", "B", then AOVs such as "albedo.R").
@@ -11,24 +14,22 @@ struct OutputImage {
   int width = 0, height = 0;
   std::vector<std::string> channels;
   std::vector<float> pixels;  // interleaved, top row first
+  ImageMetadata metadata;     // text attributes recorded in the file (PNG tEXt, EXR header)
 };
 
 // True for formats that store linear floating point (EXR, HDR, PFM, TIFF float is not chosen).
 bool is_float_format(const std::string& path);
 
-// Writes atomically: a temporary file beside `path`, then a rename, so an existing file is never
-// left half-written. Formats without float storage get the first three channels, sRGB-encoded
-// and clamped to 8 bits. Throws std::runtime_error with the writer's reason.
-void write_image(const std::string& path, const OutputImage& image);
+// Checks, before any work, that an image can be written to `path`: its extension names a format
+// radiant writes (std::invalid_argument, a usage error, when not). Loads now whatever writing it
+// will need (the OpenImageIO module for any format but PNG), so that a missing module fails
+// before a long render rather than after it (std::runtime_error).
+void check_image_output(const std::string& path);
 
-// A hidden file in the same folder with the same extension, unique to this process: written
-// first and renamed onto `path`, so that the rename is atomic and the extension names the format.
-std::string temporary_path_beside(const std::string& path);
-
-// Loads now whatever writing `path` will need (the OpenImageIO module for any format but PNG),
-// so that a missing module fails before a long render rather than after it. Throws
-// std::runtime_error.
-void prepare_image_writer(const std::string& path);
+// Writes `image` to `file`, which is renamed onto its target when committed. Formats without
+// float storage get the first three channels, sRGB-encoded and clamped to 8 bits. Throws
+// std::runtime_error naming the target and the writer's reason.
+void write_image(TemporaryFile& file, const OutputImage& image);
 
 // Linear to sRGB transfer function (IEC 61966-2-1), for values in [0, 1].
 float linear_to_srgb(float linear);

@@ -83,6 +83,12 @@ class PngSource final : public ImageSource {
       default: header_.channel_names = {"R", "G", "B", "A"}, header_.alpha_channel = 3; break;
     }
     header_.color_space = color_space_of(png, info);
+    // Text chunks before the pixels (radiant writes its own there: radiant:partial, ...).
+    png_textp text = nullptr;
+    int count = 0;
+    png_get_text(png, info, &text, &count);
+    for (int i = 0; i < count; ++i)
+      header_.metadata.emplace_back(text[i].key, text[i].text ? text[i].text : "");
   }
 
   const ImageHeader& header() const override { return header_; }

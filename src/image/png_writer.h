@@ -3,17 +3,19 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "image/image_io_module.h"
 
 namespace radiant {
 
-// Whether write_png stores this image: 8 bits, gray or RGB. Alpha goes through OpenImageIO,
+// Whether encode_png stores this image: 8 bits, gray or RGB. Alpha goes through OpenImageIO,
 // which keeps its associated-alpha convention.
 bool writes_as_png(const std::string& path, const ImageWriteSpec& spec);
 
-// Writes `pixels` (1 or 3 channels of display values in [0, 1], clamped and rounded to 8 bits
-// as OpenImageIO does) to `path` as an sRGB PNG. Returns "" or the reason.
-std::string write_png(const std::string& path, const ImageWriteSpec& spec, const float* pixels);
+// `pixels` (1 or 3 channels of display values in [0, 1], clamped and rounded to 8 bits as
+// OpenImageIO does) as the bytes of an sRGB PNG file, with spec.metadata as tEXt chunks. Empty,
+// with the reason in `error`, on failure.
+std::vector<unsigned char> encode_png(const ImageWriteSpec& spec, const float* pixels, std::string& error);
 
 }  // namespace radiant

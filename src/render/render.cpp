@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <mutex>
+#include <optional>
 
 #include "integrators/naive.h"
 #include "integrators/path.h"
@@ -65,6 +66,23 @@ float pixel_relative_error(const FilmPixel& p) {
   return sigma / std::max(l, 1e-3f);
 }
 
+// Whether the render must stop before its samples are all taken: checked before every pixel, so
+// a stop lands within one pixel's samples of a pass at any image size. Once one thread sees it,
+// every thread does, and the film keeps exactly the samples taken.
+struct StopCheck {
+  const std::atomic<int>* request = nullptr;  // a signal
+  std::optional<Clock::time_point> deadline;  // the time limit
+  mutable std::atomic<bool> stopped{false};
+
+  bool requested() const { return request && request->load(std::memory_order_relaxed) != 0; }
+  bool operator()() const {
+    if (stopped.load(std::memory_order_relaxed)) return true;
+    if (!requested() && (!deadline || Clock::now() < *deadline)) return false;
+    stopped.store(true, std::memory_order_relaxed);
+    return true;
+  }
+};
+
 struct PassRunner {
   const RenderContext& ctx;
   const ResolvedSettings& s;
@@ -74,6 +92,7 @@ struct PassRunner {
   uint32_t seed;
   Film& film;
   tbb::enumerable_thread_specific<RayCounts>& counts;
+  const StopCheck& stop;
 
   void render_pixel(int x, int y, uint32_t first, uint32_t end) const {
     FilmPixel& p = film.at(x - s.window.x0, y - s.window.y0);
@@ -99,20 +118,25 @@ struct PassRunner {
     }
   }
 
-  // Adds samples [first, end) to every pixel still active.
+  // Adds samples [first, end) to every pixel still active, until told to stop.
   void run(uint32_t first, uint32_t end, const std::vector<uint8_t>& active) const {
     const PixelWindow& w = s.window;
     tbb::parallel_for(tbb::blocked_range2d<int>(w.y0, w.y1, 8, w.x0, w.x1, 8), [&](const tbb::blocked_range2d<int>& r) {
       for (int y = r.rows().begin(); y < r.rows().end(); ++y)
-        for (int x = r.cols().begin(); x < r.cols().end(); ++x)
+        for (int x = r.cols().begin(); x < r.cols().end(); ++x) {
+          if (stop()) return;
           if (active.empty() || active[size_t(y - w.y0) * film.width + (x - w.x0)]) render_pixel(x, y, first, end);
+        }
     });
   }
 };
 
+// Printed at the start too (without an estimate yet), so that the terminal shows the load is over.
 void print_progress(double fraction, double elapsed) {
-  double eta = fraction > 0 ? elapsed * (1 - fraction) / fraction : 0;
-  std::fprintf(stderr, "\rrendering %3d%%  ETA %5.1fs ", int(fraction * 100), eta);
+  if (fraction > 0)
+    std::fprintf(stderr, "\rrendering %3d%%  ETA %5.1fs ", int(fraction * 100), elapsed * (1 - fraction) / fraction);
+  else
+    std::fprintf(stderr, "\rrendering   0%%%14s", "");
   std::fflush(stderr);
 }
 
@@ -170,23 +194,36 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
 
   result.film = make_film(s.window.x1 - s.window.x0, s.window.y1 - s.window.y0);
   tbb::enumerable_thread_specific<RayCounts> counts;
+  auto start = Clock::now();
+  bool adaptive = options.noise_threshold > 0, timed = options.time_limit_seconds > 0;
+  StopCheck stop;
+  stop.request = options.stop_request;
+  if (timed) {
+    double limit = std::min(options.time_limit_seconds, max_time_limit_seconds);
+    stop.deadline = options.deadline.value_or(
+        start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limit)));
+  }
   PassRunner runner{ctx, s, select_integrator(s), make_camera_frame(s.camera, s.width, s.height),
-                    !options.aovs.empty(), options.seed, result.film, counts};
+                    !options.aovs.empty(), options.seed, result.film, counts, stop};
 
   // More threads than TBB's limit (the cores) are not started anyway, and asking prints a warning.
   int cores = tbb::this_task_arena::max_concurrency();
   tbb::task_arena arena(options.threads > 0 ? std::min(options.threads, cores) : cores);
-  auto start = Clock::now();
   std::vector<uint8_t> active;
   uint32_t done = 0, total = uint32_t(s.spp);
-  bool adaptive = options.noise_threshold > 0, timed = options.time_limit_seconds > 0;
   // One pass for a plain render; growing passes when a budget or a noise target may stop early.
   uint32_t pass = (adaptive || timed) ? std::min<uint32_t>(total, adaptive ? 8u : 1u) : total;
+  if (options.progress && !options.quiet) print_progress(0, 0);
   while (done < total) {
     uint32_t end = std::min(total, done + pass);
     arena.execute([&] { runner.run(done, end, active); });
     done = end;
     result.stats.passes++;
+    if (stop.stopped) {
+      result.stats.interrupted = stop.requested();
+      result.stats.stopped_by_time_limit = !result.stats.interrupted;
+      break;
+    }
     if (options.progress && !options.quiet) print_progress(double(done) / total, seconds_since(start));
     if (adaptive) {
       active.assign(result.film.pixels.size(), 0);
@@ -196,12 +233,12 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
       if (remaining == 0) break;
     }
     if (timed) {
-      double elapsed = options.deadline ? std::chrono::duration<double>(*options.deadline - Clock::now()).count()
-                                        : options.time_limit_seconds - seconds_since(start);
+      // Passes that fit in the time left keep every pixel at the same number of samples.
+      double remaining = std::chrono::duration<double>(*stop.deadline - Clock::now()).count();
       double per_sample = seconds_since(start) / done;
       uint32_t next = std::max<uint32_t>(1, pass * 2);
-      if (elapsed <= per_sample * next * 1.1) {
-        next = uint32_t(std::max(0.0, elapsed / (per_sample * 1.1)));
+      if (remaining <= per_sample * next * 1.1) {
+        next = uint32_t(std::max(0.0, remaining / (per_sample * 1.1)));
         if (next == 0) {
           result.stats.stopped_by_time_limit = done < total;
           break;

@@ -63,6 +63,7 @@ struct RenderStats {
   float estimated_relative_error = 0;  // mean over pixels of the relative standard error
   uint64_t untraceable_rays = 0;  // rays beyond the traceable range, taken as misses (none in a valid scene)
   bool stopped_by_time_limit = false;
+  bool interrupted = false;  // stopped by RenderOptions::stop_request: the film is partial
 };
 
 struct RenderResult {

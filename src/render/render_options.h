@@ -2,6 +2,7 @@
 // Unset optionals fall back to the scene file's settings, then to the defaults of the mode.
 #pragma once
 
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <optional>
@@ -35,14 +36,20 @@ struct RenderOptions {
   std::optional<PixelWindow> crop;
   std::string effects;          // --effects list, applied to the scene's effect set
   std::vector<std::string> aovs;  // albedo, normal, depth, variance, spp
-  double time_limit_seconds = 0;  // 0 = none
+  double time_limit_seconds = 0;  // 0 = none; at most max_time_limit_seconds
   // When set, the time limit ends here (the CLI starts it before loading the scene).
   std::optional<std::chrono::steady_clock::time_point> deadline;
+  // When set and nonzero, the render stops at the next pixel (the CLI's SIGINT/SIGTERM handler).
+  const std::atomic<int>* stop_request = nullptr;
   float noise_threshold = 0;      // 0 = off
   float contribution_cutoff = 0.001f;  // Whitted: stop recursing below this weight
   bool quiet = false;
   bool progress = false;  // print progress to stderr (the CLI sets it when stderr is a terminal)
 };
+
+// About 31 years: a longer limit cannot be told from none, and its deadline would overflow the
+// clock's 64-bit nanoseconds.
+constexpr double max_time_limit_seconds = 1e9;
 
 // Default samples per pixel and depth of each mode.
 constexpr int default_whitted_spp = 4;

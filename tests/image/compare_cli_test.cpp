@@ -146,7 +146,7 @@ TEST_CASE("radiant compare --diff writes a false-color image of the inputs' size
   CHECK_FALSE(std::filesystem::exists(none));
   test::CommandResult bad = run_radiant(pair.args(pair.same, "--diff " + quoted(pair.dir.file("x.nosuchformat"))));
   CHECK(bad.exit_code == 2);
-  CHECK(bad.err.find("cannot write difference image") != std::string::npos);
+  CHECK(bad.err.find("x.nosuchformat") != std::string::npos);
   int files = 0;
   for (auto& entry : std::filesystem::directory_iterator(pair.dir.path)) files += entry.is_regular_file();
   CHECK(files == 5);  // the four inputs and diff.png: no temporary left behind

@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "image/image_io.h"
+#include "output/output_set.h"
 #include "support/test_support.h"
 
 using namespace radiant;
@@ -78,9 +79,12 @@ TEST_CASE("image files: an unknown extension is an error naming the reason, and 
   spec.width = spec.height = 1;
   spec.channel_names = {"R", "G", "B"};
   float pixel[3] = {0.5f, 0.5f, 0.5f};
-  std::string error = write_image_file(dir.file("out.unknownformat").string(), spec, pixel);
-  CHECK(!error.empty());
-  CHECK(!fs::exists(dir.file("out.unknownformat")));
+  {
+    OutputSet outputs;
+    CHECK_THROWS_WITH(write_image_file(outputs.create(dir.file("out.unknownformat").string()), spec, pixel),
+                      doctest::Contains("out.unknownformat"));
+  }
+  CHECK(fs::is_empty(dir.path));  // neither the file nor its temporary
 }
 
 TEST_CASE("image files: radiant's PNG reader agrees with OpenImageIO's, alpha read as stored") {

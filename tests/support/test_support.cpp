@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "image/image_io.h"
+#include "output/output_set.h"
 
 namespace radiant::test {
 
@@ -79,8 +80,9 @@ void write_test_image(const fs::path& path, int width, int height, const std::ve
   spec.height = height;
   spec.channel_names = names;
   spec.type = lowercase_extension(path.string()) == ".exr" ? PixelType::float32 : PixelType::uint8;
-  std::string error = write_image_file(path.string(), spec, values.data());
-  if (!error.empty()) throw std::runtime_error("cannot write " + path.string() + ": " + error);
+  OutputSet outputs;
+  write_image_file(outputs.create(path.string()), spec, values.data());
+  outputs.commit();
 }
 
 void write_texel_bytes(const fs::path& path, int width, int height, int channels,

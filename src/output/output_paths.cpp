@@ -1,0 +1,80 @@
+#include "output/output_paths.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <stdexcept>
+
+namespace radiant {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+[[noreturn]] void fail(const std::string& target, const std::string& why) {
+  throw std::runtime_error("cannot write '" + target + "': " + why);
+}
+
+// The folder a relative file name without one lives in.
+std::string folder_of(const std::string& path) {
+  std::string folder = fs::path(path).parent_path().string();
+  return folder.empty() ? "." : folder;
+}
+
+// Throws unless `folder` is an existing folder this process may create files in.
+void check_writable_folder(const std::string& target, const std::string& folder) {
+  struct stat status;
+  if (stat(folder.c_str(), &status) != 0) {
+    if (errno == ENOENT) fail(target, "the folder '" + folder + "' does not exist");
+    fail(target, "the folder '" + folder + "': " + std::strerror(errno));
+  }
+  if (!S_ISDIR(status.st_mode)) fail(target, "'" + folder + "' is not a folder");
+  // AT_EACCESS: the effective ids, which the kernel checks when the file is created.
+  if (faccessat(AT_FDCWD, folder.c_str(), W_OK | X_OK, AT_EACCESS) != 0)
+    fail(target, "the folder '" + folder + "' is not writable (" + std::strerror(errno) + ")");
+}
+
+}  // namespace
+
+void check_output_place(const std::string& target) {
+  struct stat status;
+  if (stat(target.c_str(), &status) == 0 && S_ISDIR(status.st_mode)) fail(target, "it is a folder");
+  check_writable_folder(target, folder_of(target));
+}
+
+void check_output_folder(const std::string& folder) {
+  std::string existing = folder;
+  struct stat status;
+  while (stat(existing.c_str(), &status) != 0 && errno == ENOENT && existing != ".") existing = folder_of(existing);
+  check_writable_folder(folder, existing);
+}
+
+DistinctFiles::Key DistinctFiles::key_of(const std::string& path) {
+  Key key;
+  struct stat status;
+  if (stat(path.c_str(), &status) == 0) {
+    key.exists = true;
+    key.device = status.st_dev;
+    key.inode = status.st_ino;
+    return key;
+  }
+  std::error_code error;
+  fs::path normal = fs::weakly_canonical(fs::absolute(path), error);
+  key.normal_path = error ? fs::absolute(path).lexically_normal().string() : normal.string();
+  return key;
+}
+
+void DistinctFiles::add_input(const NamedFile& file) { files_.emplace(key_of(file.path), file); }
+
+void DistinctFiles::add_output(const NamedFile& file) {
+  auto [at, added] = files_.emplace(key_of(file.path), file);
+  if (!added)
+    throw std::invalid_argument(file.name + " '" + file.path + "' is the same file as " + at->second.name + " '" +
+                                at->second.path + "'");
+}
+
+}  // namespace radiant

@@ -1,0 +1,29 @@
+// The files one command writes, committed together: each goes to its own temporary, and only
+// when every one is complete are they renamed into place, so a failure replaces none of them.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "output/temporary_file.h"
+
+namespace radiant {
+
+class OutputSet {
+ public:
+  // A new temporary for `target` (TemporaryFile's errors).
+  TemporaryFile& create(const std::string& target);
+  // Finishes every file, then renames each onto its target. Throws std::runtime_error naming the
+  // file that failed; when a finish fails, no target has been touched. (The renames themselves
+  // are separate steps: one failing after another succeeded is not undone, but a rename within
+  // a folder fails only when the folder changed under the command.)
+  void commit();
+  // Leaves `file` out of the commit and removes it (a chart that could not be drawn).
+  void remove(const TemporaryFile& file);
+
+ private:
+  std::vector<std::unique_ptr<TemporaryFile>> files_;
+};
+
+}  // namespace radiant

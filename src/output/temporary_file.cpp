@@ -1,0 +1,101 @@
+#include "output/temporary_file.h"
+
+#include <fcntl.h>
+#include <sys/random.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <stdexcept>
+
+#include "output/temporary_registry.h"
+
+namespace radiant {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Twelve characters of 62: about 71 bits nobody can guess.
+std::string random_name_part() {
+  static const char alphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789";
+  unsigned char bytes[12];
+  size_t got = 0;
+  while (got < sizeof bytes) {
+    ssize_t n = getrandom(bytes + got, sizeof bytes - got, 0);
+    if (n < 0 && errno != EINTR) throw std::runtime_error(std::string("getrandom: ") + std::strerror(errno));
+    if (n > 0) got += size_t(n);
+  }
+  std::string part;
+  for (unsigned char b : bytes) part += alphabet[b % 62];
+  return part;
+}
+
+// Room for the hidden name's additions within a file name's 255 bytes.
+constexpr size_t max_stem_bytes = 200;
+
+}  // namespace
+
+TemporaryFile::TemporaryFile(std::string target) : target_(std::move(target)) {
+  fs::path p(target_);
+  std::string stem = p.stem().string().substr(0, max_stem_bytes);
+  // A clash with an existing name (planted or not) is not an error: another name is drawn.
+  for (int attempt = 0; attempt < 100 && descriptor_ < 0; ++attempt) {
+    path_ = (p.parent_path() / ("." + stem + ".tmp-" + random_name_part() + p.extension().string())).string();
+    descriptor_ = open(path_.c_str(), O_RDWR | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+    if (descriptor_ < 0 && errno != EEXIST) fail(std::strerror(errno));
+  }
+  if (descriptor_ < 0) fail("no free temporary name beside it");
+  try {
+    slot_ = register_temporary(path_);
+  } catch (const std::exception& e) {
+    close(descriptor_);
+    unlink(path_.c_str());
+    fail(e.what());
+  }
+}
+
+TemporaryFile::~TemporaryFile() {
+  if (descriptor_ >= 0) close(descriptor_);
+  if (slot_ >= 0) {
+    unlink(path_.c_str());  // before forgetting it, so that a signal in between still removes it
+    unregister_temporary(slot_);
+  }
+}
+
+void TemporaryFile::write(const void* data, size_t size) {
+  if (descriptor_ < 0) fail("written after it was closed");
+  const char* bytes = static_cast<const char*>(data);
+  while (size > 0) {
+    ssize_t written = ::write(descriptor_, bytes, size);
+    if (written < 0 && errno == EINTR) continue;
+    if (written < 0) fail(std::strerror(errno));
+    bytes += written;
+    size -= size_t(written);
+  }
+}
+
+void TemporaryFile::finish() {
+  if (descriptor_ < 0) return;
+  // fsync reports the errors of writes the kernel had only buffered; close those of some file
+  // systems (NFS). Either means the file is not what was written.
+  int synced = fsync(descriptor_), sync_error = errno;
+  int closed = close(descriptor_), close_error = errno;
+  descriptor_ = -1;
+  if (synced != 0) fail(std::strerror(sync_error));
+  if (closed != 0) fail(std::strerror(close_error));
+}
+
+void TemporaryFile::commit() {
+  finish();
+  if (rename(path_.c_str(), target_.c_str()) != 0) fail(std::strerror(errno));
+  unregister_temporary(slot_);
+  slot_ = -1;
+}
+
+void TemporaryFile::fail(const std::string& reason) const {
+  throw std::runtime_error("cannot write '" + target_ + "': " + reason);
+}
+
+}  // namespace radiant

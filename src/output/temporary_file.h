@@ -1,0 +1,43 @@
+// A file written beside its target and renamed onto it only when complete, so that the target
+// is never left half-written and never replaced by a failed write.
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+namespace radiant {
+
+// Created exclusively (O_CREAT | O_EXCL | O_NOFOLLOW: a planted file or symlink is never opened)
+// in the target's folder, under a hidden name with an unpredictable part that keeps the target's
+// extension, which names the format: out.png → .out.tmp-Xq3v9Tb0kLmZ.png. Mode 0666 & ~umask.
+// Every write is checked, and so are fsync and close. Removed unless committed, also by the
+// signal handler (temporary_registry.h). Errors throw std::runtime_error naming the target:
+// "cannot write 'out.png': No space left on device".
+class TemporaryFile {
+ public:
+  explicit TemporaryFile(std::string target);
+  ~TemporaryFile();
+  TemporaryFile(const TemporaryFile&) = delete;
+  TemporaryFile& operator=(const TemporaryFile&) = delete;
+
+  const std::string& target() const { return target_; }
+  const std::string& path() const { return path_; }
+  // The open file, for writers that take a descriptor; -1 after finish().
+  int descriptor() const { return descriptor_; }
+
+  void write(const void* data, size_t size);
+  void write(const std::string& text) { write(text.data(), text.size()); }
+  // Flushes to the disk and closes. Idempotent.
+  void finish();
+  // finish(), then renames onto the target.
+  void commit();
+  // An error about this file, in the one form every writer uses.
+  [[noreturn]] void fail(const std::string& reason) const;
+
+ private:
+  std::string target_, path_;
+  int descriptor_ = -1;
+  int slot_ = -1;  // in the registry while the file exists under path_
+};
+
+}  // namespace radiant

@@ -1,0 +1,159 @@
+// SIGINT and SIGTERM sent to a real radiant process mid-render: it stops at the next pixel,
+// writes what it rendered as a valid image marked partial, removes every temporary and exits
+// 130 (SIGINT) or 143 (SIGTERM). A second signal aborts at once, still removing temporaries.
+#include <doctest/doctest.h>
+
+#include <signal.h>
+#include <stdlib.h>
+
+#include <chrono>
+#include <filesystem>
+#include <thread>
+
+#include "image/image_io.h"
+#include "support/child_process.h"
+
+using namespace radiant;
+using namespace radiant::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+// Inside a closed white sphere every path bounces --max-depth times: at depth 1000 one sample
+// of every pixel of 32x32 takes about half a second on one thread, so the whole render takes
+// minutes and a signal always finds it rendering.
+const char* closed_sphere_scene =
+    "@camera\nposition 0 0 0\ndirection 0 0 -1\nup 0 1 0\n"
+    "@light point\ncolor 255 255 255\nposition 0 0 0\n"
+    "@sphere\ncenter 0 0 0\nradius 10\nkd 1\n";
+
+const std::vector<std::string> slow_render = {"--width", "32", "--height", "32", "--mode", "path", "--max-depth",
+                                              "1000", "--spp", "256", "--threads", "1"};
+
+ChildSetup with_terminal() {
+  ChildSetup setup;
+  setup.terminal_stderr = true;  // radiant prints its progress, so the test sees the render start
+  return setup;
+}
+
+std::vector<std::string> hidden_files(const fs::path& dir) {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::recursive_directory_iterator(dir))
+    if (entry.path().filename().string()[0] == '.') names.push_back(entry.path().string());
+  return names;
+}
+
+// Starts `args`, waits until it prints `started` (its render began) and a little longer, sends
+// `signal` and waits for the exit.
+CommandResult interrupt(const std::vector<std::string>& args, int signal, const std::string& started = "rendering") {
+  RadiantProcess child(args, with_terminal());
+  REQUIRE(child.wait_for_stderr(started, 60));
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  child.send(signal);
+  return child.wait(30);
+}
+
+std::string metadata(const fs::path& file, const std::string& name) {
+  std::string error;
+  auto image = open_image_file(file.string(), error);
+  REQUIRE_MESSAGE(image, error);
+  for (const auto& [key, value] : image->header().metadata)
+    if (key == name) return value;
+  return "";
+}
+
+std::vector<std::string> args_with(std::vector<std::string> args, const std::vector<std::string>& more) {
+  args.insert(args.end(), more.begin(), more.end());
+  return args;
+}
+
+}  // namespace
+
+TEST_CASE("interrupt: SIGINT mid-render writes the PNG so far marked partial, the stats too, and exits 130") {
+  ScratchDir dir("sigint-png");
+  fs::path scene = dir.write("closed.scene", closed_sphere_scene);
+  fs::path out = dir.write("out.png", "old image"), stats = dir.file("stats.json");
+  CommandResult r = interrupt(args_with({"render", scene, "-o", out, "--stats", stats}, slow_render), SIGINT);
+  CHECK(r.exit_code == 130);
+  CHECK(r.err.find("interrupted by SIGINT") != std::string::npos);
+  CHECK(metadata(out, "radiant:partial") == "interrupted by SIGINT");
+  CHECK(read_image(out).width == 32);
+  CHECK(read_bytes(stats).find("\"interrupted\": true") != std::string::npos);
+  CHECK(hidden_files(dir.path).empty());
+}
+
+TEST_CASE("interrupt: SIGTERM mid-render writes the EXR so far with its per-pixel sample counts and exits 143") {
+  ScratchDir dir("sigterm-exr");
+  fs::path scene = dir.write("closed.scene", closed_sphere_scene);
+  fs::path out = dir.file("out.exr");
+  CommandResult r = interrupt(args_with({"render", scene, "-o", out}, slow_render), SIGTERM);
+  CHECK(r.exit_code == 143);
+  CHECK(metadata(out, "radiant:partial") == "interrupted by SIGTERM");
+  TestImage image = read_image(out);
+  REQUIRE(image.channel_names.back() == "spp");
+  float fewest = 1e9f, most = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      fewest = std::min(fewest, image.at(x, y, image.channels - 1));
+      most = std::max(most, image.at(x, y, image.channels - 1));
+    }
+  CHECK(most >= 1);
+  CHECK(fewest < 256);  // it did stop
+  CHECK(hidden_files(dir.path).empty());
+}
+
+TEST_CASE("interrupt: SIGINT during a batch writes the view in progress as partial and renders no further line") {
+  ScratchDir dir("sigint-batch");
+  dir.write("closed.scene", closed_sphere_scene);
+  std::string flags;
+  for (const std::string& word : slow_render) flags += " " + word;
+  fs::path script = dir.write("views.txt", "scene closed.scene\nrender -o a.png" + flags + "\nrender -o b.png" + flags + "\n");
+  CommandResult r = interrupt({"batch", script}, SIGINT);
+  CHECK(r.exit_code == 130);
+  CHECK(metadata(dir.file("a.png"), "radiant:partial") == "interrupted by SIGINT");
+  CHECK_FALSE(fs::exists(dir.file("b.png")));
+  CHECK(hidden_files(dir.path).empty());
+}
+
+TEST_CASE("interrupt: SIGINT mid-ladder ends converge with 130, its old report untouched and no temporary left") {
+  ScratchDir dir("sigint-converge");
+  fs::path scene = dir.write("closed.scene", closed_sphere_scene);
+  fs::path csv = dir.write("report/converge.csv", "old csv");
+  CommandResult r = interrupt({"converge", scene, "--out", dir.file("report"), "--width", "32", "--height", "32", "--mode",
+                               "path", "--max-depth", "1000", "--threads", "1", "--spp-ladder", "1,64", "--reference-spp", "4"},
+                              SIGINT, "ladder of");
+  CHECK(r.exit_code == 130);
+  CHECK(read_bytes(csv) == "old csv");
+  CHECK_FALSE(fs::exists(dir.file("report/converge.json")));
+  CHECK(hidden_files(dir.path).empty());
+}
+
+TEST_CASE("interrupt: a second signal while the outputs are being written aborts at once and removes the temporaries") {
+  ScratchDir dir("sigint-twice");
+  fs::path scene = dir.write("closed.scene", closed_sphere_scene);
+  fs::path csv = dir.write("report/converge.csv", "old csv");
+  // A python3 that only says it started and then sleeps: converge's chart step, with the CSV
+  // and JSON temporaries written, lasts as long as the test needs.
+  fs::path marker = dir.file("chart-started");
+  fs::path python = dir.write("bin/python3", "#!/bin/sh\ntouch '" + marker.string() + "'\nexec sleep 20\n");
+  fs::permissions(python, fs::perms::owner_all);
+  std::string path = getenv("PATH");
+  setenv("PATH", (dir.file("bin").string() + ":" + path).c_str(), 1);
+  RadiantProcess child({"converge", scene, "--out", dir.file("report"), "--width", "8", "--height", "8", "--mode", "path",
+                        "--spp-ladder", "1", "--reference-spp", "2", "--quiet"});
+  setenv("PATH", path.c_str(), 1);
+  auto start = std::chrono::steady_clock::now();
+  while (!fs::exists(marker) && std::chrono::steady_clock::now() - start < std::chrono::seconds(60))
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  REQUIRE(fs::exists(marker));
+  CHECK(hidden_files(dir.file("report")).size() == 3);  // the CSV, JSON and chart temporaries
+  child.send(SIGINT);  // deferred: the outputs are being written
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  child.send(SIGINT);  // aborts
+  auto sent = std::chrono::steady_clock::now();
+  CommandResult r = child.wait(30);
+  CHECK(std::chrono::steady_clock::now() - sent < std::chrono::seconds(5));  // not after the 20 s sleep
+  CHECK(r.exit_code == 130);
+  CHECK(read_bytes(csv) == "old csv");
+  CHECK(hidden_files(dir.path).empty());
+}
