@@ -3,8 +3,11 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstdint>
+#include <optional>
 #include <string>
 
+#include "memory/memory_budget.h"
 #include "render/render_options.h"
 
 namespace radiant::cli {
@@ -15,6 +18,8 @@ RenderMode parse_mode(const std::string& flag, const std::string& text);
 SamplerKind parse_sampler(const std::string& flag, const std::string& text);
 PixelWindow parse_window(const std::string& flag, const std::string& text);
 std::vector<std::string> parse_aovs(const std::string& flag, const std::string& text);
+// GiB as bytes: finite, positive and at least one byte; beyond what 64 bits count means no cap.
+uint64_t parse_memory_limit(const std::string& flag, const std::string& text);
 const char* mode_name(RenderMode mode);
 const char* sampler_name(SamplerKind kind);
 
@@ -26,9 +31,12 @@ struct RenderFlags {
   int width = 0, height = 0, spp = 0, max_depth = 0, gltf_scene = -1;
   float fov = 0;
   bool allow_external_files = false;
-  double max_memory_gb = 0;
+  std::string max_memory;                   // GiB, as given
+  std::optional<uint64_t> max_memory_bytes;  // set by finish() when --max-memory is given
   void bind(CLI::App& app, bool image_flags);
   void finish();
+  // The command's memory budget: --max-memory, or a quarter of RAM.
+  MemoryBudget memory_budget() const;
 };
 
 }  // namespace radiant::cli

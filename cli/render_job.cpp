@@ -25,6 +25,11 @@ void write_text_file_atomically(const std::string& path, const std::string& text
   std::filesystem::rename(temporary, path);
 }
 
+std::string out_of_memory_message(const std::string& scene_path, const std::string& doing, const MemoryBudget& budget) {
+  return scene_path + ": out of memory while " + doing + " (the memory limit is " + format_bytes(budget.limit()) +
+         "; a --max-memory below what this machine can give refuses such work before it allocates)";
+}
+
 void run_render_job(const std::string& scene_path, const PreparedScene& prepared, const RenderJob& job, PhaseTimes& times) {
   using Clock = std::chrono::steady_clock;
   times.build = prepared.build_seconds;
