@@ -35,7 +35,8 @@ uint64_t baseline(const ScratchDir& dir, const std::string& output) {
   MeasuredRun run = measure("render " + quoted(source_path("assets/first-render.scene")) + " -o " +
                             quoted(dir.file(output)) + " --width 8 --height 8 --spp 1 -q");
   REQUIRE(run.result.exit_code == 0);
-  CHECK(run.peak_rss_bytes < 200 * MiB);  // a baseline this large would hide what the cap is for
+  // A baseline this large would hide what the cap is for (the sanitizer's own memory aside).
+  if (!built_with_address_sanitizer) CHECK(run.peak_rss_bytes < 200 * MiB);
   return run.peak_rss_bytes;
 }
 
