@@ -5,7 +5,9 @@
 //   render -o views/front.png --spp 16
 //   render -o views/side.png --look-from 600,273,-400 --look-at 278,273,279
 //
-// The whole script is checked before anything renders; an error names `script:line`.
+// The whole script is checked before anything renders; an error names `script:line`. A line may
+// be at most max_script_line characters long. `--max-memory` caps the whole script (the scene
+// loaded and each render); on a render line it caps that render instead.
 #include <unistd.h>
 
 #include <algorithm>
@@ -14,6 +16,8 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <new>
+#include <optional>
 #include <sstream>
 
 #include "commands.h"
@@ -68,17 +72,40 @@ RenderJob parse_render_line(std::vector<std::string> words, const fs::path& base
   app.parse(words);
   flags.finish();
   job.options = flags.options;
+  job.max_memory_bytes = flags.max_memory_bytes;
   if (fs::path(job.output).is_relative()) job.output = (base / job.output).string();
   if (!job.stats_path.empty() && fs::path(job.stats_path).is_relative()) job.stats_path = (base / job.stats_path).string();
   if (!job.options.aovs.empty() && !is_float_format(job.output)) throw std::invalid_argument("--aov needs an EXR output");
   return job;
 }
 
+// The longest script line read; a longer one is an error rather than a line held in memory whole.
+constexpr size_t max_script_line = 65536;
+
+// Reads one line without its '\n'; false at the end. Throws past max_script_line characters.
+bool read_script_line(std::istream& in, std::string& line) {
+  line.clear();
+  std::streambuf* buffer = in.rdbuf();
+  int c = buffer ? buffer->sbumpc() : std::char_traits<char>::eof();
+  if (c == std::char_traits<char>::eof()) return false;
+  for (; c != std::char_traits<char>::eof() && c != '\n'; c = buffer->sbumpc()) {
+    if (line.size() == max_script_line)
+      throw std::invalid_argument("line is longer than " + std::to_string(max_script_line) + " characters");
+    line += char(c);
+  }
+  return true;
+}
+
 std::vector<BatchStep> parse_script(std::istream& in, const std::string& name, const fs::path& base) {
   std::vector<BatchStep> steps;
   std::string line;
   bool have_scene = false;
-  for (int number = 1; std::getline(in, line); ++number) {
+  for (int number = 1;; ++number) {
+    try {
+      if (!read_script_line(in, line)) break;
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(name + ":" + std::to_string(number) + ": " + e.what());
+    }
     line = line.substr(0, line.find('#'));
     try {
       std::vector<std::string> words = split_words(line);
@@ -108,16 +135,31 @@ std::vector<BatchStep> parse_script(std::istream& in, const std::string& name, c
 // A scene of the script, loaded and prepared while the script is checked, and kept until its
 // views are done.
 struct LoadedScene {
-  std::unique_ptr<PreparedScene> prepared;
-  double load_seconds = 0;  // loading and building, paid by its first view
+  std::string path;
+  std::unique_ptr<PreparedScene> prepared;  // its accelerator holds its own charge
+  uint64_t scene_memory = 0;                // what loading charged to the budget
+  double load_seconds = 0;                  // loading and building, paid by its first view
+
+  void release(MemoryBudget& budget) {
+    prepared.reset();
+    budget.release(scene_memory);
+    scene_memory = 0;
+  }
 };
 
-LoadedScene load_batch_scene(const std::string& path, bool allow_external) {
+LoadedScene load_batch_scene(const std::string& path, bool allow_external, MemoryBudget& budget) {
   auto start = std::chrono::steady_clock::now();
   LoadOptions options;
   options.allow_external_files = allow_external;
+  options.budget = &budget;
   LoadedScene loaded;
-  loaded.prepared = std::make_unique<PreparedScene>(prepare_scene(load_scene(path, options)));
+  loaded.path = path;
+  uint64_t used_before = budget.used();
+  SceneDesc scene = load_scene(path, options);
+  loaded.scene_memory = budget.used() - used_before;
+  RenderOptions render_options;
+  render_options.memory = &budget;
+  loaded.prepared = std::make_unique<PreparedScene>(prepare_scene(std::move(scene), render_options));
   loaded.load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return loaded;
 }
@@ -161,8 +203,13 @@ int batch_main(int argc, char** argv) {
   app.add_option("SCRIPT", script_path, "Command script, or - for standard input")->required();
   app.add_flag("--quiet,-q", quiet, "Print nothing but errors");
   app.add_flag("--allow-external-files", allow_external, "Let scene files refer to files outside their folder");
+  std::string max_memory;
+  app.add_option("--max-memory", max_memory,
+                 "Memory cap in GiB for the scenes loaded and every render (default 1/4 of RAM)");
+  std::optional<uint64_t> max_memory_bytes;
   try {
     app.parse(argc, argv);
+    if (!max_memory.empty()) max_memory_bytes = parse_memory_limit("--max-memory", max_memory);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);
     std::cerr << "radiant batch: " << e.what() << "\n";
@@ -184,13 +231,20 @@ int batch_main(int argc, char** argv) {
     return exit_failure;
   }
 
+  MemoryBudget budget = max_memory_bytes ? MemoryBudget(*max_memory_bytes, "--max-memory")
+                                         : MemoryBudget(default_memory_limit(), default_memory_limit_source);
   // Every scene is loaded and every view resolved before the first render: a bad later line
-  // must stop the script before anything is written.
+  // must stop the script before anything is written. Scenes stay loaded (and charged) until
+  // their views are done.
   std::vector<LoadedScene> scenes;
   for (const BatchStep& step : steps) {
     try {
-      if (!step.scene.empty()) scenes.push_back(load_batch_scene(step.scene, allow_external));
+      if (!step.scene.empty()) scenes.push_back(load_batch_scene(step.scene, allow_external, budget));
       else check_view(scenes.back(), step.job);
+    } catch (const std::bad_alloc&) {
+      std::cerr << "radiant batch: " << script_path << ":" << step.line << ": "
+                << out_of_memory_message(step.scene.empty() ? scenes.back().path : step.scene, "loading", budget) << "\n";
+      return exit_failure;
     } catch (const std::exception& e) {
       std::cerr << "radiant batch: " << script_path << ":" << step.line << ": " << e.what() << "\n";
       return exit_failure;
@@ -200,20 +254,31 @@ int batch_main(int argc, char** argv) {
   size_t scene_index = 0;
   double load_seconds = 0;
   for (const BatchStep& step : steps) {
+    if (!step.scene.empty()) {
+      if (scene_index > 0) scenes[scene_index - 1].release(budget);  // its views are done
+      load_seconds = scenes[scene_index++].load_seconds;
+      continue;
+    }
+    LoadedScene& loaded = scenes[scene_index - 1];
     try {
-      if (!step.scene.empty()) {
-        if (scene_index > 0) scenes[scene_index - 1].prepared.reset();  // its views are done
-        load_seconds = scenes[scene_index++].load_seconds;
-        continue;
-      }
       RenderJob job = step.job;
       job.options.quiet = job.options.quiet || quiet;
       job.options.progress = isatty(STDERR_FILENO) && !job.options.quiet;
+      // A render line's own cap holds what is loaded and this render.
+      std::optional<MemoryBudget> line_budget;
+      if (job.max_memory_bytes) {
+        line_budget.emplace(*job.max_memory_bytes, "--max-memory on this line");
+        line_budget->charge(budget.used(), loaded.path + ": the loaded scenes and their accelerators");
+      }
+      job.options.memory = line_budget ? &*line_budget : &budget;
       PhaseTimes times;
       times.load = load_seconds;
       load_seconds = 0;  // the load is paid once, by the first view
-      PreparedScene& prepared = *scenes[scene_index - 1].prepared;
-      run_render_job(prepared.scene->source_path, prepared, job, times);
+      run_render_job(loaded.path, *loaded.prepared, job, times);
+    } catch (const std::bad_alloc&) {
+      std::cerr << "radiant batch: " << script_path << ":" << step.line << ": "
+                << out_of_memory_message(loaded.path, "rendering", budget) << "\n";
+      return exit_failure;
     } catch (const std::exception& e) {
       std::cerr << "radiant batch: " << script_path << ":" << step.line << ": " << e.what() << "\n";
       return exit_failure;

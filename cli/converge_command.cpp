@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <new>
 #include <sstream>
 
 #include "commands.h"
@@ -21,6 +22,7 @@
 #include "option_parsing.h"
 #include "output/output_paths.h"
 #include "output/output_set.h"
+#include "render_job.h"
 
 namespace radiant::cli {
 
@@ -314,9 +316,11 @@ void run_converge(const std::string& scene_path, ConvergeFlags& flags, std::vect
     file_reference = load_reference(flags.reference_file, flags.edge_fraction);
     if (!flags.width && !flags.height) flags.width = file_reference->image.width, flags.height = file_reference->image.height;
   }
+  MemoryBudget budget = flags.render.memory_budget();
+  options.memory = &budget;
   LoadOptions load_options;
   load_options.allow_external_files = flags.render.allow_external_files;
-  load_options.max_memory_bytes = size_t(flags.render.max_memory_gb * double(size_t(1) << 30));
+  load_options.budget = &budget;
   load_options.gltf_scene = flags.render.gltf_scene;
   PreparedScene prepared = prepare_scene(load_scene(scene_path, load_options), options);
 
@@ -380,6 +384,10 @@ int converge_main(int argc, char** argv) {
   } catch (const std::invalid_argument& e) {
     std::cerr << "radiant converge: " << e.what() << "\n";
     return exit_usage;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "radiant: " << out_of_memory_message(scene_path, "measuring convergence", flags.render.memory_budget())
+              << "\n";
+    return exit_failure;
   } catch (const std::exception& e) {
     std::cerr << "radiant: " << e.what() << "\n";
     return exit_failure;

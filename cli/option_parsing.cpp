@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <sstream>
 
 namespace radiant::cli {
@@ -120,6 +121,15 @@ CLI::Validator time_limit_range() {
       "SECONDS");
 }
 
+uint64_t parse_memory_limit(const std::string& flag, const std::string& text) {
+  double gib = parse_number(flag, text);
+  if (!(gib > 0)) throw CLI::ValidationError(flag, "'" + text + "' is not a positive number of GiB");
+  double bytes = gib * double(uint64_t(1) << 30);
+  if (bytes < 1) throw CLI::ValidationError(flag, text + " GiB is less than one byte");
+  if (bytes >= 18446744073709551616.0) return std::numeric_limits<uint64_t>::max();  // 2^64: no cap
+  return uint64_t(bytes);
+}
+
 const char* mode_name(RenderMode mode) {
   switch (mode) {
     case RenderMode::whitted: return "whitted";
@@ -161,8 +171,9 @@ void RenderFlags::bind(CLI::App& app, bool image_flags) {
   app.add_option("--fov", fov, "Vertical field of view in degrees")->check(positive_number(180));
   app.add_option("--effects", options.effects, "Switch effects off/on: e.g. -shadows,-indirect, or 'all' (generic integrator)");
   app.add_flag("--allow-external-files", allow_external_files, "Let scene files refer to files outside their folder");
-  app.add_option("--max-memory", max_memory_gb, "Refuse scenes declaring more geometry/texture memory (GiB; default 1/4 of RAM)")
-      ->check(CLI::PositiveNumber);
+  app.add_option("--max-memory", max_memory,
+                 "Memory cap in GiB for loading and rendering: work that would need more is refused before it "
+                 "allocates (default 1/4 of RAM)");
   app.add_flag("--quiet,-q", options.quiet, "Print nothing but errors");
 }
 
@@ -184,6 +195,12 @@ void RenderFlags::finish() {
   if (!look_at.empty()) options.camera_override.look_at = parse_vec3("--look-at", look_at);
   if (!up.empty()) options.camera_override.up = parse_vec3("--up", up);
   if (fov != 0) options.camera_override.fov_degrees = fov;
+  if (!max_memory.empty()) max_memory_bytes = parse_memory_limit("--max-memory", max_memory);
+}
+
+MemoryBudget RenderFlags::memory_budget() const {
+  if (max_memory_bytes) return MemoryBudget(*max_memory_bytes, "--max-memory");
+  return MemoryBudget(default_memory_limit(), default_memory_limit_source);
 }
 
 }  // namespace radiant::cli

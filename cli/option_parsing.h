@@ -4,8 +4,11 @@
 #include <CLI/CLI.hpp>
 
 #include <limits>
+#include <cstdint>
+#include <optional>
 #include <string>
 
+#include "memory/memory_budget.h"
 #include "render/render_options.h"
 
 namespace radiant::cli {
@@ -25,6 +28,9 @@ std::vector<std::string> parse_aovs(const std::string& flag, const std::string& 
 // --time-limit's check: seconds in (0, max_time_limit_seconds] (CLI::PositiveNumber lets NaN
 // through, and 1e308 seconds overflows the deadline).
 CLI::Validator time_limit_range();
+
+// GiB as bytes: finite, positive and at least one byte; beyond what 64 bits count means no cap.
+uint64_t parse_memory_limit(const std::string& flag, const std::string& text);
 const char* mode_name(RenderMode mode);
 const char* sampler_name(SamplerKind kind);
 
@@ -36,9 +42,12 @@ struct RenderFlags {
   int width = 0, height = 0, spp = 0, max_depth = 0, gltf_scene = -1;
   float fov = 0;
   bool allow_external_files = false;
-  double max_memory_gb = 0;
+  std::string max_memory;                   // GiB, as given
+  std::optional<uint64_t> max_memory_bytes;  // set by finish() when --max-memory is given
   void bind(CLI::App& app, bool image_flags);
   void finish();
+  // The command's memory budget: --max-memory, or a quarter of RAM.
+  MemoryBudget memory_budget() const;
 };
 
 }  // namespace radiant::cli

@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <iostream>
+#include <new>
 
 #include "commands.h"
 #include "load_scene.h"
@@ -61,8 +62,11 @@ int render_main(int argc, char** argv) {
     return exit_usage;
   }
 
+  MemoryBudget budget = flags.memory_budget();
+  options.memory = &budget;
   RenderJob job{options, output, stats_path};
   PhaseTimes times;
+  const char* doing = "loading";
   try {
     DistinctFiles files;
     if (scene_path != "-") files.add_input({"the scene", scene_path});
@@ -79,20 +83,25 @@ int render_main(int argc, char** argv) {
   try {
     LoadOptions load_options;
     load_options.allow_external_files = flags.allow_external_files;
-    load_options.max_memory_bytes = size_t(flags.max_memory_gb * double(size_t(1) << 30));
+    load_options.budget = &budget;
     load_options.gltf_scene = flags.gltf_scene;
     SceneDesc scene = load_scene(scene_path, load_options);
     times.load = seconds_since(start);
     if (!options.quiet)
       for (const std::string& warning : scene.warnings) std::cerr << "radiant: warning: " << warning << "\n";
 
+    doing = "building its accelerator";
     try {
       PreparedScene prepared = prepare_scene(std::move(scene), options);
+      doing = "rendering";
       run_render_job(scene_path, prepared, job, times);
     } catch (const std::invalid_argument& e) {
       std::cerr << "radiant render: " << e.what() << "\n";
       return exit_usage;
     }
+  } catch (const std::bad_alloc&) {
+    std::cerr << "radiant: " << out_of_memory_message(scene_path, doing, budget) << "\n";
+    return exit_failure;
   } catch (const std::exception& e) {
     std::cerr << "radiant: " << e.what() << "\n";
     return exit_failure;

@@ -16,6 +16,11 @@ std::vector<NamedFile> render_job_outputs(const RenderJob& job) {
   return outputs;
 }
 
+std::string out_of_memory_message(const std::string& scene_path, const std::string& doing, const MemoryBudget& budget) {
+  return scene_path + ": out of memory while " + doing + " (the memory limit is " + format_bytes(budget.limit()) +
+         "; a --max-memory below what this machine can give refuses such work before it allocates)";
+}
+
 void check_render_job_outputs(const RenderJob& job) {
   check_image_output(job.output);
   for (const NamedFile& output : render_job_outputs(job)) check_output_place(output.path);

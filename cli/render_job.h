@@ -1,6 +1,8 @@
 // One render of a prepared scene to an image file, shared by `render` and `batch`.
 #pragma once
 
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,10 +16,15 @@ struct RenderJob {
   RenderOptions options;
   std::string output;
   std::string stats_path;
+  std::optional<uint64_t> max_memory_bytes;  // a batch render line's own --max-memory
 };
 
 // The job's outputs, named by their flags.
 std::vector<NamedFile> render_job_outputs(const RenderJob& job);
+
+// "scene.gltf: out of memory while rendering (...)": std::bad_alloc as one line naming the file and
+// what was being done, and how --max-memory would have refused the work before it allocated.
+std::string out_of_memory_message(const std::string& scene_path, const std::string& doing, const MemoryBudget& budget);
 
 // What must hold before any work: -o names an image format (std::invalid_argument, a usage
 // error, when not; it also loads the image writer) and every output can be created where it

@@ -1,6 +1,9 @@
 #include "file_access.h"
 
+#include <fstream>
+
 #include "load_scene.h"
+#include "memory/input_file.h"
 
 namespace radiant {
 
@@ -35,6 +38,22 @@ fs::path resolve_inside(const fs::path& base_dir, const std::string& uri, bool a
   if (ec || !is_inside(real_base, real_file))
     throw LoadError(where + ": '" + escaped(uri) + "' leads outside the scene's folder through a symlink" + hint);
   return real_file;
+}
+
+uint64_t check_input_file(const fs::path& path, const std::string& label) {
+  uint64_t size = 0;
+  std::string problem = input_file_problem(path, size);
+  if (!problem.empty()) throw LoadError(label + ": " + problem);
+  return size;
+}
+
+std::string read_input_file(const fs::path& path, const std::string& label, const LoadOptions& options) {
+  uint64_t size = check_input_file(path, label);
+  charge_load(options, size, label);
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes(size, '\0');
+  if (!in || !in.read(bytes.data(), std::streamsize(size))) throw LoadError(label + ": read failed");
+  return bytes;
 }
 
 }  // namespace radiant

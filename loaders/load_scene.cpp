@@ -1,7 +1,5 @@
 #include "load_scene.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -9,8 +7,10 @@
 #include <iostream>
 #include <sstream>
 
+#include "file_access.h"
 #include "gltf/gltf_loader.h"
 #include "obj/obj_loader.h"
+#include "scene/scene_memory.h"
 #include "scene/validate.h"
 #include "scene_format/scene_format_loader.h"
 
@@ -42,10 +42,15 @@ std::string escaped(const std::string& text) {
   return out;
 }
 
-size_t default_max_memory() {
-  long pages = sysconf(_SC_PHYS_PAGES), page_size = sysconf(_SC_PAGE_SIZE);
-  if (pages <= 0 || page_size <= 0) return size_t(4) << 30;
-  return size_t(pages) * size_t(page_size) / 4;
+void charge_load(const LoadOptions& options, uint64_t bytes, const std::string& what) {
+  if (!options.budget->try_charge(bytes)) throw LoadError(options.budget->refusal(bytes, what));
+}
+
+BudgetedLoadOptions::BudgetedLoadOptions(const LoadOptions& given) : options(given) {
+  if (options.budget) return;
+  if (given.max_memory_bytes > 0) own_budget.emplace(given.max_memory_bytes, "--max-memory");
+  else own_budget.emplace(default_memory_limit(), default_memory_limit_source);
+  options.budget = &*own_budget;
 }
 
 static std::string lowercase_extension(const std::string& path) {
@@ -54,33 +59,39 @@ static std::string lowercase_extension(const std::string& path) {
   return ext;
 }
 
-SceneDesc load_scene(const std::string& path, const LoadOptions& given) {
-  LoadOptions options = given;
-  if (options.max_memory_bytes == 0) options.max_memory_bytes = default_max_memory();
-  SceneDesc scene;
-  if (path == "-") {
-    scene = load_scene_format(std::cin, "<stdin>", std::filesystem::current_path().string(), options);
-  } else {
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec))
-      throw LoadError(path + ": cannot open scene file (" +
-                      (std::filesystem::exists(path, ec) ? "not a regular file" : "no such file") + ")");
-    std::string ext = lowercase_extension(path);
-    if (ext == ".gltf" || ext == ".glb") {
-      scene = load_gltf(path, options);
-    } else if (ext == ".obj") {
-      scene = load_obj(path, options);
-    } else if (ext == ".scene") {
-      std::ifstream in(path, std::ios::binary);
-      if (!in) throw LoadError(path + ": cannot open scene file");
-      std::string base = std::filesystem::absolute(path).parent_path().string();
-      scene = load_scene_format(in, path, base, options);
-    } else {
-      throw LoadError(path + ": unknown scene format '" + ext + "' (expected .scene, .gltf, .glb or .obj)");
-    }
+static SceneDesc load_by_extension(const std::string& path, const LoadOptions& options) {
+  if (path == "-") return load_scene_format(std::cin, "<stdin>", std::filesystem::current_path().string(), options);
+  check_input_file(path, path);
+  std::string ext = lowercase_extension(path);
+  if (ext == ".gltf" || ext == ".glb") return load_gltf(path, options);
+  if (ext == ".obj") return load_obj(path, options);
+  if (ext == ".scene") {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw LoadError(path + ": cannot open scene file");
+    std::string base = std::filesystem::absolute(path).parent_path().string();
+    return load_scene_format(in, path, base, options);
   }
-  scene.source_path = path == "-" ? "<stdin>" : path;
-  validate_scene(scene);
+  throw LoadError(path + ": unknown scene format '" + ext + "' (expected .scene, .gltf, .glb or .obj)");
+}
+
+SceneDesc load_scene(const std::string& path, const LoadOptions& given) {
+  BudgetedLoadOptions budgeted(given);
+  const LoadOptions& options = budgeted.options;
+  MemoryBudget& budget = *options.budget;
+  uint64_t used_before = budget.used();
+  SceneDesc scene;
+  try {
+    scene = load_by_extension(path, options);
+    scene.source_path = path == "-" ? "<stdin>" : path;
+    validate_scene(scene);
+  } catch (...) {
+    budget.release(budget.used() - used_before);
+    throw;
+  }
+  // Loading kept its transient buffers charged (file text, JSON trees, parsed OBJ, decoded
+  // copies) until now; what stays in memory is the scene.
+  budget.release(budget.used() - used_before);
+  charge_load(options, scene_memory_bytes(scene), scene.source_path + ": the loaded scene");
   return scene;
 }
 

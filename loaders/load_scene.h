@@ -2,9 +2,12 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
+#include "memory/memory_budget.h"
 #include "scene/scene_desc.h"
 
 namespace radiant {
@@ -17,8 +20,26 @@ struct LoadError : std::runtime_error {
 
 struct LoadOptions {
   bool allow_external_files = false;  // let URIs and includes leave the scene's folder
-  size_t max_memory_bytes = 0;        // refuse files declaring more; 0 = default_max_memory()
-  int gltf_scene = -1;                // glTF scene index; -1 = the file's default scene
+  // Charged for everything loading allocates, before it is allocated (the command shares it
+  // with the render). Null: the load makes its own budget of `max_memory_bytes`.
+  MemoryBudget* budget = nullptr;
+  size_t max_memory_bytes = 0;  // the limit of that own budget; 0 = default_memory_limit()
+  int gltf_scene = -1;          // glTF scene index; -1 = the file's default scene
+};
+
+// Charges `bytes` for `what` (a file and a place) to options.budget, which must be set; throws
+// LoadError with the budget's one-line refusal.
+void charge_load(const LoadOptions& options, uint64_t bytes, const std::string& what);
+
+// `given` with a budget for loaders called directly (tests, fuzzers): its own budget when it has
+// one, else a new one of given.max_memory_bytes held here. Not copyable: `options.budget` may
+// point into it.
+struct BudgetedLoadOptions {
+  std::optional<MemoryBudget> own_budget;
+  LoadOptions options;
+  explicit BudgetedLoadOptions(const LoadOptions& given);
+  BudgetedLoadOptions(const BudgetedLoadOptions&) = delete;
+  BudgetedLoadOptions& operator=(const BudgetedLoadOptions&) = delete;
 };
 
 // Joins a library's multi-line message into one line ("; " between non-empty lines).
@@ -28,11 +49,9 @@ std::string one_line(const std::string& text);
 // NUL included, are written as \n, \r, \t or \xNN instead of cutting or breaking the line.
 std::string escaped(const std::string& text);
 
-// A quarter of physical memory: the default for LoadOptions::max_memory_bytes.
-size_t default_max_memory();
-
-// Loads by extension: .scene (or "-" for stdin, read as .scene), .gltf, .glb, .obj.
-// Throws LoadError.
+// Loads by extension: .scene (or "-" for stdin, read as .scene), .gltf, .glb, .obj. Afterwards
+// the budget holds the loaded scene's own size: what loading needed only while it ran is given
+// back. Throws LoadError.
 SceneDesc load_scene(const std::string& path, const LoadOptions& options = {});
 
 }  // namespace radiant

@@ -131,12 +131,7 @@ std::vector<float> read_elements(const GltfContext& context, const tinygltf::Acc
                                  const std::string& where) {
   size_t size = component_size(accessor.componentType);
   if (size == 0) context.fail(where, "unsupported " + component_type_name(accessor.componentType));
-  uint64_t limit = context.options.max_memory_bytes;
-  if (accessor.count > limit / (sizeof(float) * components) ||
-      context.bytes_charged + accessor.count * sizeof(float) * components > limit)
-    context.fail(where, std::to_string(accessor.count) + " elements exceed the memory limit of " +
-                            std::to_string(limit) + " bytes");
-  context.bytes_charged += accessor.count * sizeof(float) * components;
+  context.charge(saturating_multiply(accessor.count, sizeof(float) * components), where);
   std::vector<float> out(accessor.count * components, 0.0f);
   if (accessor.bufferView >= 0) {
     size_t element_size = size * components;
@@ -187,6 +182,7 @@ std::vector<uint32_t> read_accessor_indices(const GltfContext& context, int inde
   tinygltf::Accessor raw = accessor;
   raw.normalized = false;  // indices are integers whatever the flag says
   std::vector<float> values = read_elements(context, raw, 1, where);
+  context.charge(values.size() * sizeof(uint32_t), where);
   std::vector<uint32_t> out(values.size());
   // Unsigned ints above 2^24 lose precision in float; read them exactly instead.
   if (type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT && !accessor.sparse.isSparse && accessor.bufferView >= 0) {

@@ -24,16 +24,15 @@ struct GltfContext {
   std::vector<std::vector<int>> mesh_parts;  // glTF mesh -> its MeshDesc indices (one per primitive)
   std::map<int, int> mirrored_meshes;        // MeshDesc -> its copy with reversed winding
   int default_material = -1;                 // the glTF default material, made on first use
-  // Bytes charged against options.max_memory_bytes: the file and its buffers and images, then
-  // every accessor read (a hostile file may read one big accessor from many primitives).
-  // Mutable so that reading stays a const operation on the context.
-  mutable uint64_t bytes_charged = 0;
 
   // Throws `file: where: message`.
   [[noreturn]] void fail(const std::string& where, const std::string& message) const {
     throw LoadError(file + ": " + where + ": " + message);
   }
   void warn(const std::string& message) { scene.warnings.push_back(file + ": " + message); }
+  // Charges the load's memory budget before `bytes` are allocated for `where`; every read is
+  // charged, since a hostile file may read one big accessor from many primitives.
+  void charge(uint64_t bytes, const std::string& where) const { charge_load(options, bytes, file + ": " + where); }
 };
 
 // "name[index]", the JSON path of an array element.

@@ -14,6 +14,7 @@ namespace radiant {
 
 namespace {
 
+// The parts of the document the declarations need; everything else is checked and counted only.
 struct JsonValue {
   enum class Kind { null, boolean, number, string, array, object } kind = Kind::null;
   double number = 0;
@@ -22,12 +23,46 @@ struct JsonValue {
   std::map<std::string, JsonValue> members;
 };
 
-// Recursive descent with a depth limit, so hostile nesting cannot overflow the stack.
+// Paths whose values are kept ("buffers[].uri": the uri member of any element of buffers).
+bool is_kept(const std::string& path) {
+  static const char* kept[] = {"",           "buffers",     "buffers[]", "buffers[].byteLength", "buffers[].uri",
+                               "images",     "images[]",    "images[].uri", "extensionsRequired",
+                               "extensionsRequired[]", "asset", "asset.version"};
+  for (const char* k : kept)
+    if (path == k) return true;
+  return false;
+}
+
+// Arrays whose elements tinygltf turns into structs of their own, counted for the memory charge.
+bool is_counted(const std::string& path) {
+  static const char* counted[] = {"accessors", "animations", "buffers",  "bufferViews",          "cameras",
+                                  "images",    "materials",  "meshes",   "nodes",                "samplers",
+                                  "scenes",    "skins",      "textures", "meshes[].primitives", "animations[].channels",
+                                  "animations[].samplers",   "extensions.KHR_lights_punctual.lights"};
+  for (const char* c : counted)
+    if (path == c) return true;
+  return false;
+}
+
+// "meshes[].primitives" -> "meshes.primitives".
+std::string count_key(std::string path) {
+  for (size_t at; (at = path.find("[]")) != std::string::npos;) path.erase(at, 2);
+  return path;
+}
+
+// Recursive descent with a depth limit, so hostile nesting cannot overflow the stack. Paths are
+// followed only near the root, where everything kept or counted lives. Counting keeps nothing;
+// reading the declarations keeps the values at is_kept paths.
 struct JsonReader {
   const std::string& in;
   const std::string& file;
+  bool keeping;
+  GltfJsonCounts counts;
   size_t at = 0;
   static constexpr int max_depth = 128;
+  static constexpr int path_depth = 4;
+  static constexpr size_t longest_path_key = 64;
+  inline static const std::string deep = "*";  // below path_depth: nothing kept or counted
 
   [[noreturn]] void fail(const std::string& message) const {
     throw LoadError(file + ": invalid JSON at byte " + std::to_string(at) + ": " + message);
@@ -43,11 +78,17 @@ struct JsonReader {
   void expect(char c) {
     if (!take(c)) fail(std::string("expected '") + c + "'");
   }
+  std::string child_path(const std::string& path, int depth, const std::string& name) const {
+    if (depth + 1 >= path_depth || path == deep) return deep;
+    return path + name;
+  }
 
-  JsonValue value(int depth) {
+  JsonValue value(int depth, const std::string& path) {
     if (depth > max_depth) fail("nested too deeply");
     skip_space();
     if (at >= in.size()) fail("unexpected end");
+    ++counts.values;
+    bool keep = keeping && path != deep && is_kept(path);
     JsonValue v;
     char c = in[at];
     if (c == '{') {
@@ -56,27 +97,40 @@ struct JsonReader {
       if (take('}')) return v;
       do {
         skip_space();
-        std::string key = string();
+        ++counts.values;  // a member name is a string tinygltf keeps too
+        size_t key_start = at;
+        skip_string();
+        std::string key;
+        if (path != deep && at - key_start - 2 <= longest_path_key) key = in.substr(key_start + 1, at - key_start - 2);
         expect(':');
-        v.members[key] = value(depth + 1);
+        std::string member_path = child_path(path, depth, (path.empty() ? "" : ".") + key);
+        JsonValue member = value(depth + 1, member_path);
+        if (keep && is_kept(member_path)) v.members[key] = std::move(member);
       } while (take(','));
       expect('}');
     } else if (c == '[') {
       v.kind = JsonValue::Kind::array;
       ++at;
       if (take(']')) return v;
-      do v.items.push_back(value(depth + 1));
-      while (take(','));
+      std::string item_path = child_path(path, depth, "[]");
+      uint64_t items = 0;
+      do {
+        JsonValue item = value(depth + 1, item_path);
+        ++items;
+        if (keep) v.items.push_back(std::move(item));
+      } while (take(','));
       expect(']');
+      if (path != deep && is_counted(path)) counts.elements[count_key(path)] += items;
     } else if (c == '"') {
       v.kind = JsonValue::Kind::string;
-      v.text = string();
+      if (keep) v.text = string();
+      else skip_string();
     } else if (literal("true") || literal("false")) {
       v.kind = JsonValue::Kind::boolean;
     } else if (literal("null")) {
     } else {
       v.kind = JsonValue::Kind::number;
-      v.number = number();
+      v.number = number(keep);
     }
     return v;
   }
@@ -86,11 +140,11 @@ struct JsonReader {
     at += n;
     return true;
   }
-  double number() {
+  double number(bool keep) {
     size_t start = at;
     while (at < in.size() && std::strchr("+-0123456789.eE", in[at])) ++at;
     if (start == at) fail("unexpected character");
-    return std::strtod(in.substr(start, at - start).c_str(), nullptr);
+    return keep ? std::strtod(in.substr(start, at - start).c_str(), nullptr) : 0;
   }
   // Escapes are decoded as tinygltf decodes them, so that URIs compare equal to the ones it asks
   // for; a malformed \\u escape is kept as written (tinygltf refuses the file then).
@@ -155,6 +209,14 @@ struct JsonReader {
     }
     return true;
   }
+  // A string passed over without copying it (a data URI may be most of the file).
+  void skip_string() {
+    if (at >= in.size() || in[at] != '"') fail("expected a string");
+    for (++at; at < in.size() && in[at] != '"'; ++at)
+      if (in[at] == '\\' && at + 1 < in.size()) ++at;
+    if (at >= in.size()) fail("unterminated string");
+    ++at;
+  }
 };
 
 const JsonValue* member(const JsonValue& object, const std::string& key) {
@@ -162,12 +224,14 @@ const JsonValue* member(const JsonValue& object, const std::string& key) {
   return it == object.members.end() ? nullptr : &it->second;
 }
 
+// The URIs of an array's elements, data URIs shortened to data_uri_marker.
 std::vector<std::string> uris_of(const JsonValue* array) {
   std::vector<std::string> uris;
   if (!array) return uris;
   for (const JsonValue& item : array->items) {
     const JsonValue* uri = member(item, "uri");
-    uris.push_back(uri ? uri->text : "");
+    std::string text = uri ? uri->text : "";
+    uris.push_back(text.rfind(data_uri_marker, 0) == 0 ? data_uri_marker : text);
   }
   return uris;
 }
@@ -184,12 +248,23 @@ void check_version(const JsonValue& root, const std::string& file) {
 
 }  // namespace
 
+// The document's root value, kept where `keeping` and the path say so.
+static JsonValue read_json(JsonReader& reader) {
+  if (reader.in.compare(0, 3, "\xEF\xBB\xBF") == 0) reader.at = 3;  // a UTF-8 byte order mark, as tinygltf allows
+  return reader.value(0, "");
+}
+
+GltfJsonCounts count_gltf_json(const std::string& json, const std::string& file) {
+  JsonReader reader{json, file, false, {}};
+  read_json(reader);
+  return reader.counts;
+}
+
 GltfDeclarations read_gltf_declarations(const std::string& json, const std::string& file) {
-  JsonReader reader{json, file};
-  if (json.compare(0, 3, "\xEF\xBB\xBF") == 0) reader.at = 3;  // a UTF-8 byte order mark, as tinygltf allows
-  JsonValue root = reader.value(0);
-  check_version(root, file);
   GltfDeclarations out;
+  JsonReader reader{json, file, true, {}};
+  JsonValue root = read_json(reader);
+  check_version(root, file);
   if (const JsonValue* buffers = member(root, "buffers")) {
     for (size_t i = 0; i < buffers->items.size(); ++i) {
       const JsonValue* length = member(buffers->items[i], "byteLength");

@@ -4,6 +4,7 @@
 
 #include "file_access.h"
 #include "gltf/gltf_context.h"
+#include "gltf/gltf_memory.h"
 
 namespace radiant {
 
@@ -23,26 +24,46 @@ static std::string percent_decoded(const std::string& uri) {
   return out;
 }
 
-// The JSON path of the element whose URI tinygltf asks for, for messages.
-static std::string where_of(const GltfFileAccess& access, const std::string& uri) {
+// The JSON path of the element whose URI tinygltf asks for ("images[0].uri"), or "".
+static std::string element_of(const GltfFileAccess& access, const std::string& uri) {
   auto find = [&](const std::vector<std::string>& uris, const char* name) -> std::string {
     for (size_t i = 0; i < uris.size(); ++i)
       if (uris[i] == uri || percent_decoded(uris[i]) == uri) return element(name, i) + ".uri";
     return "";
   };
   std::string where = find(access.declarations->buffer_uris, "buffers");
-  if (where.empty()) where = find(access.declarations->image_uris, "images");
-  if (where.empty()) where = "uri '" + escaped(uri) + "'";
-  return access.file + ": " + where;
+  return where.empty() ? find(access.declarations->image_uris, "images") : where;
+}
+
+// "file.gltf: images[0].uri", for messages about `uri`.
+static std::string where_of(const GltfFileAccess& access, const std::string& uri) {
+  std::string element = element_of(access, uri);
+  return access.file + ": " + (element.empty() ? "uri '" + escaped(uri) + "'" : element);
 }
 
 static void refuse(GltfFileAccess& access, const std::string& message) {
   if (access.error.empty()) access.error = message;
 }
 
-static bool file_exists(const std::string& path, void*) {
-  std::error_code ec;
-  return !path.empty() && fs::is_regular_file(path, ec);
+// "file.gltf: images[0].uri 'x.png'": the element that asked for `path` and its URI, for messages.
+static std::string label_of(const GltfFileAccess& access, const std::string& path) {
+  auto uri = access.uri_of_path.find(path);
+  if (uri == access.uri_of_path.end()) return access.file + ": '" + escaped(path) + "'";
+  std::string element = element_of(access, uri->second);
+  return access.file + ": " + (element.empty() ? "" : element + " ") + "'" + escaped(uri->second) + "'";
+}
+
+// A missing, folder or FIFO file is refused here, so that the message says which.
+static bool file_exists(const std::string& path, void* user) {
+  auto& access = *static_cast<GltfFileAccess*>(user);
+  if (path.empty()) return false;
+  try {
+    check_input_file(path, label_of(access, path));
+    return true;
+  } catch (const LoadError& error) {
+    refuse(access, error.what());
+    return false;
+  }
 }
 
 // tinygltf asks for "<uri>" (base dir "") and then "./<uri>"; both resolve inside the scene folder.
@@ -50,9 +71,10 @@ static std::string expand_file_path(const std::string& path, void* user) {
   auto& access = *static_cast<GltfFileAccess*>(user);
   std::string uri = path.rfind("./", 0) == 0 ? path.substr(2) : path;
   try {
-    return resolve_inside(access.base_dir, uri, access.options->allow_external_files,
-                          where_of(access, uri))
-        .string();
+    std::string resolved =
+        resolve_inside(access.base_dir, uri, access.options->allow_external_files, where_of(access, uri)).string();
+    access.uri_of_path[resolved] = uri;
+    return resolved;
   } catch (const LoadError& error) {
     refuse(access, error.what());
     return "";
@@ -62,21 +84,18 @@ static std::string expand_file_path(const std::string& path, void* user) {
 static bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const std::string& path,
                             void* user) {
   auto& access = *static_cast<GltfFileAccess*>(user);
-  std::error_code ec;
-  uint64_t size = fs::file_size(path, ec);
-  if (ec) return *err = ec.message(), false;
-  if (access.bytes_charged + size > access.options->max_memory_bytes) {
-    refuse(access, access.file + ": '" + path + "' (" + std::to_string(size) +
-                       " bytes) exceeds the memory limit of " +
-                       std::to_string(access.options->max_memory_bytes) + " bytes");
-    return false;
+  try {
+    std::string label = label_of(access, path);
+    uint64_t size = check_input_file(path, label);
+    charge_load(*access.options, size, label);
+    std::ifstream in(path, std::ios::binary);
+    out->resize(size);
+    if (!in.read(reinterpret_cast<char*>(out->data()), std::streamsize(size))) throw LoadError(label + ": read failed");
+    return true;
+  } catch (const LoadError& error) {
+    refuse(access, error.what());
+    return *err = error.what(), false;
   }
-  access.bytes_charged += size;
-  std::ifstream in(path, std::ios::binary);
-  out->resize(size);
-  if (!in.read(reinterpret_cast<char*>(out->data()), std::streamsize(size)))
-    return *err = "read failed", false;
-  return true;
 }
 
 static bool write_whole_file(std::string* err, const std::string&, const std::vector<unsigned char>&,
@@ -122,7 +141,29 @@ bool read_image_header(const unsigned char* bytes, size_t size, int& width, int&
   return false;
 }
 
-// Charges the decoded size against the memory limit, then decodes with tinygltf's stb_image.
+// True at a marker that ends entropy-coded data: 0xFF followed by neither a stuffed 0x00 nor a
+// restart marker.
+static bool ends_scan(const unsigned char* p) { return p[0] == 0xFF && p[1] != 0x00 && (p[1] < 0xD0 || p[1] > 0xD7); }
+
+bool jpeg_is_complete(const unsigned char* bytes, size_t size) {
+  // Walk the marker segments; after a start of scan, pass its entropy-coded data up to the next
+  // marker. Progressive files have several scans; the end-of-image marker follows the last.
+  size_t at = 2;
+  while (at + 1 < size) {
+    if (bytes[at] != 0xFF) return false;
+    unsigned char marker = bytes[at + 1];
+    if (marker == 0xD9) return true;
+    if (marker == 0xFF) { ++at; continue; }
+    if ((marker >= 0xD0 && marker <= 0xD7) || marker == 0x01) { at += 2; continue; }
+    if (at + 3 >= size) return false;
+    at += 2 + big_endian(bytes + at + 2, 2);
+    if (marker != 0xDA) continue;
+    while (at + 1 < size && !ends_scan(bytes + at)) ++at;
+  }
+  return false;
+}
+
+// Charges the decoding against the memory budget, then decodes with tinygltf's stb_image.
 static bool decode_image(GltfFileAccess& access, tinygltf::Image* image, int index, std::string* err,
                          std::string* warn, const unsigned char* bytes, size_t size) {
   std::string where = access.file + ": " + element("images", size_t(index));
@@ -131,15 +172,17 @@ static bool decode_image(GltfFileAccess& access, tinygltf::Image* image, int ind
     refuse(access, where + ": not a PNG or JPEG image");
     return false;
   }
-  // Four channels is the most stb_image decodes into.
-  uint64_t needed = uint64_t(width) * uint64_t(height) * 4 * uint64_t(bytes_per_channel);
-  if (access.bytes_charged + needed > access.options->max_memory_bytes) {
-    refuse(access, where + ": a " + std::to_string(width) + "x" + std::to_string(height) +
-                       " image exceeds the memory limit of " +
-                       std::to_string(access.options->max_memory_bytes) + " bytes");
+  uint64_t needed = gltf_image_decode_bytes(width, height, bytes_per_channel);
+  MemoryBudget& budget = *access.options->budget;
+  if (!budget.try_charge(needed)) {
+    refuse(access,
+           budget.refusal(needed, where + ": a " + std::to_string(width) + "x" + std::to_string(height) + " image"));
     return false;
   }
-  access.bytes_charged += needed;
+  if (bytes[0] == 0xFF && !jpeg_is_complete(bytes, size)) {
+    refuse(access, where + ": the JPEG data is truncated (no end-of-image marker after its scan)");
+    return false;
+  }
   // Same layout as tinygltf's LoadImageDataOption, which only its implementation declares.
   struct { bool preserve_channels = true; } keep_channels;
   if (tinygltf::LoadImageData(image, index, err, warn, 0, 0, bytes, int(size), &keep_channels)) return true;

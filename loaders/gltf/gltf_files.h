@@ -1,11 +1,12 @@
-// The file and image hooks given to tinygltf: every external URI goes through resolve_inside,
-// and every file read and image decode is charged against LoadOptions::max_memory_bytes.
+// The file and image hooks given to tinygltf: every external URI goes through resolve_inside and
+// check_input_file, and every file read and image decode is charged to the load's memory budget.
 #pragma once
 
 #include <tiny_gltf.h>
 
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <string>
 
 #include "gltf/gltf_declarations.h"
@@ -18,8 +19,8 @@ struct GltfFileAccess {
   std::string file;
   const LoadOptions* options = nullptr;
   const GltfDeclarations* declarations = nullptr;
-  uint64_t bytes_charged = 0;  // declared buffers, then decoded images and files read
-  std::string error;           // the first refusal; tinygltf only sees "not found" / "failed"
+  std::map<std::string, std::string> uri_of_path;  // resolved path -> the URI as tinygltf asked
+  std::string error;  // the first refusal; tinygltf only sees "not found" / "failed"
 };
 
 // Points tinygltf's file system and image decoding at `access` (which must outlive `gltf`).
@@ -31,5 +32,9 @@ void decode_buffer_view_images(tinygltf::Model& model, GltfFileAccess& access);
 // Width, height and bytes per channel of a PNG or JPEG from its header; false when unknown.
 bool read_image_header(const unsigned char* bytes, size_t size, int& width, int& height,
                        int& bytes_per_channel);
+
+// False when JPEG data ends before its end-of-image marker: stb_image decodes what is missing as
+// zeros, so a cut-off file would give texels that were never in it.
+bool jpeg_is_complete(const unsigned char* bytes, size_t size);
 
 }  // namespace radiant

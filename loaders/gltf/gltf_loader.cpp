@@ -2,13 +2,14 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
+#include "file_access.h"
 #include "gltf/gltf_context.h"
 #include "gltf/gltf_declarations.h"
 #include "gltf/gltf_files.h"
 #include "gltf/gltf_materials.h"
+#include "gltf/gltf_memory.h"
 #include "gltf/gltf_meshes.h"
 #include "gltf/gltf_nodes.h"
 
@@ -25,38 +26,38 @@ bool is_supported(const std::string& name) {
   return std::find(supported_extensions.begin(), supported_extensions.end(), name) != supported_extensions.end();
 }
 
-std::string read_file(const std::string& path, const LoadOptions& options) {
-  std::error_code ec;
-  uint64_t size = std::filesystem::file_size(path, ec);
-  if (ec) throw LoadError(path + ": cannot open (" + ec.message() + ")");
-  if (size > options.max_memory_bytes)
-    throw LoadError(path + ": the file (" + std::to_string(size) + " bytes) exceeds the memory limit of " +
-                    std::to_string(options.max_memory_bytes) + " bytes");
-  std::ifstream in(path, std::ios::binary);
-  std::string bytes(size, '\0');
-  if (!in.read(bytes.data(), std::streamsize(size))) throw LoadError(path + ": read failed");
-  return bytes;
+// The whole file, refused by its size before reading when tinygltf could not take it.
+std::string read_gltf_file(const std::string& path, const LoadOptions& options) {
+  if (check_input_file(path, path) > 0xFFFFFFFFull) throw LoadError(path + ": files over 4 GB are not supported");
+  return read_input_file(path, path, options);
 }
 
-// Refuses what must be refused before tinygltf allocates anything.
+// Refuses what must be refused before tinygltf allocates anything, and charges the buffers it
+// will allocate: each declared length, and once more for a data URI's decoded copy.
 void check_declarations(const GltfDeclarations& declared, const std::string& path, const LoadOptions& options) {
   for (const std::string& name : declared.extensions_required)
     if (!is_supported(name))
       throw LoadError(path + ": extensionsRequired: unsupported extension " + name);
-  uint64_t total = 0;
   for (size_t i = 0; i < declared.buffer_byte_lengths.size(); ++i) {
-    total += declared.buffer_byte_lengths[i];
-    if (total > options.max_memory_bytes)
-      throw LoadError(path + ": " + element("buffers", i) + ".byteLength: " +
-                      std::to_string(declared.buffer_byte_lengths[i]) + " bytes (" + std::to_string(total) +
-                      " in all) exceed the memory limit of " + std::to_string(options.max_memory_bytes) + " bytes");
+    uint64_t length = declared.buffer_byte_lengths[i];
+    bool data_uri = i < declared.buffer_uris.size() && declared.buffer_uris[i] == data_uri_marker;
+    charge_load(options, data_uri ? saturating_multiply(length, 2) : length,
+                path + ": " + element("buffers", i) + ".byteLength");
   }
 }
 
 tinygltf::Model parse(const std::string& path, const std::string& bytes, const LoadOptions& options,
-                      SceneDesc& scene, uint64_t& bytes_charged) {
+                      SceneDesc& scene) {
   bool binary = bytes.compare(0, 4, "glTF") == 0;
-  std::string json = binary ? glb_json_chunk(bytes, path) : bytes;
+  std::string json_chunk;
+  if (binary) {
+    json_chunk = glb_json_chunk(bytes, path);
+    charge_load(options, json_chunk.size(), path + ": the JSON chunk");
+  }
+  const std::string& json = binary ? json_chunk : bytes;
+  GltfJsonCounts counts = count_gltf_json(json, path);
+  charge_load(options, gltf_model_bytes(counts, json.size()),
+              path + ": the JSON document (" + std::to_string(counts.values) + " values)");
   GltfDeclarations declared = read_gltf_declarations(json, path);
   check_declarations(declared, path, options);
   GltfFileAccess access;
@@ -64,7 +65,6 @@ tinygltf::Model parse(const std::string& path, const std::string& bytes, const L
   access.file = path;
   access.options = &options;
   access.declarations = &declared;
-  for (uint64_t length : declared.buffer_byte_lengths) access.bytes_charged += length;
   tinygltf::TinyGLTF gltf;
   install_file_access(gltf, access);
   tinygltf::Model model;
@@ -76,22 +76,19 @@ tinygltf::Model parse(const std::string& path, const std::string& bytes, const L
   if (!ok) throw LoadError(path + ": " + (error.empty() ? "invalid glTF" : one_line(error)));
   if (!warning.empty()) scene.warnings.push_back(path + ": " + one_line(warning));
   decode_buffer_view_images(model, access);
-  bytes_charged = bytes.size() + access.bytes_charged;
   return model;
 }
 
 }  // namespace
 
 SceneDesc load_gltf(const std::string& path, const LoadOptions& given) {
-  LoadOptions options = given;
-  if (options.max_memory_bytes == 0) options.max_memory_bytes = default_max_memory();  // called directly
-  std::string bytes = read_file(path, options);
-  if (bytes.size() > 0xFFFFFFFFull) throw LoadError(path + ": files over 4 GB are not supported");
+  BudgetedLoadOptions budgeted(given);
+  const LoadOptions& options = budgeted.options;
+  std::string bytes = read_gltf_file(path, options);
   SceneDesc scene;
   scene.name = std::filesystem::path(path).stem().string();
-  uint64_t bytes_charged = 0;
-  tinygltf::Model model = parse(path, bytes, options, scene, bytes_charged);
-  GltfContext context{model, path, options, scene, {}, {}, -1, bytes_charged};
+  tinygltf::Model model = parse(path, bytes, options, scene);
+  GltfContext context{model, path, options, scene, {}, {}, -1};
   for (const std::string& name : model.extensionsUsed)
     if (!is_supported(name)) context.warn("extension " + name + " is not supported and is ignored");
   convert_images(context);

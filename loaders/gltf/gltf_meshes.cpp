@@ -5,6 +5,7 @@
 #include "gltf/gltf_accessors.h"
 #include "gltf/gltf_materials.h"
 #include "scene/mesh_ops.h"
+#include "scene/scene_memory.h"
 
 namespace radiant {
 
@@ -32,6 +33,7 @@ std::vector<Vec> attribute(const GltfContext& context, const tinygltf::Primitive
   size_t count = values.size() / components;
   if (count != vertex_count)
     context.fail(at, std::to_string(count) + " elements, but POSITION has " + std::to_string(vertex_count));
+  context.charge(count * sizeof(Vec), at);
   out.resize(count);
   for (size_t i = 0; i < count; ++i) {
     float v[4] = {0, 0, 0, 1};  // a missing alpha (COLOR_0 as VEC3) is opaque
@@ -63,6 +65,7 @@ std::vector<uint32_t> triangles_of(int mode, const std::vector<uint32_t>& order)
 std::vector<uint32_t> vertex_order(const GltfContext& context, const tinygltf::Primitive& primitive,
                                    size_t vertex_count, const std::string& where) {
   if (primitive.indices < 0) {
+    context.charge(vertex_count * sizeof(uint32_t), where);
     std::vector<uint32_t> order(vertex_count);
     for (size_t i = 0; i < vertex_count; ++i) order[i] = uint32_t(i);
     return order;
@@ -78,6 +81,7 @@ std::vector<uint32_t> vertex_order(const GltfContext& context, const tinygltf::P
 void fill_shading_frames(GltfContext& context, MeshDesc& mesh, bool has_normals, const std::string& where) {
   const MaterialDesc& material = context.scene.materials[mesh.material];
   bool normal_mapped = material.normal_texture.valid() && !mesh.texcoords0.empty();
+  context.charge(shading_frame_bytes(mesh, material.normal_texture.valid()), where);
   if (!has_normals) {
     // glTF 3.7.2.1: without normals, clients MUST calculate flat normals and ignore the tangents.
     shade_flat(mesh, normal_mapped);
@@ -108,6 +112,7 @@ bool convert_primitive(GltfContext& context, const tinygltf::Primitive& primitiv
                                                 where + ".attributes.POSITION", T{TINYGLTF_TYPE_VEC3}, components);
   check_finite(context, xyz, 3, where + ".attributes.POSITION");
   size_t count = xyz.size() / 3;
+  context.charge(count * sizeof(vec3), where + ".attributes.POSITION");
   mesh.positions.resize(count);
   for (size_t i = 0; i < count; ++i) mesh.positions[i] = {xyz[i * 3], xyz[i * 3 + 1], xyz[i * 3 + 2]};
   mesh.normals = attribute<vec3, 3>(context, primitive, "NORMAL", T{TINYGLTF_TYPE_VEC3}, count, where);
@@ -116,7 +121,10 @@ bool convert_primitive(GltfContext& context, const tinygltf::Primitive& primitiv
   mesh.texcoords1 = attribute<vec2, 2>(context, primitive, "TEXCOORD_1", T{TINYGLTF_TYPE_VEC2}, count, where);
   mesh.colors = attribute<vec4, 4>(context, primitive, "COLOR_0", T{TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4}, count,
                                    where);
-  mesh.indices = triangles_of(primitive.mode, vertex_order(context, primitive, count, where));
+  std::vector<uint32_t> order = vertex_order(context, primitive, count, where);
+  // A strip or a fan lists each triangle's three corners again.
+  context.charge(saturating_multiply(order.size(), primitive.mode == TINYGLTF_MODE_TRIANGLES ? 4 : 12), where);
+  mesh.indices = triangles_of(primitive.mode, order);
   mesh.material = scene_material(context, primitive.material, where + ".material");
   context.scene.degenerate_triangles_dropped += drop_degenerate_triangles(mesh);
   if (mesh.indices.empty()) {
@@ -149,6 +157,7 @@ void convert_meshes(GltfContext& context) {
 int mirrored_mesh(GltfContext& context, int mesh) {
   auto it = context.mirrored_meshes.find(mesh);
   if (it != context.mirrored_meshes.end()) return it->second;
+  context.charge(mesh_bytes(context.scene.meshes[mesh]), context.scene.meshes[mesh].name + " (mirrored)");
   MeshDesc copy = context.scene.meshes[mesh];
   copy.name += " (mirrored)";
   for (size_t t = 0; t + 2 < copy.indices.size(); t += 3) std::swap(copy.indices[t + 1], copy.indices[t + 2]);

@@ -1,5 +1,6 @@
 #include "obj/obj_loader.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -8,7 +9,9 @@
 #include "file_access.h"
 #include "obj/obj_materials.h"
 #include "obj/obj_numbers.h"
+#include "obj/obj_memory.h"
 #include "scene/mesh_ops.h"
+#include "scene/scene_memory.h"
 
 namespace radiant {
 
@@ -26,9 +29,16 @@ struct MtlReader : tinyobj::MaterialReader {
                   std::map<std::string, int>* names, std::string* warn, std::string* err) override {
     try {
       auto path = resolve_inside(base_dir, name, options.allow_external_files, file + ": mtllib");
+      std::string label = file + ": mtllib '" + name + "'";
+      uint64_t size = check_input_file(path, label);
       std::ifstream in(path);
-      if (!in) throw LoadError(file + ": mtllib: cannot open '" + name + "'");
+      if (!in) throw LoadError(label + ": cannot open");
       check_mtl_numbers(in, (std::filesystem::path(file).parent_path() / name).string());
+      in.clear();
+      in.seekg(0);
+      // tinyobjloader keeps about 2 KB a material: count them before it parses any.
+      uint64_t count = count_mtl_materials(in);
+      charge_load(options, mtl_parse_bytes(count, size), label + ": " + std::to_string(count) + " materials");
       in.clear();
       in.seekg(0);
       tinyobj::LoadMtl(names, materials, &in, warn, err);
@@ -47,13 +57,16 @@ struct ObjData {
 };
 
 ObjData parse_obj(const std::string& path, const LoadOptions& options, std::vector<std::string>& warnings) {
-  std::error_code ec;
-  uint64_t size = std::filesystem::file_size(path, ec);
-  if (ec) throw LoadError(path + ": cannot open (" + ec.message() + ")");
-  if (size > options.max_memory_bytes / 8) throw LoadError(path + ": the file exceeds the memory limit");
+  check_input_file(path, path);
   std::ifstream in(path);
   if (!in) throw LoadError(path + ": cannot open");
   check_obj_numbers(in, path);
+  in.clear();
+  in.seekg(0);
+  // What tinyobjloader builds (about 170 bytes for an eight-byte face line) is charged from the
+  // counted lines before it parses any.
+  ObjLineCounts counts = count_obj_lines(in);
+  charge_load(options, obj_parse_bytes(counts), path + ": " + describe_obj_lines(counts));
   in.clear();
   in.seekg(0);
   ObjData data;
@@ -72,6 +85,7 @@ struct MeshBuilder {
   std::unordered_map<uint64_t, uint32_t> vertices;  // packed index triple -> vertex
   bool all_normals = true;
   bool smoothed = false;  // some face is in a smoothing group (`s 1`, ...)
+  size_t vertices_charged = 0;  // vertices the memory budget has been charged for
 };
 
 uint64_t pack(const tinyobj::index_t& i) {
@@ -143,8 +157,27 @@ uint32_t add_corner(MeshBuilder& builder, const tinyobj::attrib_t& a, const tiny
   return it->second;
 }
 
+// Charges the indices build_meshes is about to make from the parsed faces.
+void charge_mesh_indices(const std::string& path, const ObjData& data, const LoadOptions& options) {
+  uint64_t triangles = 0;
+  for (const tinyobj::shape_t& shape : data.shapes)
+    for (unsigned count : shape.mesh.num_face_vertices) triangles += count > 2 ? count - 2 : 0;
+  charge_load(options, saturating_multiply(triangles, obj_built_triangle_bytes),
+              path + ": " + std::to_string(triangles) + " triangles");
+}
+
+// How many corners repeat a vertex is known only while building: a mesh's vertices are charged
+// as they come, the charge doubling like the vectors that hold them (at least 1024 at a time).
+void charge_vertices(MeshBuilder& builder, size_t more, const std::string& path, const LoadOptions& options) {
+  if (builder.mesh.positions.size() + more <= builder.vertices_charged) return;
+  size_t chunk = std::max({more, builder.vertices_charged, size_t(1024)});
+  charge_load(options, saturating_multiply(chunk, obj_built_vertex_bytes),
+              path + ": " + std::to_string(builder.vertices_charged + chunk) + " distinct vertices");
+  builder.vertices_charged += chunk;
+}
+
 // Polygons become fans around their first corner (convex polygons, as OBJ exporters write them).
-std::map<int, MeshBuilder> build_meshes(const std::string& path, const ObjData& data) {
+std::map<int, MeshBuilder> build_meshes(const std::string& path, const ObjData& data, const LoadOptions& options) {
   std::map<int, MeshBuilder> builders;  // by MTL material index (-1 = none)
   std::vector<FaceLine> lines;          // read only when an error needs a location
   size_t face_in_file = 0;
@@ -165,6 +198,7 @@ std::map<int, MeshBuilder> build_meshes(const std::string& path, const ObjData& 
           check_corner(corner_location(path, lines, face_in_file, k), data.attrib, faces.indices[first + k]);
         }
       }
+      charge_vertices(builder, count, path, options);
       std::vector<uint32_t> corners(count);
       for (size_t k = 0; k < count; ++k) corners[k] = add_corner(builder, data.attrib, faces.indices[first + k]);
       for (size_t k = 1; k + 1 < count; ++k)
@@ -181,19 +215,20 @@ bool has_texcoords(const ObjData& data) { return !data.attrib.texcoords.empty();
 
 void append_obj(SceneDesc& scene, const std::string& path, const mat4& transform, const LoadOptions& given,
                 int material_override) {
-  LoadOptions options = given;
-  if (options.max_memory_bytes == 0) options.max_memory_bytes = default_max_memory();  // called directly
+  BudgetedLoadOptions budgeted(given);
+  const LoadOptions& options = budgeted.options;
   ObjData data = parse_obj(path, options, scene.warnings);
   std::vector<int> materials(data.materials.size(), material_override);
   if (material_override < 0) {
-    ObjTextureLoader textures{scene, std::filesystem::absolute(path).parent_path(), path, options, {}, 0};
+    ObjTextureLoader textures{scene, std::filesystem::absolute(path).parent_path(), path, options, {}};
     for (size_t m = 0; m < data.materials.size(); ++m) {
       materials[m] = int(scene.materials.size());
       scene.materials.push_back(convert_mtl_material(textures, data.materials[m]));
     }
   }
   size_t dropped = 0;
-  for (auto& [material, builder] : build_meshes(path, data)) {
+  charge_mesh_indices(path, data, options);
+  for (auto& [material, builder] : build_meshes(path, data, options)) {
     MeshDesc& mesh = builder.mesh;
     if (material >= 0) {
       mesh.material = materials[material];
@@ -213,6 +248,7 @@ void append_obj(SceneDesc& scene, const std::string& path, const mat4& transform
     if (mesh.indices.empty()) continue;
     if (!has_texcoords(data)) mesh.texcoords0.clear();
     bool normal_mapped = scene.materials[mesh.material].normal_texture.valid() && !mesh.texcoords0.empty();
+    charge_load(options, shading_frame_bytes(mesh, normal_mapped), path + ": " + mesh.name);
     // Without vn, OBJ shades faces flat unless they are in a smoothing group; smoothed faces get
     // area-weighted normals (across group boundaries too: groups are not told apart).
     if (builder.all_normals) {

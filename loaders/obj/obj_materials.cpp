@@ -12,22 +12,25 @@ int load_obj_texture(ObjTextureLoader& textures, const std::string& name, const 
   std::string key = path.string() + (option.clamp ? "#clamp" : "");
   auto found = textures.textures_by_path.find(key);
   if (found != textures.textures_by_path.end()) return found->second;
+  check_input_file(path, where + " '" + name + "'");
   std::string error;
   auto input = open_image_file(path.string(), error);
   if (!input) throw LoadError(where + ": cannot read image '" + name + "'");
   const ImageHeader& spec = input->header();
   int channels = std::min(spec.channels, 4);
-  size_t bytes = size_t(std::max(spec.width, 0)) * size_t(std::max(spec.height, 0)) * size_t(std::max(channels, 0));
-  if (bytes == 0 || textures.bytes_loaded + bytes > textures.options.max_memory_bytes)
-    throw LoadError(where + ": image '" + name + "' (" + std::to_string(spec.width) + "x" +
-                    std::to_string(spec.height) + ") is empty or exceeds the memory limit");
+  std::string image_label = where + ": image '" + name + "' (" + std::to_string(spec.width) + "x" +
+                            std::to_string(spec.height) + ")";
+  uint64_t texels = uint64_t(std::max(spec.width, 0)) * uint64_t(std::max(spec.height, 0));
+  if (texels == 0 || channels <= 0) throw LoadError(image_label + ": the image is empty");
+  // OpenImageIO may hold the whole file's pixels (up to four bytes a channel) while it converts.
+  charge_load(textures.options, saturating_multiply(texels, uint64_t(std::max(spec.channels, 0)) * 4 + channels),
+              image_label);
   ImageDesc image;
   image.name = path.string();
   image.width = spec.width, image.height = spec.height, image.channels = channels;
-  image.texels8.resize(bytes);
+  image.texels8.resize(texels * channels);
   if (!input->read(channels, PixelType::uint8, image.texels8.data()))
-    throw LoadError(where + ": cannot decode image '" + name + "'");
-  textures.bytes_loaded += bytes;
+    throw LoadError(where + ": cannot decode image '" + name + "': " + input->error());
   TextureDesc texture;
   texture.image = int(textures.scene.images.size());
   if (option.clamp) texture.wrap_s = texture.wrap_t = TextureWrap::clamp_to_edge;

@@ -17,7 +17,6 @@ struct ObjTextureLoader {
   const std::string& file;
   const LoadOptions& options;
   std::map<std::string, int> textures_by_path;  // one TextureDesc per file and wrap mode
-  size_t bytes_loaded = 0;
 };
 
 // The MaterialDesc for one MTL material (mapping in docs/gltf-obj.md).

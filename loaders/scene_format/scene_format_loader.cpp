@@ -43,9 +43,10 @@ static std::string scene_name(const std::vector<Token>& scene_line) {
 }
 
 SceneDesc load_scene_format(std::istream& in, const std::string& display_name, const std::string& base_dir,
-                            const LoadOptions& options) {
-  size_t max_bytes = options.max_memory_bytes > 0 ? options.max_memory_bytes : default_max_memory();
-  SceneText text = read_scene_text(in, display_name, max_bytes);
+                            const LoadOptions& given) {
+  BudgetedLoadOptions budgeted(given);
+  const LoadOptions& options = budgeted.options;
+  SceneText text = read_scene_text(in, display_name, *options.budget);
   BuildContext context;
   context.display_name = display_name;
   context.base_dir = base_dir;

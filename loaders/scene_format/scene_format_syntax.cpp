@@ -30,8 +30,7 @@ std::string quote(const std::string& text) {
 static bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
 // Reads one line without its '\n'; false at end of input. Throws past `max_line_length`.
-static bool read_line(std::istream& in, std::string& line, size_t& bytes_read, size_t max_bytes,
-                      const std::string& display_name, long line_number) {
+static bool read_line(std::istream& in, std::string& line, const std::string& display_name, long line_number) {
   line.clear();
   std::streambuf* buffer = in.rdbuf();
   if (!buffer) return false;
@@ -41,8 +40,6 @@ static bool read_line(std::istream& in, std::string& line, size_t& bytes_read, s
     if (line.size() == max_line_length)
       fail_at(display_name, {"", line_number, 1},
               "line is longer than " + std::to_string(max_line_length) + " characters");
-    if (++bytes_read > max_bytes)
-      fail_at(display_name, {"", line_number, 1}, "scene text is larger than the memory limit");
     line += char(c);
     c = buffer->sbumpc();
   }
@@ -92,15 +89,23 @@ static void add_statement(SceneText& text, std::vector<Token> tokens, bool is_fi
   }
 }
 
-SceneText read_scene_text(std::istream& in, const std::string& display_name, size_t max_bytes) {
+// What keeping a statement of `tokens` costs: the tokens and their text, and its block or
+// attribute, each twice for the growth of the vectors holding them.
+static uint64_t statement_bytes(const std::vector<Token>& tokens) {
+  uint64_t bytes = sizeof(Block) + sizeof(Attribute);
+  for (const Token& token : tokens) bytes += sizeof(Token) + (token.text.size() > 15 ? token.text.size() + 1 : 0);
+  return 2 * bytes;
+}
+
+SceneText read_scene_text(std::istream& in, const std::string& display_name, MemoryBudget& budget) {
   SceneText text;
   std::string line;
-  size_t bytes_read = 0;
   bool is_first_statement = true;
-  for (long line_number = 1; read_line(in, line, bytes_read, max_bytes, display_name, line_number);
-       ++line_number) {
+  for (long line_number = 1; read_line(in, line, display_name, line_number); ++line_number) {
     std::vector<Token> tokens = tokenize(line, line_number);
     if (tokens.empty()) continue;
+    uint64_t bytes = statement_bytes(tokens);
+    if (!budget.try_charge(bytes)) fail_at(display_name, {"", line_number, 1}, budget.refusal(bytes, "the scene text"));
     add_statement(text, std::move(tokens), is_first_statement, display_name);
     is_first_statement = false;
   }

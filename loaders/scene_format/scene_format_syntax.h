@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "memory/memory_budget.h"
+
 namespace radiant::scene_format {
 
 // A word of the file and where it starts (1-based line and byte column).
@@ -39,9 +41,10 @@ struct SceneText {
 // Longest line accepted, so hostile input cannot make one line eat all memory.
 constexpr size_t max_line_length = 1 << 20;
 
-// Reads `in` to the end. Throws LoadError on over-long lines, on more than `max_bytes` of
-// text, and on attribute lines before the first block.
-SceneText read_scene_text(std::istream& in, const std::string& display_name, size_t max_bytes);
+// Reads `in` to the end, charging every statement's tokens to `budget` before keeping them (a
+// two-byte word takes a 48-byte Token). Throws LoadError on over-long lines, on text the budget
+// refuses, and on attribute lines before the first block.
+SceneText read_scene_text(std::istream& in, const std::string& display_name, MemoryBudget& budget);
 
 // Throws LoadError `display_name:line:col: message`.
 [[noreturn]] void fail_at(const std::string& display_name, const Token& where, const std::string& message);

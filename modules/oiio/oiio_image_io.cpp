@@ -49,13 +49,20 @@ class OiioImageSource final : public ImageSource {
   }
   const ImageHeader& header() const override { return header_; }
   bool read(int channels, PixelType type, void* out) override {
-    return input_->read_image(0, 0, 0, channels, type_desc(type), out);
+    bool read = input_->read_image(0, 0, 0, channels, type_desc(type), out);
+    // libjpeg only warns about a file that ends early and fills the rest with gray; OpenImageIO
+    // passes the warning on as an error message of a successful read. A partial read fails.
+    std::string message = input_->geterror();
+    if (read && message.empty()) return true;
+    error_ = first_line(message);
+    return false;
   }
-  std::string error() override { return first_line(input_->geterror()); }
+  std::string error() override { return error_; }
 
  private:
   std::unique_ptr<OIIO::ImageInput> input_;
   ImageHeader header_;
+  std::string error_;
 };
 
 std::unique_ptr<ImageSource> open_image(const std::string& path, std::string& error) {

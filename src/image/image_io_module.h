@@ -36,7 +36,8 @@ class ImageSource {
   virtual ~ImageSource() = default;
   virtual const ImageHeader& header() const = 0;
   // Channels [0, channels) of every pixel, interleaved, top row first, converted to `type`
-  // (uint8 and float32 only) into `out`. False on failure, with the reason in error().
+  // (uint8 and float32 only) into `out`. False on failure, a partial read included (a file that
+  // ends early), with the reason in error().
   virtual bool read(int channels, PixelType type, void* out) = 0;
   virtual std::string error() = 0;
 };

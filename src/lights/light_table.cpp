@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "image/image_io.h"
+#include "memory/input_file.h"
 #include "scene/scene_bounds.h"
 
 namespace radiant {
@@ -84,13 +85,31 @@ void check_environment_texel(const std::string& path, const ImageHeader& spec, i
   }
 }
 
-EnvironmentMap load_environment_map(const std::string& path) {
+// The area lights add_emissive_triangles and add_emissive_spheres will make, and their weights.
+uint64_t area_light_bytes(const SceneDesc& scene) {
+  uint64_t lights = scene.shapes.size();
+  for (const InstanceDesc& instance : scene.instances) {
+    const MeshDesc& mesh = scene.meshes[instance.mesh];
+    if (mesh.material >= 0 && !is_black(scene.materials[mesh.material].emission)) lights += mesh.triangle_count();
+  }
+  return saturating_multiply(lights, 2 * sizeof(AreaLight) + 3 * sizeof(float));
+}
+
+EnvironmentMap load_environment_map(const std::string& path, MemoryBudget* budget) {
   std::unique_ptr<ImageSource> input = open_environment_map(path);
   const ImageHeader& spec = input->header();
+  // The float pixels read and OpenImageIO's copy while converting, then texels, weights and the
+  // sampling tables.
+  uint64_t texels = uint64_t(spec.width) * uint64_t(spec.height);
+  uint64_t per_texel = 8 * uint64_t(spec.channels) + sizeof(color3) + 5 * sizeof(float);
+  MemoryCharge memory(budget, saturating_multiply(texels, per_texel),
+                      path + ": a " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+                          " environment map");
   std::vector<float> pixels(size_t(spec.width) * spec.height * spec.channels);
   if (!input->read(spec.channels, PixelType::float32, pixels.data()))
     throw std::runtime_error(path + ": cannot read environment map: " + input->error());
   EnvironmentMap map;
+  map.memory = std::move(memory);
   map.width = spec.width;
   map.height = spec.height;
   map.texels.resize(size_t(map.width) * map.height);
@@ -126,6 +145,9 @@ std::vector<float> float_weights(const std::vector<double>& weights) {
 }  // namespace
 
 std::unique_ptr<ImageSource> open_environment_map(const std::string& path) {
+  uint64_t file_size = 0;
+  std::string problem = input_file_problem(path, file_size);
+  if (!problem.empty()) throw std::runtime_error(path + ": cannot read environment map: " + problem);
   std::string error;
   auto input = open_image_file(path, error);
   if (!input) throw std::runtime_error(path + ": cannot read environment map: " + error);
@@ -137,8 +159,10 @@ std::unique_ptr<ImageSource> open_environment_map(const std::string& path) {
 }
 
 LightTable make_light_table(const SceneDesc& scene, color3 environment_color, const std::string& environment_map_path,
-                            bool use_area_lights) {
+                            bool use_area_lights, MemoryBudget* budget) {
   LightTable table;
+  if (use_area_lights)
+    table.area_light_memory = MemoryCharge(budget, area_light_bytes(scene), scene.source_path + ": the area lights");
   scene_bounding_sphere(scene, table.scene_center, table.scene_radius);
   for (size_t i = 0; i < scene.lights.size(); ++i)
     if (scene.lights[i].kind != LightKind::ambient) table.delta_lights.push_back(int(i));
@@ -147,7 +171,7 @@ LightTable make_light_table(const SceneDesc& scene, color3 environment_color, co
     add_emissive_spheres(scene, table);
   }
   table.environment_color = environment_color;
-  if (!environment_map_path.empty()) table.environment_map = load_environment_map(environment_map_path);
+  if (!environment_map_path.empty()) table.environment_map = load_environment_map(environment_map_path, budget);
 
   // Selection weights: each light's emitted power (up to a common factor), in double: a light of
   // 1e38 has a power beyond float's range, which make_distribution would read as zero.

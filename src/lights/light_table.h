@@ -9,6 +9,7 @@
 
 #include "image/image_io_module.h"
 #include "math/vec.h"
+#include "memory/memory_budget.h"
 #include "sampling/distribution.h"
 #include "scene/scene_desc.h"
 
@@ -34,6 +35,7 @@ struct EnvironmentMap {
   int width = 0, height = 0;
   std::vector<color3> texels;      // linear radiance, top row first (+y up is the top)
   Distribution2D distribution;     // over (u, v) in [0,1)^2, by luminance * sin(theta) / texel count
+  MemoryCharge memory;             // its texels and tables (and their reading), against the budget
 };
 
 struct LightTable {
@@ -49,14 +51,17 @@ struct LightTable {
   Distribution1D selection;
   std::vector<int> instance_light_base;  // first area light of each instance's triangles, or -1
   std::vector<int> shape_light;          // area light of each analytic shape, or -1
+  MemoryCharge area_light_memory;        // held against the budget
   bool has_environment() const { return !is_black(environment_color) || environment_map.width > 0; }
   size_t environment_slot() const { return delta_lights.size() + area_lights.size(); }
 };
 
 // Builds the table. `environment_color` and `environment_map_path` are the resolved background
-// (scene, then --env-color/--env). Throws std::runtime_error when the map cannot be read.
+// (scene, then --env-color/--env). `budget` (when given) is charged for the area lights and the
+// environment map (by the size its header declares) before they are built. Throws
+// std::runtime_error when the map cannot be read, MemoryLimitError when the budget refuses.
 LightTable make_light_table(const SceneDesc& scene, color3 environment_color, const std::string& environment_map_path,
-                            bool use_area_lights);
+                            bool use_area_lights, MemoryBudget* budget = nullptr);
 
 // Opens an environment map and checks its header (readable, of a usable size): what `batch`
 // checks of every view before rendering. Throws std::runtime_error naming the file.

@@ -13,6 +13,7 @@
 #include <mutex>
 #include <optional>
 
+#include "accel/accel_memory.h"
 #include "integrators/naive.h"
 #include "integrators/path.h"
 #include "integrators/whitted.h"
@@ -45,6 +46,11 @@ RenderContext make_context(const PreparedScene& prepared, const ResolvedSettings
   ctx.max_depth = s.max_depth;
   ctx.contribution_cutoff = options.contribution_cutoff;
   return ctx;
+}
+
+// What make_context's per-material tables take.
+uint64_t shading_materials_bytes(const SceneDesc& scene) {
+  return saturating_multiply(scene.materials.size(), sizeof(SurfaceMaterial) + sizeof(BsdfMaterial));
 }
 
 RadianceFunction select_integrator(const ResolvedSettings& s) {
@@ -140,13 +146,13 @@ void print_progress(double fraction, double elapsed) {
   std::fflush(stderr);
 }
 
-}  // namespace
-
-namespace {
-
+// Builds (or rebuilds) the accelerator, charging its estimated size first.
 void build_accel(PreparedScene& prepared) {
-  auto start = Clock::now();
   prepared.accel.reset();
+  prepared.accel_memory = MemoryCharge();
+  prepared.accel_memory = MemoryCharge(prepared.budget, accel_build_bytes(*prepared.scene),
+                                       prepared.scene->source_path + ": the accelerator");
+  auto start = Clock::now();
   prepared.accel = build_scene_accel(*prepared.scene);
   prepared.build_seconds = seconds_since(start);
 }
@@ -163,6 +169,7 @@ CameraDesc world_view_camera(const PreparedScene& prepared, const RenderOptions&
 
 PreparedScene prepare_scene(SceneDesc scene, const RenderOptions& options) {
   PreparedScene prepared;
+  prepared.budget = options.memory;
   prepared.world = record_world_placement(scene);
   prepared.scene = std::make_unique<SceneDesc>(std::move(scene));
   bool framed = false;
@@ -187,12 +194,21 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
   RenderResult result;
   ResolvedSettings& s = result.settings;
   s = resolve_settings(prepared, options);
+  int width = s.window.x1 - s.window.x0, height = s.window.y1 - s.window.y0;
+  size_t channels = output_channel_names(options.aovs).size();
+  result.image_memory = MemoryCharge(options.memory, render_image_bytes(width, height, channels),
+                                     prepared.scene->source_path + ": a " + std::to_string(width) + "x" +
+                                         std::to_string(height) + " render with " + std::to_string(channels) +
+                                         " channels (film, AOVs and output image)");
   bool path_like = s.mode != RenderMode::whitted;
-  LightTable lights = make_light_table(*prepared.scene, s.environment_color, s.environment_map, path_like);
+  LightTable lights =
+      make_light_table(*prepared.scene, s.environment_color, s.environment_map, path_like, options.memory);
   lights.environment_scale = prepared.scene->environment.map_scale;
+  MemoryCharge materials_memory(options.memory, shading_materials_bytes(*prepared.scene),
+                                prepared.scene->source_path + ": the materials prepared for shading");
   RenderContext ctx = make_context(prepared, s, lights, options);
 
-  result.film = make_film(s.window.x1 - s.window.x0, s.window.y1 - s.window.y0);
+  result.film = make_film(width, height);
   tbb::enumerable_thread_specific<RayCounts> counts;
   auto start = Clock::now();
   bool adaptive = options.noise_threshold > 0, timed = options.time_limit_seconds > 0;
@@ -280,18 +296,30 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
   return result;
 }
 
+uint64_t render_image_bytes(int width, int height, size_t channels) {
+  // A FilmPixel, a sample count and an activity byte; the output image's floats; for 8-bit
+  // formats three more floats and three bytes a pixel.
+  uint64_t per_pixel = sizeof(FilmPixel) + sizeof(uint32_t) + 1 + channels * sizeof(float) + 3 * sizeof(float) + 3;
+  return saturating_multiply(uint64_t(std::max(width, 0)) * uint64_t(std::max(height, 0)), per_pixel);
+}
+
+std::vector<std::string> output_channel_names(const std::vector<std::string>& aovs) {
+  std::vector<std::string> channels = {"R", "G", "B"};
+  for (const std::string& aov : aovs) {
+    if (aov == "albedo") channels.insert(channels.end(), {"albedo.R", "albedo.G", "albedo.B"});
+    else if (aov == "normal") channels.insert(channels.end(), {"N.X", "N.Y", "N.Z"});
+    else if (aov == "depth") channels.push_back("Z");
+    else if (aov == "variance") channels.insert(channels.end(), {"variance.R", "variance.G", "variance.B"});
+    else if (aov == "spp") channels.push_back("spp");
+  }
+  return channels;
+}
+
 OutputImage film_to_image(const Film& film, const std::vector<std::string>& aovs) {
   OutputImage image;
   image.width = film.width;
   image.height = film.height;
-  image.channels = {"R", "G", "B"};
-  for (const std::string& aov : aovs) {
-    if (aov == "albedo") image.channels.insert(image.channels.end(), {"albedo.R", "albedo.G", "albedo.B"});
-    else if (aov == "normal") image.channels.insert(image.channels.end(), {"N.X", "N.Y", "N.Z"});
-    else if (aov == "depth") image.channels.push_back("Z");
-    else if (aov == "variance") image.channels.insert(image.channels.end(), {"variance.R", "variance.G", "variance.B"});
-    else if (aov == "spp") image.channels.push_back("spp");
-  }
+  image.channels = output_channel_names(aovs);
   size_t stride = image.channels.size();
   image.pixels.resize(size_t(film.width) * film.height * stride);
   for (size_t i = 0; i < film.pixels.size(); ++i) {

@@ -21,9 +21,13 @@ struct PreparedScene {
   std::unique_ptr<SceneAccel> accel;
   EffectSet effects;
   double build_seconds = 0;
+  MemoryBudget* budget = nullptr;  // what the accelerator is charged to (RenderOptions::memory)
+  MemoryCharge accel_memory;       // the accelerator's estimated size, held against the budget
 };
 // Takes a loaded (world-space) scene and builds it in the render space of the view `options`
-// ask for. Throws std::invalid_argument for a camera that does not exist or a bad view.
+// ask for. Charges options.memory (when given) for the accelerator before building it, and
+// rebuilds charge the same budget; throws MemoryLimitError, and std::invalid_argument for a
+// camera that does not exist or a bad view.
 PreparedScene prepare_scene(SceneDesc scene, const RenderOptions& options = {});
 // Moves `prepared` to the render origin the view of `options` needs, rebuilding the accelerator
 // only when that origin differs from the current one; returns the seconds spent.
@@ -70,9 +74,19 @@ struct RenderResult {
   ResolvedSettings settings;
   Film film;
   RenderStats stats;
+  MemoryCharge image_memory;  // the film and the output image made from it, held until written
 };
 
+// Throws MemoryLimitError when options.memory refuses the film, image or lights.
 RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions& options);
+
+// What a render of `width` x `height` pixels with `channels` output channels allocates per
+// image: the film, the sample counts and activity masks, the output image and its 8-bit
+// conversion for PNG.
+uint64_t render_image_bytes(int width, int height, size_t channels);
+
+// The channels film_to_image makes: R, G, B, then those of each AOV ("albedo.R", "N.X", "Z", ...).
+std::vector<std::string> output_channel_names(const std::vector<std::string>& aovs);
 
 // The film as an image with the requested AOV channels (a cropped render's film is the window).
 OutputImage film_to_image(const Film& film, const std::vector<std::string>& aovs);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "math/vec.h"
+#include "memory/memory_budget.h"
 #include "scene/scene_desc.h"
 
 namespace radiant {
@@ -45,6 +46,9 @@ struct RenderOptions {
   float contribution_cutoff = 0.001f;  // Whitted: stop recursing below this weight
   bool quiet = false;
   bool progress = false;  // print progress to stderr (the CLI sets it when stderr is a terminal)
+  // --max-memory: charged for the film, the output image, the light table and the environment
+  // map before they are allocated (the command's budget, shared with loading); null = no cap.
+  MemoryBudget* memory = nullptr;
 };
 
 // About 31 years: a longer limit cannot be told from none, and its deadline would overflow the

@@ -321,7 +321,8 @@ TEST_CASE("@render mode and sampler names map to their enums, absent settings st
 
 static mat4 transform_of(const std::string& text) {
   std::istringstream in(text);
-  scene_format::SceneText parsed = scene_format::read_scene_text(in, "t.scene", 1 << 20);
+  MemoryBudget budget(1 << 20);
+  scene_format::SceneText parsed = scene_format::read_scene_text(in, "t.scene", budget);
   scene_format::BuildContext context;
   context.display_name = "t.scene";
   return scene_format::mesh_transform(context, parsed.blocks.at(0));

@@ -1,12 +1,17 @@
 #include "support/test_support.h"
 
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <atomic>
+#include <chrono>
 #include <fstream>
 #include <random>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 
 #include "image/image_io.h"
 #include "output/output_set.h"
@@ -55,6 +60,40 @@ CommandResult run_radiant(const std::string& args, const std::string& stdin_text
   r.out = read_bytes(out);
   r.err = read_bytes(err);
   return r;
+}
+
+MeasuredRun run_radiant_measured(const std::string& args, int timeout_seconds, uint64_t address_space_limit) {
+  ScratchDir io("measured");
+  fs::path out = io.file("stdout.txt"), err = io.file("stderr.txt");
+  // The shell execs radiant in place, so the child whose rusage wait4 reports is radiant itself.
+  std::string command = "exec " RADIANT_EXE " " + args + " </dev/null >'" + out.string() + "' 2>'" + err.string() + "'";
+  pid_t child = fork();
+  if (child < 0) throw std::runtime_error("fork failed");
+  if (child == 0) {
+    if (address_space_limit > 0) {
+      rlimit limit{rlim_t(address_space_limit), rlim_t(address_space_limit)};
+      setrlimit(RLIMIT_AS, &limit);
+    }
+    execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(timeout_seconds);
+  int status = 0;
+  rusage usage{};
+  while (wait4(child, &status, WNOHANG, &usage) == 0) {
+    if (std::chrono::steady_clock::now() > deadline) {
+      kill(child, SIGKILL);
+      wait4(child, &status, 0, &usage);
+      break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  MeasuredRun run;
+  run.result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  run.result.out = read_bytes(out);
+  run.result.err = read_bytes(err);
+  run.peak_rss_bytes = uint64_t(usage.ru_maxrss) * 1024;  // Linux reports kilobytes
+  return run;
 }
 
 TestImage read_image(const fs::path& file) {

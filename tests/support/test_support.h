@@ -1,6 +1,7 @@
 // Helpers shared by tests: scratch folders, running the CLI, reading rendered images.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -27,6 +28,27 @@ struct CommandResult {
 // to its standard input.
 CommandResult run_radiant(const std::string& args, const std::string& stdin_text = "",
                           int timeout_seconds = 120);
+
+// A run of radiant in a child process of its own, with that child's peak resident memory.
+struct MeasuredRun {
+  CommandResult result;
+  uint64_t peak_rss_bytes = 0;  // wait4's ru_maxrss
+};
+// Runs `radiant ARGS` like run_radiant (exit_code -1 when killed, by the timeout or a signal).
+// `address_space_limit` > 0 caps the child's virtual memory (RLIMIT_AS), so that a regression
+// fails the test instead of exhausting the machine (not under AddressSanitizer, whose shadow
+// memory needs terabytes of address space).
+MeasuredRun run_radiant_measured(const std::string& args, int timeout_seconds = 120,
+                                 uint64_t address_space_limit = 0);
+
+// True in the AddressSanitizer build, where resident memory measures the sanitizer's bookkeeping
+// and RLIMIT_AS cannot be used.
+constexpr bool built_with_address_sanitizer =
+#if defined(__SANITIZE_ADDRESS__)
+    true;
+#else
+    false;
+#endif
 
 // A float image as read through the OpenImageIO module (all channels, row-major, top row first).
 struct TestImage {
