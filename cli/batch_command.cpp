@@ -167,6 +167,7 @@ LoadedScene load_batch_scene(const std::string& path, bool allow_external, Memor
 // Everything about a view that can be known before rendering: its settings (size, crop, camera,
 // field of view, mode) and that its environment map can be read.
 void check_view(const LoadedScene& loaded, const RenderJob& job) {
+  check_outputs_spare_scene_files(loaded.prepared->scene->input_files, render_job_outputs(job));
   ResolvedSettings settings = resolve_settings(*loaded.prepared, job.options);
   if (!settings.environment_map.empty()) open_environment_map(settings.environment_map);
 }

@@ -323,6 +323,9 @@ void run_converge(const std::string& scene_path, ConvergeFlags& flags, std::vect
   load_options.budget = &budget;
   load_options.gltf_scene = flags.render.gltf_scene;
   PreparedScene prepared = prepare_scene(load_scene(scene_path, load_options), options);
+  check_outputs_spare_scene_files(prepared.scene->input_files, {{"the report file", files.csv.string()},
+                                                                {"the report file", files.json.string()},
+                                                                {"the report file", files.chart.string()}});
 
   if (flags.width) options.width = flags.width;
   if (flags.height) options.height = flags.height;

@@ -47,6 +47,7 @@ void run_render_job(const std::string& scene_path, PreparedScene& prepared, cons
   DeferredInterrupts deferred;  // a signal stops the render; what it rendered is still written
   RenderOptions options = job.options;
   options.stop_request = &interrupt_signal();
+  check_outputs_spare_scene_files(prepared.scene->input_files, render_job_outputs(job));
   prepare_view(prepared, job.options);
   times.build = prepared.build_seconds;
   RenderResult result = render_prepared(prepared, options);

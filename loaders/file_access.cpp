@@ -40,15 +40,16 @@ fs::path resolve_inside(const fs::path& base_dir, const std::string& uri, bool a
   return real_file;
 }
 
-uint64_t check_input_file(const fs::path& path, const std::string& label) {
+uint64_t check_input_file(const fs::path& path, const std::string& label, const LoadOptions& options) {
   uint64_t size = 0;
   std::string problem = input_file_problem(path, size);
   if (!problem.empty()) throw LoadError(label + ": " + problem);
+  if (options.files_read) options.files_read->push_back(path.string());
   return size;
 }
 
 std::string read_input_file(const fs::path& path, const std::string& label, const LoadOptions& options) {
-  uint64_t size = check_input_file(path, label);
+  uint64_t size = check_input_file(path, label, options);
   charge_load(options, size, label);
   std::ifstream in(path, std::ios::binary);
   std::string bytes(size, '\0');

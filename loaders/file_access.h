@@ -20,7 +20,8 @@ std::filesystem::path resolve_inside(const std::filesystem::path& base_dir, cons
 // FIFO would block forever) is refused with LoadError "`label`: no such file" / "is a directory"
 // / "is not a regular file". Returns the size. `label` names the file and the place, e.g.
 // "scene.gltf: images[0].uri 'x.png'".
-uint64_t check_input_file(const std::filesystem::path& path, const std::string& label);
+// The file is recorded in options.files_read.
+uint64_t check_input_file(const std::filesystem::path& path, const std::string& label, const LoadOptions& options);
 
 // check_input_file, then the whole file, its size charged to the load's budget before reading.
 std::string read_input_file(const std::filesystem::path& path, const std::string& label, const LoadOptions& options);

@@ -61,7 +61,7 @@ static std::string lowercase_extension(const std::string& path) {
 
 static SceneDesc load_by_extension(const std::string& path, const LoadOptions& options) {
   if (path == "-") return load_scene_format(std::cin, "<stdin>", std::filesystem::current_path().string(), options);
-  check_input_file(path, path);
+  check_input_file(path, path, options);
   std::string ext = lowercase_extension(path);
   if (ext == ".gltf" || ext == ".glb") return load_gltf(path, options);
   if (ext == ".obj") return load_obj(path, options);
@@ -76,6 +76,8 @@ static SceneDesc load_by_extension(const std::string& path, const LoadOptions& o
 
 SceneDesc load_scene(const std::string& path, const LoadOptions& given) {
   BudgetedLoadOptions budgeted(given);
+  std::vector<std::string> files_read;
+  budgeted.options.files_read = &files_read;
   const LoadOptions& options = budgeted.options;
   MemoryBudget& budget = *options.budget;
   uint64_t used_before = budget.used();
@@ -83,6 +85,7 @@ SceneDesc load_scene(const std::string& path, const LoadOptions& given) {
   try {
     scene = load_by_extension(path, options);
     scene.source_path = path == "-" ? "<stdin>" : path;
+    scene.input_files = std::move(files_read);
     validate_scene(scene);
   } catch (...) {
     budget.release(budget.used() - used_before);

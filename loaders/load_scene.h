@@ -6,6 +6,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "memory/memory_budget.h"
 #include "scene/scene_desc.h"
@@ -25,6 +26,8 @@ struct LoadOptions {
   MemoryBudget* budget = nullptr;
   size_t max_memory_bytes = 0;  // the limit of that own budget; 0 = default_memory_limit()
   int gltf_scene = -1;          // glTF scene index; -1 = the file's default scene
+  // Every file the load reads is appended here (load_scene sets it; SceneDesc::input_files).
+  std::vector<std::string>* files_read = nullptr;
 };
 
 // Charges `bytes` for `what` (a file and a place) to options.budget, which must be set; throws

@@ -58,7 +58,7 @@ static bool file_exists(const std::string& path, void* user) {
   auto& access = *static_cast<GltfFileAccess*>(user);
   if (path.empty()) return false;
   try {
-    check_input_file(path, label_of(access, path));
+    check_input_file(path, label_of(access, path), *access.options);
     return true;
   } catch (const LoadError& error) {
     refuse(access, error.what());
@@ -86,7 +86,7 @@ static bool read_whole_file(std::vector<unsigned char>* out, std::string* err, c
   auto& access = *static_cast<GltfFileAccess*>(user);
   try {
     std::string label = label_of(access, path);
-    uint64_t size = check_input_file(path, label);
+    uint64_t size = check_input_file(path, label, *access.options);
     charge_load(*access.options, size, label);
     std::ifstream in(path, std::ios::binary);
     out->resize(size);

@@ -28,7 +28,7 @@ bool is_supported(const std::string& name) {
 
 // The whole file, refused by its size before reading when tinygltf could not take it.
 std::string read_gltf_file(const std::string& path, const LoadOptions& options) {
-  if (check_input_file(path, path) > 0xFFFFFFFFull) throw LoadError(path + ": files over 4 GB are not supported");
+  if (check_input_file(path, path, options) > 0xFFFFFFFFull) throw LoadError(path + ": files over 4 GB are not supported");
   return read_input_file(path, path, options);
 }
 

@@ -30,7 +30,7 @@ struct MtlReader : tinyobj::MaterialReader {
     try {
       auto path = resolve_inside(base_dir, name, options.allow_external_files, file + ": mtllib");
       std::string label = file + ": mtllib '" + name + "'";
-      uint64_t size = check_input_file(path, label);
+      uint64_t size = check_input_file(path, label, options);
       std::ifstream in(path);
       if (!in) throw LoadError(label + ": cannot open");
       check_mtl_numbers(in, (std::filesystem::path(file).parent_path() / name).string());
@@ -57,7 +57,7 @@ struct ObjData {
 };
 
 ObjData parse_obj(const std::string& path, const LoadOptions& options, std::vector<std::string>& warnings) {
-  check_input_file(path, path);
+  check_input_file(path, path, options);
   std::ifstream in(path);
   if (!in) throw LoadError(path + ": cannot open");
   check_obj_numbers(in, path);

@@ -12,7 +12,7 @@ int load_obj_texture(ObjTextureLoader& textures, const std::string& name, const 
   std::string key = path.string() + (option.clamp ? "#clamp" : "");
   auto found = textures.textures_by_path.find(key);
   if (found != textures.textures_by_path.end()) return found->second;
-  check_input_file(path, where + " '" + name + "'");
+  check_input_file(path, where + " '" + name + "'", textures.options);
   std::string error;
   auto input = open_image_file(path.string(), error);
   if (!input) throw LoadError(where + ": cannot read image '" + name + "'");

@@ -72,7 +72,7 @@ void build_mesh_block(BuildContext& context, const Block& block) {
   const Token& where = file.arguments[0];
   std::string place = context.display_name + ":" + std::to_string(where.line) + ":" + std::to_string(where.column);
   std::filesystem::path path = resolve_inside(context.base_dir, uri, context.options.allow_external_files, place);
-  check_input_file(path, place + ": " + quote(uri));
+  check_input_file(path, place + ": " + quote(uri), context.options);
   try {
     append_obj(context.scene, path.string(), transform, context.options, material_override);
   } catch (const LoadError& error) {

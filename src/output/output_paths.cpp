@@ -77,4 +77,10 @@ void DistinctFiles::add_output(const NamedFile& file) {
                                 at->second.path + "'");
 }
 
+void check_outputs_spare_scene_files(const std::vector<std::string>& scene_files, const std::vector<NamedFile>& outputs) {
+  DistinctFiles files;
+  for (const std::string& path : scene_files) files.add_input({"a file the scene reads", path});
+  for (const NamedFile& output : outputs) files.add_output(output);
+}
+
 }  // namespace radiant

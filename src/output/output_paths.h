@@ -5,6 +5,7 @@
 #include <compare>
 #include <map>
 #include <string>
+#include <vector>
 
 namespace radiant {
 
@@ -45,5 +46,9 @@ class DistinctFiles {
   static Key key_of(const std::string& path);
   std::map<Key, NamedFile> files_;
 };
+
+// The outputs against the files a scene reads, known once it is loaded (textures, glTF buffers,
+// MTL files, included meshes): std::invalid_argument when an output is one of them.
+void check_outputs_spare_scene_files(const std::vector<std::string>& scene_files, const std::vector<NamedFile>& outputs);
 
 }  // namespace radiant

@@ -184,6 +184,7 @@ struct SceneSettings {
 struct SceneDesc {
   std::string name;
   std::string source_path;  // file it was loaded from ("-" for stdin)
+  std::vector<std::string> input_files;  // every file loading read: the scene, buffers, images, includes
   std::vector<CameraDesc> cameras;
   std::vector<MeshDesc> meshes;
   std::vector<InstanceDesc> instances;

@@ -206,3 +206,29 @@ TEST_CASE("same file: batch refuses two lines writing one file and an output ove
   CHECK(mentions(over_script, "the script"));
   CHECK(read_bytes(script) == text);
 }
+
+TEST_CASE("same file: an output over a file the scene reads (texture, MTL, glTF buffer) is refused before rendering") {
+  ScratchDir dir("same-scene-files");
+  write_texel_bytes(dir.file("tex.png"), 2, 2, 3, std::vector<unsigned char>(12, 200));
+  dir.write("box.mtl", "newmtl wall\nKd 1 1 1\nmap_Kd tex.png\n");
+  fs::path obj = dir.write("quad.obj", "mtllib box.mtl\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
+                                        "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nusemtl wall\nf 1/1 2/2 3/3 4/4\n");
+  std::string texture = read_bytes(dir.file("tex.png")), mtl = read_bytes(dir.file("box.mtl"));
+  std::string base = "render " + quoted(obj) + " --width 8 --height 8 --spp 1 --env-color 1,1,1 --quiet ";
+  CommandResult over_texture = run_radiant(base + "-o " + quoted(dir.file("tex.png")));
+  CHECK(over_texture.exit_code == 2);
+  CHECK(mentions(over_texture, "a file the scene reads"));
+  CHECK(read_bytes(dir.file("tex.png")) == texture);
+  CommandResult over_mtl = run_radiant(base + "-o " + quoted(dir.file("out.png")) + " --stats " + quoted(dir.file("box.mtl")));
+  CHECK(over_mtl.exit_code == 2);
+  CHECK(read_bytes(dir.file("box.mtl")) == mtl);
+  CHECK_FALSE(fs::exists(dir.file("out.png")));
+  // The same in a batch line: the script stops before its first render.
+  fs::path script = dir.write("views.txt", "scene quad.obj\nrender -o first.png --width 8 --height 8 --spp 1 --quiet\n"
+                                           "render -o tex.png --width 8 --height 8 --spp 1 --quiet\n");
+  CommandResult batch = run_radiant("batch " + quoted(script));
+  CHECK(batch.exit_code == 1);
+  CHECK(mentions(batch, "views.txt:3:"));
+  CHECK_FALSE(fs::exists(dir.file("first.png")));
+  CHECK(read_bytes(dir.file("tex.png")) == texture);
+}
