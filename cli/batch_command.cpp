@@ -14,6 +14,7 @@
 #include <memory>
 #include <sstream>
 
+#include "batch_script.h"
 #include "commands.h"
 #include "load_scene.h"
 #include "option_parsing.h"
@@ -24,12 +25,6 @@ namespace radiant::cli {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct BatchStep {
-  int line = 0;
-  std::string scene;  // non-empty: load this scene
-  RenderJob job;      // otherwise: render this
-};
 
 // Splits a line into words; double quotes group words with spaces.
 std::vector<std::string> split_words(const std::string& line) {
@@ -71,6 +66,8 @@ RenderJob parse_render_line(std::vector<std::string> words, const fs::path& base
   return job;
 }
 
+}  // namespace
+
 std::vector<BatchStep> parse_script(std::istream& in, const std::string& name, const fs::path& base) {
   std::vector<BatchStep> steps;
   std::string line;
@@ -101,8 +98,6 @@ std::vector<BatchStep> parse_script(std::istream& in, const std::string& name, c
   }
   return steps;
 }
-
-}  // namespace
 
 int batch_main(int argc, char** argv) {
   CLI::App app{"Run a command script: load a scene once, render many views (docs/cli.md)."};
