@@ -20,6 +20,7 @@
 #include <optional>
 #include <sstream>
 
+#include "batch_script.h"
 #include "commands.h"
 #include "lights/light_table.h"
 #include "load_scene.h"
@@ -31,12 +32,6 @@ namespace radiant::cli {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct BatchStep {
-  int line = 0;
-  std::string scene;  // non-empty: load this scene
-  RenderJob job;      // otherwise: render this
-};
 
 // Splits a line into words; double quotes group words with spaces.
 std::vector<std::string> split_words(const std::string& line) {
@@ -96,6 +91,8 @@ bool read_script_line(std::istream& in, std::string& line) {
   return true;
 }
 
+}  // namespace
+
 std::vector<BatchStep> parse_script(std::istream& in, const std::string& name, const fs::path& base) {
   std::vector<BatchStep> steps;
   std::string line;
@@ -131,6 +128,8 @@ std::vector<BatchStep> parse_script(std::istream& in, const std::string& name, c
   }
   return steps;
 }
+
+namespace {
 
 // A scene of the script, loaded and prepared while the script is checked, and kept until its
 // views are done.

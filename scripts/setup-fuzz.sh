@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs what the fuzz build needs beyond scripts/setup.sh (only those missing): clang,
 # libFuzzer and the sanitizer runtimes for it, and llvm-symbolizer for readable stack traces.
-# Then configures and builds the two fuzzers in BUILD_DIR (docs/hardening.md).
+# Then configures and builds every fuzzer (fuzz_NAME) in BUILD_DIR (docs/hardening.md).
 # Usage: scripts/setup-fuzz.sh [BUILD_DIR] [extra cmake args...]   (BUILD_DIR defaults to build-fuzz)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -21,6 +21,10 @@ fi
 build_dir=${1:-build-fuzz}
 shift || true
 # The test suite is left out: the sanitizer build (scripts/test.sh with RADIANT_SANITIZE) runs it.
+# -O1 -gline-tables-only (OSS-Fuzz's flags): a quarter less build time than -O2 -g, and stack
+# traces still name file and line.
 CC=clang CXX=clang++ cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -gline-tables-only -DNDEBUG" \
+  "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O1 -gline-tables-only -DNDEBUG" \
   -DRADIANT_FUZZ=ON -DRADIANT_SANITIZE=ON -DRADIANT_TESTS=OFF "$@" >&2
-cmake --build "$build_dir" -j2 --target fuzz_scene_format fuzz_gltf >&2
+cmake --build "$build_dir" -j2 --target fuzzers >&2

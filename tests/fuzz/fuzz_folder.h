@@ -1,6 +1,7 @@
-// The folder a fuzzed scene sits in, holding the files the seed corpora refer to (an OBJ for
-// `@mesh file mesh.obj`, a glTF buffer and a PNG texture) so fuzzing gets past "no such file".
-// The harnesses and the regression tests both use it, so a finding reproduces the same way.
+// The folder a fuzzed input sits in, holding the files the seed corpora refer to (an OBJ for
+// `@mesh file mesh.obj`, a glTF buffer and a PNG texture, and two scenes for batch scripts and
+// environment maps) so fuzzing gets past "no such file". The harnesses and the regression tests
+// both use it, so a finding reproduces the same way.
 #pragma once
 
 #include <unistd.h>
@@ -18,6 +19,8 @@ inline void fill_fuzz_folder(const std::filesystem::path& folder, const std::fil
   std::filesystem::copy_file(source_dir / "tests/fuzz/mesh.obj", folder / "mesh.obj", overwrite);
   std::filesystem::copy_file(source_dir / "assets/models/checker-cube.bin", folder / "checker-cube.bin", overwrite);
   std::filesystem::copy_file(source_dir / "assets/models/checker.png", folder / "checker.png", overwrite);
+  std::filesystem::copy_file(source_dir / "assets/models/checker-cube.gltf", folder / "checker-cube.gltf", overwrite);
+  std::filesystem::copy_file(source_dir / "assets/first-render.scene", folder / "first-render.scene", overwrite);
 }
 
 // A filled per-process temp folder, removed at exit.

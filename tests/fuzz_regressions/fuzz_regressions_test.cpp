@@ -1,5 +1,8 @@
-// Every input the fuzzers once crashed on (tests/fuzz/regressions/, docs/hardening.md) now loads
-// or fails with one LoadError naming the file, in the same folder the harnesses fuzz in.
+// Every input that once crashed a fuzzer (tests/fuzz/regressions/TARGET/, docs/hardening.md) runs
+// again through its target's own entry point, in a folder set up like the harnesses': it is
+// accepted or refused with one line, and a load error names a file in that folder. The seeds run
+// too, so a harness that no longer reaches past its first error is noticed here, not in CI's
+// fuzz phase.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -8,43 +11,55 @@
 #include <vector>
 
 #include "fuzz/fuzz_folder.h"
-#include "load_scene.h"
+#include "fuzz/fuzz_targets.h"
 #include "support/test_support.h"
 
 using namespace radiant;
 
-// The regression inputs, sorted so failures read the same on every run.
-static std::vector<std::filesystem::path> regression_files() {
+namespace {
+
+// The files of `folder` (none if it does not exist), sorted so failures read the same on every run.
+std::vector<std::filesystem::path> files_in(const std::filesystem::path& folder) {
   std::vector<std::filesystem::path> files;
-  for (const auto& entry : std::filesystem::directory_iterator(test::source_path("tests/fuzz/regressions")))
-    if (entry.is_regular_file() && entry.path().filename() != "README.md") files.push_back(entry.path());
+  if (std::filesystem::is_directory(folder))
+    for (const auto& entry : std::filesystem::directory_iterator(folder))
+      if (entry.is_regular_file()) files.push_back(entry.path());
   std::sort(files.begin(), files.end());
   return files;
 }
 
-// "(loaded)" or the LoadError message; anything else thrown escapes and fails the test.
-static std::string load_outcome(const std::filesystem::path& file) {
-  LoadOptions options;
-  options.max_memory_bytes = fuzz::fuzz_memory_limit;
-  try {
-    load_scene(file.string(), options);
-  } catch (const LoadError& error) {
-    return error.what();
-  }
-  return "(loaded)";
+// Runs `input` through `target` in a fresh fuzz folder and checks the outcome's message.
+fuzz::FuzzOutcome replay(const fuzz::FuzzTarget& target, const std::filesystem::path& input) {
+  test::ScratchDir folder("fuzz-replay");
+  fuzz::fill_fuzz_folder(folder.path, RADIANT_SOURCE_DIR);
+  fuzz::FuzzOutcome outcome = target.run(folder.path, test::read_bytes(input));
+  INFO(target.name << " target, " << input.filename().string() << ": " << outcome.message);
+  CHECK(outcome.message.find('\n') == std::string::npos);
+  if (outcome.refusal == fuzz::Refusal::load) CHECK(outcome.message.rfind(folder.path.string() + "/", 0) == 0);
+  return outcome;
 }
 
-TEST_CASE("inputs that once crashed a fuzzer load or fail with a LoadError naming the file") {
-  std::vector<std::filesystem::path> files = regression_files();
-  REQUIRE(!files.empty());
-  for (const std::filesystem::path& original : files) {
-    test::ScratchDir folder("fuzz-regression");
-    fuzz::fill_fuzz_folder(folder.path, RADIANT_SOURCE_DIR);
-    std::filesystem::path file = folder.file(original.filename().string());
-    std::filesystem::copy_file(original, file);
-    std::string outcome = load_outcome(file);
-    INFO(original.filename().string() << ": " << outcome);
-    bool names_the_file = outcome.rfind(file.string() + ":", 0) == 0;
-    CHECK((outcome == "(loaded)" || names_the_file));
+}  // namespace
+
+TEST_CASE("inputs that once crashed a fuzzer are accepted or refused in one line by their target") {
+  std::filesystem::path regressions = test::source_path("tests/fuzz/regressions");
+  size_t replayed = 0;
+  for (const fuzz::FuzzTarget& target : fuzz::fuzz_targets())
+    for (const std::filesystem::path& input : files_in(regressions / target.name)) replay(target, input), ++replayed;
+  CHECK(replayed > 0);
+  // Every folder there is named for a target, so no regression input is silently skipped.
+  for (const auto& entry : std::filesystem::directory_iterator(regressions))
+    if (entry.is_directory())
+      CHECK_MESSAGE(fuzz::find_fuzz_target(entry.path().filename().string()),
+                    entry.path().filename().string() << " names no fuzz target");
+}
+
+TEST_CASE("every fuzz target accepts some of its seeds and survives all of them") {
+  for (const fuzz::FuzzTarget& target : fuzz::fuzz_targets()) {
+    std::vector<std::filesystem::path> seeds = files_in(test::source_path("tests/fuzz/corpus") / target.name);
+    CHECK_MESSAGE(!seeds.empty(), target.name << " has no seeds");
+    size_t accepted = 0;
+    for (const std::filesystem::path& seed : seeds) accepted += replay(target, seed).refusal == fuzz::Refusal::none;
+    CHECK_MESSAGE(accepted > 0, target.name << " accepts none of its seeds");
   }
 }
