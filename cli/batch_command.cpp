@@ -196,6 +196,63 @@ void check_script_outputs(const std::vector<BatchStep>& steps, const std::string
 
 }  // namespace
 
+void run_script(const std::vector<BatchStep>& steps, const std::string& script_name, const BatchSettings& settings) {
+  auto at_line = [&](const BatchStep& step, const std::string& message) {
+    return std::runtime_error(script_name + ":" + std::to_string(step.line) + ": " + message);
+  };
+  std::vector<RenderJob> jobs;
+  for (const BatchStep& step : steps) jobs.push_back(settings.adjust_job ? settings.adjust_job(step.job) : step.job);
+  MemoryBudget budget = settings.max_memory_bytes ? MemoryBudget(*settings.max_memory_bytes, "--max-memory")
+                                                  : MemoryBudget(default_memory_limit(), default_memory_limit_source);
+  // Every scene is loaded and every view resolved before the first render: a bad later line
+  // must stop the script before anything is written. Scenes stay loaded (and charged) until
+  // their views are done.
+  std::vector<LoadedScene> scenes;
+  for (size_t i = 0; i < steps.size(); ++i) {
+    const BatchStep& step = steps[i];
+    try {
+      if (!step.scene.empty()) scenes.push_back(load_batch_scene(step.scene, settings.allow_external_files, budget));
+      else check_view(scenes.back(), jobs[i]);
+    } catch (const std::bad_alloc&) {
+      throw at_line(step, out_of_memory_message(step.scene.empty() ? scenes.back().path : step.scene, "loading", budget));
+    } catch (const std::exception& e) {
+      throw at_line(step, e.what());
+    }
+  }
+
+  size_t scene_index = 0;
+  double load_seconds = 0;
+  for (size_t i = 0; i < steps.size(); ++i) {
+    const BatchStep& step = steps[i];
+    if (!step.scene.empty()) {
+      if (scene_index > 0) scenes[scene_index - 1].release(budget);  // its views are done
+      load_seconds = scenes[scene_index++].load_seconds;
+      continue;
+    }
+    LoadedScene& loaded = scenes[scene_index - 1];
+    try {
+      RenderJob job = jobs[i];
+      job.options.quiet = job.options.quiet || settings.quiet;
+      job.options.progress = isatty(STDERR_FILENO) && !job.options.quiet;
+      // A render line's own cap holds what is loaded and this render.
+      std::optional<MemoryBudget> line_budget;
+      if (job.max_memory_bytes) {
+        line_budget.emplace(*job.max_memory_bytes, "--max-memory on this line");
+        line_budget->charge(budget.used(), loaded.path + ": the loaded scenes and their accelerators");
+      }
+      job.options.memory = line_budget ? &*line_budget : &budget;
+      PhaseTimes times;
+      times.load = load_seconds;
+      load_seconds = 0;  // the load is paid once, by the first view
+      run_render_job(loaded.path, *loaded.prepared, job, times);
+    } catch (const std::bad_alloc&) {
+      throw at_line(step, out_of_memory_message(loaded.path, "rendering", budget));
+    } catch (const std::exception& e) {
+      throw at_line(step, e.what());
+    }
+  }
+}
+
 int batch_main(int argc, char** argv) {
   CLI::App app{"Run a command script: load a scene once, render many views (docs/cli.md)."};
   std::string script_path;
@@ -231,58 +288,11 @@ int batch_main(int argc, char** argv) {
     return exit_failure;
   }
 
-  MemoryBudget budget = max_memory_bytes ? MemoryBudget(*max_memory_bytes, "--max-memory")
-                                         : MemoryBudget(default_memory_limit(), default_memory_limit_source);
-  // Every scene is loaded and every view resolved before the first render: a bad later line
-  // must stop the script before anything is written. Scenes stay loaded (and charged) until
-  // their views are done.
-  std::vector<LoadedScene> scenes;
-  for (const BatchStep& step : steps) {
-    try {
-      if (!step.scene.empty()) scenes.push_back(load_batch_scene(step.scene, allow_external, budget));
-      else check_view(scenes.back(), step.job);
-    } catch (const std::bad_alloc&) {
-      std::cerr << "radiant batch: " << script_path << ":" << step.line << ": "
-                << out_of_memory_message(step.scene.empty() ? scenes.back().path : step.scene, "loading", budget) << "\n";
-      return exit_failure;
-    } catch (const std::exception& e) {
-      std::cerr << "radiant batch: " << script_path << ":" << step.line << ": " << e.what() << "\n";
-      return exit_failure;
-    }
-  }
-
-  size_t scene_index = 0;
-  double load_seconds = 0;
-  for (const BatchStep& step : steps) {
-    if (!step.scene.empty()) {
-      if (scene_index > 0) scenes[scene_index - 1].release(budget);  // its views are done
-      load_seconds = scenes[scene_index++].load_seconds;
-      continue;
-    }
-    LoadedScene& loaded = scenes[scene_index - 1];
-    try {
-      RenderJob job = step.job;
-      job.options.quiet = job.options.quiet || quiet;
-      job.options.progress = isatty(STDERR_FILENO) && !job.options.quiet;
-      // A render line's own cap holds what is loaded and this render.
-      std::optional<MemoryBudget> line_budget;
-      if (job.max_memory_bytes) {
-        line_budget.emplace(*job.max_memory_bytes, "--max-memory on this line");
-        line_budget->charge(budget.used(), loaded.path + ": the loaded scenes and their accelerators");
-      }
-      job.options.memory = line_budget ? &*line_budget : &budget;
-      PhaseTimes times;
-      times.load = load_seconds;
-      load_seconds = 0;  // the load is paid once, by the first view
-      run_render_job(loaded.path, *loaded.prepared, job, times);
-    } catch (const std::bad_alloc&) {
-      std::cerr << "radiant batch: " << script_path << ":" << step.line << ": "
-                << out_of_memory_message(loaded.path, "rendering", budget) << "\n";
-      return exit_failure;
-    } catch (const std::exception& e) {
-      std::cerr << "radiant batch: " << script_path << ":" << step.line << ": " << e.what() << "\n";
-      return exit_failure;
-    }
+  try {
+    run_script(steps, script_path, {quiet, allow_external, max_memory_bytes, {}});
+  } catch (const std::exception& e) {
+    std::cerr << "radiant batch: " << e.what() << "\n";
+    return exit_failure;
   }
   return exit_ok;
 }

@@ -1,8 +1,11 @@
-// The command script of `radiant batch` (cli/batch_command.cpp) as parsed steps, so the batch
-// fuzzer (tests/fuzz/) runs the same parser as the command.
+// The command script of `radiant batch` (cli/batch_command.cpp): parsed steps and the run of
+// them, so that the batch fuzzer (tests/fuzz/) runs the command's own code.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
+#include <functional>
+#include <optional>
 #include <istream>
 #include <string>
 #include <vector>
@@ -20,5 +23,17 @@ struct BatchStep {
 // Every step of the script `in`; relative paths resolve against `base`. Throws
 // std::invalid_argument naming `name:line`.
 std::vector<BatchStep> parse_script(std::istream& in, const std::string& name, const std::filesystem::path& base);
+
+// How a script runs: the command's flags, and (for the fuzzer) a change applied to every view.
+struct BatchSettings {
+  bool quiet = false;
+  bool allow_external_files = false;
+  std::optional<uint64_t> max_memory_bytes;      // --max-memory for the whole script
+  std::function<RenderJob(RenderJob)> adjust_job;  // none: each view as written
+};
+
+// Checks the whole script (every scene loaded, every view resolved, nothing written) and then
+// renders its views. Throws std::runtime_error "SCRIPT:LINE: why" for the first line that fails.
+void run_script(const std::vector<BatchStep>& steps, const std::string& script_name, const BatchSettings& settings);
 
 }  // namespace radiant::cli

@@ -1,6 +1,6 @@
 // The batch target: the bytes as a `radiant batch` script in the fuzz folder, parsed by the
 // command's own parser (CLI11 converts its numbers, under UBSan here), then run as the command
-// runs it, each view shrunk to a tiny render whose outputs stay in the folder.
+// runs it (cli::run_script), each view shrunk to a tiny render whose outputs stay in the folder.
 #include <algorithm>
 #include <fstream>
 #include <memory>
@@ -31,26 +31,6 @@ cli::RenderJob tiny_job(cli::RenderJob job, const fs::path& outputs) {
   return job;
 }
 
-// The steps as batch_main runs them: a scene line loads, a render line renders the last scene.
-void run_steps(const std::vector<cli::BatchStep>& steps, const fs::path& outputs) {
-  std::unique_ptr<SceneDesc> scene;
-  std::unique_ptr<PreparedScene> prepared;
-  std::string scene_path;
-  for (const cli::BatchStep& step : steps) {
-    if (!step.scene.empty()) {
-      LoadOptions options;
-      options.max_memory_bytes = fuzz_memory_limit;
-      prepared.reset();
-      scene = std::make_unique<SceneDesc>(load_scene(step.scene, options));
-      prepared = std::make_unique<PreparedScene>(prepare_scene(*scene));
-      scene_path = step.scene;
-      continue;
-    }
-    cli::PhaseTimes times;
-    cli::run_render_job(scene_path, *prepared, tiny_job(step.job, outputs), times);
-  }
-}
-
 }  // namespace
 
 FuzzOutcome run_batch_target(const fs::path& folder, const std::string& bytes) {
@@ -59,7 +39,11 @@ FuzzOutcome run_batch_target(const fs::path& folder, const std::string& bytes) {
   fs::path outputs = files.output_folder("batch-outputs");
   return outcome_of([&] {
     std::ifstream in(script);
-    run_steps(cli::parse_script(in, script.string(), folder), outputs);
+    cli::BatchSettings settings;
+    settings.quiet = true;
+    settings.max_memory_bytes = fuzz_memory_limit;
+    settings.adjust_job = [&](cli::RenderJob job) { return tiny_job(std::move(job), outputs); };
+    cli::run_script(cli::parse_script(in, script.string(), folder), script.string(), settings);
   });
 }
 
