@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "image/exr_header_check.h"
 #include "image/png_reader.h"
 #include "image/png_writer.h"
 
@@ -63,6 +64,11 @@ const ImageIoModule& image_io_module() {
 
 std::unique_ptr<ImageSource> open_image_file(const std::string& path, std::string& error) {
   if (is_png_file(path)) return open_png(path, error);
+  // OpenEXR allocates what a header declares while opening: check the declarations first.
+  if (std::string problem = exr_header_problem(path); !problem.empty()) {
+    error = "corrupt OpenEXR header: " + problem;
+    return nullptr;
+  }
   return image_io_module().open(path, error);
 }
 

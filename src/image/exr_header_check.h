@@ -1,0 +1,16 @@
+// A sanity walk over an OpenEXR file's headers before OpenEXR opens it. OpenEXR allocates what a
+// header declares while opening the file: a 27-byte file declaring a 2 GiB string attribute cost
+// 2.2 GB and seven seconds, and a data window of 2^31 scanlines an offset table as large. The
+// walk reads only the headers and refuses a file whose attributes or chunk table cannot fit in
+// the bytes it has.
+#pragma once
+
+#include <string>
+
+namespace radiant {
+
+// "" when `path` is not an OpenEXR file or its headers fit in it; otherwise why not, in words
+// ("attribute 'name' declares 2147483647 bytes, the file has 4 left").
+std::string exr_header_problem(const std::string& path);
+
+}  // namespace radiant
