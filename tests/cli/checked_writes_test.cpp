@@ -7,16 +7,12 @@
 
 #include "image/compare_test_images.h"
 #include "support/child_process.h"
+#include "support/test_scenes.h"
 
 using namespace radiant::test;
 namespace fs = std::filesystem;
 
 namespace {
-
-const char* lit_plane_scene =
-    "@camera\nposition 0 4 0\ndirection 0 -1 0\nup 0 0 -1\northographic 2\n"
-    "@light directional\ndirection 0 -1 0\ncolor 1 1 1\n"
-    "@plane\npoint 0 0 0\nnormal 0 1 0\nkd 0.5 0.5 0.5\n";
 
 // An 8x8 PNG of the plane takes about 190 bytes and its --stats JSON about 870.
 constexpr rlim_t room_for_the_image_only = 500;

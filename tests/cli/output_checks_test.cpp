@@ -11,16 +11,12 @@
 
 #include "image/compare_test_images.h"
 #include "support/child_process.h"
+#include "support/test_scenes.h"
 
 using namespace radiant::test;
 namespace fs = std::filesystem;
 
 namespace {
-
-const char* lit_plane_scene =
-    "@camera\nposition 0 4 0\ndirection 0 -1 0\nup 0 0 -1\northographic 2\n"
-    "@light directional\ndirection 0 -1 0\ncolor 1 1 1\n"
-    "@plane\npoint 0 0 0\nnormal 0 1 0\nkd 0.5 0.5 0.5\n";
 
 std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
 

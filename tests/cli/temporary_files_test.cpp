@@ -5,18 +5,10 @@
 #include <filesystem>
 
 #include "support/child_process.h"
+#include "support/test_scenes.h"
 
 using namespace radiant::test;
 namespace fs = std::filesystem;
-
-namespace {
-
-const char* lit_plane_scene =
-    "@camera\nposition 0 4 0\ndirection 0 -1 0\nup 0 0 -1\northographic 2\n"
-    "@light directional\ndirection 0 -1 0\ncolor 1 1 1\n"
-    "@plane\npoint 0 0 0\nnormal 0 1 0\nkd 0.5 0.5 0.5\n";
-
-}  // namespace
 
 TEST_CASE("temporary files: symlinks planted at the temporaries' old predictable names are never followed") {
   ScratchDir dir("tmp-symlink");

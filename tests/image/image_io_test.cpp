@@ -8,6 +8,7 @@
 
 #include "image/image_io.h"
 #include "output/output_set.h"
+#include "support/test_scenes.h"
 #include "support/test_support.h"
 
 using namespace radiant;
@@ -15,11 +16,6 @@ using namespace radiant::test;
 namespace fs = std::filesystem;
 
 namespace {
-
-const char* lit_plane_scene =
-    "@camera\nposition 0 4 0\ndirection 0 -1 0\nup 0 0 -1\northographic 2\n"
-    "@light directional\ndirection 0 -1 0\ncolor 1 1 1\n"
-    "@plane\npoint 0 0 0\nnormal 0 1 0\nkd 0.5 0.5 0.5\n";
 
 // The shared libraries the dynamic linker loaded while radiant rendered `scene` to `output`
 // (glibc's LD_DEBUG=files log, one file per process).

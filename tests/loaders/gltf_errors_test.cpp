@@ -6,6 +6,7 @@
 
 #include "loaders/gltf_builder.h"
 #include "load_scene.h"
+#include "support/load_errors.h"
 #include "support/test_support.h"
 
 using namespace radiant;
@@ -17,16 +18,7 @@ static const char* placed = ",\"nodes\":[{\"mesh\":0}],\"scenes\":[{\"nodes\":[0
 static std::string error_of(const std::string& text, const std::string& name = "file.gltf",
                             const LoadOptions& options = {}) {
   ScratchDir dir("gltf-errors");
-  std::string path = dir.write(name, text).string();
-  try {
-    load_scene(path, options);
-  } catch (const LoadError& error) {
-    std::string message = error.what();
-    std::string folder = dir.path.string() + "/";
-    for (size_t at; (at = message.find(folder)) != std::string::npos;) message.erase(at, folder.size());
-    return message;
-  }
-  return "no error";
+  return load_error(dir, dir.write(name, text), options);
 }
 
 static std::string primitive_doc(GltfBuilder& b, const std::string& primitive) {

@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "load_scene.h"
+#include "support/load_errors.h"
 #include "support/hostile_files.h"
 #include "support/test_support.h"
 
@@ -17,26 +18,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string load_error(const ScratchDir& dir, const std::string& file) {
-  try {
-    load_scene(dir.file(file).string());
-  } catch (const LoadError& error) {
-    std::string message = error.what();
-    std::string folder = dir.path.string() + "/";
-    for (size_t at; (at = message.find(folder)) != std::string::npos;) message.erase(at, folder.size());
-    return message;
-  }
-  return "no error";
-}
-
 void make_fifo(const fs::path& path) { REQUIRE(mkfifo(path.c_str(), 0600) == 0); }
 
 // Renders `scene` in `dir` with a short timeout; returns stderr with the folder removed.
 CommandResult render_with_timeout(const ScratchDir& dir, const std::string& scene) {
   CommandResult r = run_radiant("render '" + dir.file(scene).string() + "' -o '" + dir.file("out.png").string() +
                                 "' --width 8 --height 8 --spp 1 --env-color 1,1,1 -q", "", 20);
-  std::string folder = dir.path.string() + "/";
-  for (size_t at; (at = r.err.find(folder)) != std::string::npos;) r.err.erase(at, folder.size());
+  r.err = dir.without_path(r.err);
   return r;
 }
 
@@ -45,10 +33,10 @@ CommandResult render_with_timeout(const ScratchDir& dir, const std::string& scen
 TEST_CASE("input files: a glTF image that is missing, a folder or a FIFO says so") {
   ScratchDir dir("input-gltf-image");
   dir.write("missing.gltf", gltf_textured_triangle("nothing.png"));
-  CHECK(load_error(dir, "missing.gltf") == "missing.gltf: images[0].uri 'nothing.png': no such file");
+  CHECK(load_error(dir, dir.file("missing.gltf")) == "missing.gltf: images[0].uri 'nothing.png': no such file");
   fs::create_directory(dir.file("folder.png"));
   dir.write("folder.gltf", gltf_textured_triangle("folder.png"));
-  CHECK(load_error(dir, "folder.gltf") == "folder.gltf: images[0].uri 'folder.png': is a directory");
+  CHECK(load_error(dir, dir.file("folder.gltf")) == "folder.gltf: images[0].uri 'folder.png': is a directory");
   make_fifo(dir.file("pipe.png"));
   dir.write("pipe.gltf", gltf_textured_triangle("pipe.png"));
   CommandResult r = render_with_timeout(dir, "pipe.gltf");
@@ -63,7 +51,7 @@ TEST_CASE("input files: a glTF buffer that is a folder or a FIFO says so") {
   std::string with_file = text.substr(0, data) + "buffer.bin" + text.substr(text.find('"', data));
   fs::create_directory(dir.file("buffer.bin"));
   dir.write("folder.gltf", with_file);
-  CHECK(load_error(dir, "folder.gltf") == "folder.gltf: buffers[0].uri 'buffer.bin': is a directory");
+  CHECK(load_error(dir, dir.file("folder.gltf")) == "folder.gltf: buffers[0].uri 'buffer.bin': is a directory");
 }
 
 TEST_CASE("input files: an OBJ mtllib or MTL map that is a FIFO is refused, not waited on") {
@@ -86,12 +74,12 @@ TEST_CASE("input files: an OBJ mtllib or MTL map that is a FIFO is refused, not 
 TEST_CASE("input files: an OBJ mtllib or MTL map that is missing or a folder says so") {
   ScratchDir dir("input-obj-missing");
   dir.write("mtllib.obj", obj_using_mtl("none.mtl"));
-  CHECK(load_error(dir, "mtllib.obj") == "mtllib.obj: mtllib 'none.mtl': no such file");
+  CHECK(load_error(dir, dir.file("mtllib.obj")) == "mtllib.obj: mtllib 'none.mtl': no such file");
   fs::create_directory(dir.file("folder.png"));
   std::string mtl;
   dir.write("map.obj", obj_textured_triangle("map.mtl", "folder.png", mtl));
   dir.write("map.mtl", mtl);
-  CHECK(load_error(dir, "map.obj") == "map.obj: material 't' map_Kd 'folder.png': is a directory");
+  CHECK(load_error(dir, dir.file("map.obj")) == "map.obj: material 't' map_Kd 'folder.png': is a directory");
 }
 
 TEST_CASE("input files: a .scene @mesh that is a FIFO is refused, not waited on") {

@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include "load_scene.h"
+#include "support/load_errors.h"
 #include "support/hostile_files.h"
 #include "support/test_support.h"
 
@@ -15,15 +16,7 @@ namespace {
 std::string load_error(const ScratchDir& dir, const std::string& file, uint64_t max_memory_bytes) {
   LoadOptions options;
   options.max_memory_bytes = max_memory_bytes;
-  try {
-    load_scene(dir.file(file).string(), options);
-  } catch (const LoadError& error) {
-    std::string message = error.what();
-    std::string folder = dir.path.string() + "/";
-    for (size_t at; (at = message.find(folder)) != std::string::npos;) message.erase(at, folder.size());
-    return message;
-  }
-  return "no error";
+  return test::load_error(dir, dir.file(file), options);
 }
 
 bool starts_with(const std::string& text, const std::string& prefix) { return text.rfind(prefix, 0) == 0; }

@@ -4,6 +4,7 @@
 
 #include "load_scene.h"
 #include "obj/obj_loader.h"
+#include "support/load_errors.h"
 #include "support/test_support.h"
 
 using namespace radiant;
@@ -113,15 +114,7 @@ TEST_CASE("obj: append_obj places the meshes and can override their material") {
 static std::string obj_error(const std::string& obj, const std::string& mtl = "") {
   ScratchDir dir("obj-numbers");
   if (!mtl.empty()) dir.write("m.mtl", mtl);
-  try {
-    load_scene(dir.write("a.obj", obj).string());
-  } catch (const LoadError& error) {
-    std::string message = error.what();
-    std::string folder = dir.path.string() + "/";
-    for (size_t at; (at = message.find(folder)) != std::string::npos;) message.erase(at, folder.size());
-    return message;
-  }
-  return "no error";
+  return load_error(dir, dir.write("a.obj", obj));
 }
 
 TEST_CASE("obj: nan, inf and numbers a float cannot hold are refused as file:line:col, not read as 0") {

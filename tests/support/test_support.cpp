@@ -40,6 +40,12 @@ fs::path ScratchDir::write(const std::string& name, const std::string& text) con
   return p;
 }
 
+std::string ScratchDir::without_path(std::string text) const {
+  std::string folder = path.string() + "/";
+  for (size_t at; (at = text.find(folder)) != std::string::npos;) text.erase(at, folder.size());
+  return text;
+}
+
 std::string read_bytes(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
   std::stringstream ss;

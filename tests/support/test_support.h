@@ -16,6 +16,9 @@ struct ScratchDir {
   std::filesystem::path file(const std::string& name) const { return path / name; }
   // Writes `text` to `name` inside the folder and returns the full path.
   std::filesystem::path write(const std::string& name, const std::string& text) const;
+  // `text` with this folder's path (and the separator after it) removed wherever it appears, so
+  // messages can be compared whatever the folder is called.
+  std::string without_path(std::string text) const;
 };
 
 struct CommandResult {
