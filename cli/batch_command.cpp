@@ -6,11 +6,10 @@
 //   render -o views/side.png --look-from 600,273,-400 --look-at 278,273,279
 //
 // The whole script is checked before anything renders; an error names `script:line`. A line may
-// be at most max_script_line characters long. `--max-memory` caps the whole script (the scene
+// be at most max_command_line characters long. `--max-memory` caps the whole script (the scene
 // loaded and each render); on a render line it caps that render instead.
 #include <unistd.h>
 
-#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -26,72 +25,11 @@
 #include "load_scene.h"
 #include "option_parsing.h"
 #include "render_job.h"
+#include "render_line.h"
 
 namespace radiant::cli {
 
-namespace {
-
 namespace fs = std::filesystem;
-
-// Splits a line into words; double quotes group words with spaces.
-std::vector<std::string> split_words(const std::string& line) {
-  std::vector<std::string> words;
-  std::string word;
-  bool quoted = false, any = false;
-  for (char c : line) {
-    if (c == '"') {
-      quoted = !quoted, any = true;
-    } else if (!quoted && (c == ' ' || c == '\t' || c == '\r')) {
-      if (any) words.push_back(word), word.clear(), any = false;
-    } else {
-      word += c, any = true;
-    }
-  }
-  if (quoted) throw std::invalid_argument("unterminated quote");
-  if (any) words.push_back(word);
-  return words;
-}
-
-RenderJob parse_render_line(std::vector<std::string> words, const fs::path& base) {
-  CLI::App app{"render"};
-  RenderFlags flags;
-  RenderJob job;
-  app.add_option("-o,--output", job.output)->required();
-  flags.bind(app, true);
-  app.add_option("--stats", job.stats_path);
-  app.add_option("--aov", flags.aovs);
-  app.add_option("--crop", flags.crop);
-  app.add_option("--noise-threshold", flags.options.noise_threshold)->check(positive_number());
-  std::reverse(words.begin(), words.end());
-  words.pop_back();  // "render"
-  app.parse(words);
-  flags.finish();
-  job.options = flags.options;
-  job.max_memory_bytes = flags.max_memory_bytes;
-  if (fs::path(job.output).is_relative()) job.output = (base / job.output).string();
-  if (!job.stats_path.empty() && fs::path(job.stats_path).is_relative()) job.stats_path = (base / job.stats_path).string();
-  if (!job.options.aovs.empty() && !is_float_format(job.output)) throw std::invalid_argument("--aov needs an EXR output");
-  return job;
-}
-
-// The longest script line read; a longer one is an error rather than a line held in memory whole.
-constexpr size_t max_script_line = 65536;
-
-// Reads one line without its '\n'; false at the end. Throws past max_script_line characters.
-bool read_script_line(std::istream& in, std::string& line) {
-  line.clear();
-  std::streambuf* buffer = in.rdbuf();
-  int c = buffer ? buffer->sbumpc() : std::char_traits<char>::eof();
-  if (c == std::char_traits<char>::eof()) return false;
-  for (; c != std::char_traits<char>::eof() && c != '\n'; c = buffer->sbumpc()) {
-    if (line.size() == max_script_line)
-      throw std::invalid_argument("line is longer than " + std::to_string(max_script_line) + " characters");
-    line += char(c);
-  }
-  return true;
-}
-
-}  // namespace
 
 std::vector<BatchStep> parse_script(std::istream& in, const std::string& name, const fs::path& base) {
   std::vector<BatchStep> steps;
@@ -99,7 +37,7 @@ std::vector<BatchStep> parse_script(std::istream& in, const std::string& name, c
   bool have_scene = false;
   for (int number = 1;; ++number) {
     try {
-      if (!read_script_line(in, line)) break;
+      if (!read_command_line(in, line)) break;
     } catch (const std::invalid_argument& e) {
       throw std::invalid_argument(name + ":" + std::to_string(number) + ": " + e.what());
     }
@@ -255,6 +193,12 @@ void run_script(const std::vector<BatchStep>& steps, const std::string& script_n
 
 int batch_main(int argc, char** argv) {
   CLI::App app{"Run a command script: load a scene once, render many views (docs/cli.md)."};
+  app.footer(
+      "\nA script has 'scene PATH' lines and 'render -o OUT [render flags]' lines; # starts a comment.\n"
+      "\nExamples:\n"
+      "  radiant batch views.txt\n"
+      "  printf 'scene assets/cornell.gltf\\nrender -o a.png --spp 16\\nrender -o b.png --fov 30\\n' | radiant batch -\n"
+      "  radiant batch turntable.txt --max-memory 4 --quiet\n");
   std::string script_path;
   bool quiet = false, allow_external = false;
   app.add_option("SCRIPT", script_path, "Command script, or - for standard input")->required();
@@ -265,7 +209,7 @@ int batch_main(int argc, char** argv) {
                  "Memory cap in GiB for the scenes loaded and every render (default 1/4 of RAM)");
   std::optional<uint64_t> max_memory_bytes;
   try {
-    app.parse(argc, argv);
+    parse_arguments(app, argc, argv);
     if (!max_memory.empty()) max_memory_bytes = parse_memory_limit("--max-memory", max_memory);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);

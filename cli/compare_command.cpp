@@ -11,6 +11,7 @@
 #include "image/compare.h"
 #include "image/false_color.h"
 #include "image/image_writer.h"
+#include "json_output.h"
 #include "output/output_paths.h"
 #include "output/output_set.h"
 #include "option_parsing.h"
@@ -151,70 +152,52 @@ void warn_about_encodings(const CompareReport& report) {
 
 // ------------------------------------------------------------------------------- JSON output
 
-std::string json_number(double value) {
-  if (!std::isfinite(value)) return "null";
-  char text[32];
-  std::snprintf(text, sizeof text, "%.9g", value);
-  return text;
-}
-
-std::string json_string(const std::string& text) {
-  std::string out = "\"";
-  for (char c : text) {
-    if (c == '"' || c == '\\') out += std::string("\\") + c;
-    else if (static_cast<unsigned char>(c) < 0x20) {
-      char escaped[8];
-      std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
-      out += escaped;
-    } else out += c;
-  }
-  return out + "\"";
-}
-
-std::string json_channels(const std::vector<std::string>& names) {
-  std::string out = "[";
-  for (size_t i = 0; i < names.size(); ++i) out += (i ? "," : "") + json_string(names[i]);
-  return out + "]";
-}
-
 void print_json(std::ostream& out, const CompareOptions& options, const CompareReport& report) {
   const CompareMetrics& m = report.metrics;
   const CompareThresholds& t = options.thresholds;
-  out << "{\"a\":" << json_string(report.a.path) << ",\"b\":" << json_string(report.b.path)
-      << ",\"width\":" << report.a.width << ",\"height\":" << report.a.height
-      << ",\"channels\":" << json_channels(report.a.channel_names)
-      << ",\"mode\":\"" << (report.z_test ? "mc" : "threshold") << "\""
-      << ",\"metrics\":{\"rmse\":" << json_number(m.rmse) << ",\"psnr\":" << json_number(m.psnr)
-      << ",\"max_error\":" << json_number(m.max_error) << ",\"max_error_pixel\":[" << m.max_x
-      << "," << m.max_y << "],\"max_error_channel\":"
-      << json_string(report.a.channel_names[m.max_channel])
-      << ",\"mean_error\":" << json_number(m.mean_error)
-      << ",\"mean_relative_error\":" << json_number(m.mean_relative_error)
-      << ",\"fail_pixels\":" << m.fail_pixels << ",\"fail_fraction\":" << json_number(m.fail_fraction)
-      << ",\"warn_pixels\":" << m.warn_pixels << ",\"warn_fraction\":" << json_number(m.warn_fraction)
-      << "},\"thresholds\":{\"fail\":" << json_number(t.fail)
-      << ",\"fail_percent\":" << json_number(t.fail_percent) << ",\"warn\":" << json_number(t.warn)
-      << ",\"warn_percent\":" << json_number(t.warn_percent)
-      << ",\"fail_relative\":" << json_number(t.fail_relative)
-      << ",\"warn_relative\":" << json_number(t.warn_relative) << "},\"z_test\":";
-  if (const auto& z = report.z_test) {
-    out << "{\"alpha\":" << json_number(options.z_test.alpha)
-        << ",\"alpha_corrected\":" << json_number(z->alpha_corrected)
-        << ",\"z_critical\":" << json_number(z->z_critical) << ",\"tests\":" << z->tests
-        << ",\"max_abs_z\":" << json_number(z->max_abs_z)
-        << ",\"min_p_value\":" << json_number(z->min_p_value)
-        << ",\"fail_pixels\":" << z->fail_pixels
-        << ",\"fail_fraction\":" << json_number(z->fail_fraction)
-        << ",\"allowed_fail_percent\":" << json_number(options.z_test.allowed_fail_percent)
-        << ",\"epsilon\":" << json_number(options.z_test.epsilon)
-        << ",\"bias_z\":" << json_number(z->bias_z)
-        << ",\"bias_p_value\":" << json_number(z->bias_p_value)
-        << ",\"bias_test\":" << (options.z_test.bias_test ? "true" : "false") << "}";
-  } else {
-    out << "null";
-  }
-  out << ",\"nonfinite\":" << (report.nonfinite.empty() ? "null" : json_string(report.nonfinite));
-  out << ",\"verdict\":\"" << verdict_name(report.verdict) << "\"}\n";
+  Json j;
+  j["a"] = report.a.path;
+  j["b"] = report.b.path;
+  j["width"] = report.a.width;
+  j["height"] = report.a.height;
+  j["channels"] = report.a.channel_names;
+  j["mode"] = report.z_test ? "mc" : "threshold";
+  j["metrics"] = {{"rmse", json_number(m.rmse)},
+                  {"psnr", json_number(m.psnr)},
+                  {"max_error", json_number(m.max_error)},
+                  {"max_error_pixel", {m.max_x, m.max_y}},
+                  {"max_error_channel", report.a.channel_names[m.max_channel]},
+                  {"mean_error", json_number(m.mean_error)},
+                  {"mean_relative_error", json_number(m.mean_relative_error)},
+                  {"fail_pixels", m.fail_pixels},
+                  {"fail_fraction", json_number(m.fail_fraction)},
+                  {"warn_pixels", m.warn_pixels},
+                  {"warn_fraction", json_number(m.warn_fraction)}};
+  j["thresholds"] = {{"fail", json_number(t.fail)},
+                     {"fail_percent", json_number(t.fail_percent)},
+                     {"warn", json_number(t.warn)},
+                     {"warn_percent", json_number(t.warn_percent)},
+                     {"fail_relative", json_number(t.fail_relative)},
+                     {"warn_relative", json_number(t.warn_relative)}};
+  if (const auto& z = report.z_test)
+    j["z_test"] = {{"alpha", json_number(options.z_test.alpha)},
+                   {"alpha_corrected", json_number(z->alpha_corrected)},
+                   {"z_critical", json_number(z->z_critical)},
+                   {"tests", z->tests},
+                   {"max_abs_z", json_number(z->max_abs_z)},
+                   {"min_p_value", json_number(z->min_p_value)},
+                   {"fail_pixels", z->fail_pixels},
+                   {"fail_fraction", json_number(z->fail_fraction)},
+                   {"allowed_fail_percent", json_number(options.z_test.allowed_fail_percent)},
+                   {"epsilon", json_number(options.z_test.epsilon)},
+                   {"bias_z", json_number(z->bias_z)},
+                   {"bias_p_value", json_number(z->bias_p_value)},
+                   {"bias_test", options.z_test.bias_test}};
+  else
+    j["z_test"] = nullptr;
+  j["nonfinite"] = report.nonfinite.empty() ? Json(nullptr) : Json(report.nonfinite);
+  j["verdict"] = verdict_name(report.verdict);
+  out << json_text(j, true);
 }
 
 // ------------------------------------------------------------------------------ table output
@@ -260,10 +243,16 @@ void print_table(std::ostream& out, const CompareOptions& options, const Compare
 
 int compare_main(int argc, char** argv) {
   CLI::App app{"Compare two images for CI: exit 0 pass (or warn), 1 fail, 2 error", "radiant compare"};
+  app.footer(
+      "\nExamples:\n"
+      "  radiant compare new.png golden.png                       thresholds (docs/compare.md)\n"
+      "  radiant compare new.png golden.png --diff diff.png       and a false-color difference image\n"
+      "  radiant compare new.exr ref.exr --mc --spp 64            z-test (new.exr rendered with --aov variance)\n"
+      "  radiant compare new.exr ref.exr --json > report.json     one JSON object for CI\n");
   CompareOptions options;
   add_options(app, options);
   try {
-    app.parse(argc, argv);
+    parse_arguments(app, argc, argv);
   } catch (const CLI::CallForHelp& help) {
     return app.exit(help);
   } catch (const CLI::ParseError& error) {

@@ -365,7 +365,7 @@ int converge_main(int argc, char** argv) {
   std::vector<RenderMode> modes;
   std::vector<int> ladder;
   try {
-    app.parse(argc, argv);
+    parse_arguments(app, argc, argv);
     modes = parse_modes(flags.render.mode);  // a list here: finish() parses only one mode
     flags.render.mode.clear();
     flags.render.finish();

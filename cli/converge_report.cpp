@@ -2,22 +2,14 @@
 
 #include <cmath>
 #include <cstdio>
-#include <sstream>
 
+#include "json_output.h"
 #include "option_parsing.h"
 #include "render_report.h"
 
 namespace radiant::cli {
 
 namespace {
-
-// JSON has no infinity: a value that never gets there is null.
-std::string json_number(double value) {
-  if (!std::isfinite(value)) return "null";
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.6g", value);
-  return buffer;
-}
 
 std::string csv_number(double value) {
   if (!std::isfinite(value)) return "inf";
@@ -26,30 +18,29 @@ std::string csv_number(double value) {
   return buffer;
 }
 
-std::string step_json(const ConvergeSeries& series, const LadderStep& step) {
-  std::ostringstream j;
-  j << "{\"spp\": " << step.spp << ", \"seconds\": " << json_number(step.seconds) << ", \"rays\": " << step.rays
-    << ", \"rmse\": " << json_number(step.error.rmse) << ", \"relative_mse\": " << json_number(step.error.relative_mse)
-    << ", \"psnr\": " << json_number(step.error.psnr) << ", \"edge_rmse\": " << json_number(step.error.edge_rmse)
-    << ", \"time_multiple\": " << json_number(time_multiple(series, step)) << "}";
-  return j.str();
+Json step_json(const ConvergeSeries& series, const LadderStep& step) {
+  return {{"spp", step.spp},
+          {"seconds", json_number(step.seconds)},
+          {"rays", step.rays},
+          {"rmse", json_number(step.error.rmse)},
+          {"relative_mse", json_number(step.error.relative_mse)},
+          {"psnr", json_number(step.error.psnr)},
+          {"edge_rmse", json_number(step.error.edge_rmse)},
+          {"time_multiple", json_number(time_multiple(series, step))}};
 }
 
-std::string series_json(const ConvergeSeries& s) {
-  std::ostringstream j;
+Json series_json(const ConvergeSeries& s) {
   const LadderStep* first = s.steps.empty() ? nullptr : &s.steps.front();
-  j << "    {\"name\": \"" << json_escape(s.name) << "\", \"mode\": \"" << (first ? mode_name(first->mode) : "")
-    << "\", \"sampler\": \"" << (first ? sampler_name(first->sampler) : "") << "\",\n"
-    << "     \"fit\": {\"scale\": " << json_number(s.error_by_spp.scale)
-    << ", \"exponent\": " << json_number(s.error_by_spp.exponent) << "},\n";
-  if (s.prediction)
-    j << "     \"prediction\": {\"spp\": " << json_number(s.prediction->spp)
-      << ", \"seconds\": " << json_number(s.prediction->seconds) << "},\n";
-  j << "     \"steps\": [\n";
-  for (size_t i = 0; i < s.steps.size(); ++i)
-    j << "       " << step_json(s, s.steps[i]) << (i + 1 < s.steps.size() ? ",\n" : "\n");
-  j << "     ]}";
-  return j.str();
+  Json j;
+  j["name"] = s.name;
+  j["mode"] = first ? mode_name(first->mode) : "";
+  j["sampler"] = first ? sampler_name(first->sampler) : "";
+  j["fit"] = {{"scale", json_number(s.error_by_spp.scale)}, {"exponent", json_number(s.error_by_spp.exponent)}};
+  if (s.prediction) j["prediction"] = {{"spp", json_number(s.prediction->spp)}, {"seconds", json_number(s.prediction->seconds)}};
+  Json steps = Json::array();
+  for (const LadderStep& step : s.steps) steps.push_back(step_json(s, step));
+  j["steps"] = steps;
+  return j;
 }
 
 std::string format(const char* pattern, auto... values) {
@@ -79,25 +70,23 @@ std::string converge_csv(const ConvergeReport& report) {
 }
 
 std::string converge_json(const ConvergeReport& report) {
-  std::ostringstream j;
-  j << "{\n"
-    << "  \"scene\": \"" << json_escape(report.scene) << "\",\n"
-    << "  \"kind\": \"" << report.kind << "\", \"metric\": \"" << report.metric << "\",\n"
-    << "  \"title\": \"" << json_escape(report.title) << "\",\n"
-    << "  \"width\": " << report.width << ", \"height\": " << report.height
-    << ", \"edge_fraction\": " << json_number(report.edge_fraction) << ",\n"
-    << "  \"target_error\": " << (report.target_error > 0 ? json_number(report.target_error) : "null") << ",\n"
-    << "  \"references\": [";
-  for (size_t i = 0; i < report.references.size(); ++i) {
-    const ReferenceNote& r = report.references[i];
-    j << (i ? ", " : "") << "{\"mode\": \"" << r.mode << "\", \"file\": \"" << json_escape(r.file)
-      << "\", \"spp\": " << r.spp << ", \"seconds\": " << json_number(r.seconds) << "}";
-  }
-  j << "],\n  \"series\": [\n";
-  for (size_t i = 0; i < report.series.size(); ++i)
-    j << series_json(report.series[i]) << (i + 1 < report.series.size() ? ",\n" : "\n");
-  j << "  ]\n}\n";
-  return j.str();
+  Json j;
+  j["scene"] = report.scene;
+  j["kind"] = report.kind;
+  j["metric"] = report.metric;
+  j["title"] = report.title;
+  j["width"] = report.width;
+  j["height"] = report.height;
+  j["edge_fraction"] = json_number(report.edge_fraction);
+  j["target_error"] = report.target_error > 0 ? json_number(report.target_error) : Json(nullptr);
+  Json references = Json::array();
+  for (const ReferenceNote& r : report.references)
+    references.push_back({{"mode", r.mode}, {"file", r.file}, {"spp", r.spp}, {"seconds", json_number(r.seconds)}});
+  j["references"] = references;
+  Json series = Json::array();
+  for (const ConvergeSeries& s : report.series) series.push_back(series_json(s));
+  j["series"] = series;
+  return json_text(j);
 }
 
 std::string converge_table(const ConvergeReport& report) {

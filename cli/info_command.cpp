@@ -1,8 +1,8 @@
 // `radiant info SCENE [--json]`: scene statistics, warnings, and the effects it calls for.
 #include <iostream>
-#include <sstream>
 
 #include "commands.h"
+#include "json_output.h"
 #include "load_scene.h"
 #include "option_parsing.h"
 #include "render/render.h"
@@ -14,39 +14,30 @@ namespace radiant::cli {
 
 namespace {
 
-std::string vec3_json(vec3 v) {
-  std::ostringstream o;
-  o << "[" << v.x << ", " << v.y << ", " << v.z << "]";
-  return o.str();
-}
-
 std::string info_json(const std::string& path, const SceneDesc& scene, const SceneSummary& s, const EffectSet& effects,
                       RenderMode auto_mode, const std::string& auto_reason) {
-  std::ostringstream j;
-  j << "{\n  \"scene\": \"" << json_escape(path) << "\",\n  \"name\": \"" << json_escape(scene.name) << "\",\n"
-    << "  \"geometry\": {\"meshes\": " << s.meshes << ", \"instances\": " << s.instances << ", \"triangles\": " << s.triangles
-    << ", \"instanced_triangles\": " << s.instanced_triangles << ", \"spheres\": " << s.spheres << ", \"planes\": " << s.planes
-    << ", \"cylinders\": " << s.cylinders << ", \"tubes\": " << s.tubes << ", \"bytes\": " << s.geometry_bytes << "},\n"
-    << "  \"materials\": " << s.materials << ", \"emissive_materials\": " << s.emissive_materials << ",\n"
-    << "  \"textures\": {\"count\": " << s.textures << ", \"images\": " << s.images << ", \"bytes\": " << s.texture_bytes << "},\n"
-    << "  \"lights\": {\"ambient\": " << s.ambient_lights << ", \"directional\": " << s.directional_lights
-    << ", \"point\": " << s.point_lights << ", \"spot\": " << s.spot_lights << "},\n"
-    << "  \"cameras\": " << s.cameras << ",\n";
-  if (s.has_bounds) j << "  \"bounds\": {\"min\": " << vec3_json(s.bounds_lower) << ", \"max\": " << vec3_json(s.bounds_upper) << "},\n";
-  else j << "  \"bounds\": null,\n";
-  j << "  \"effects\": [";
+  Json j;
+  j["scene"] = path;
+  j["name"] = scene.name;
+  j["geometry"] = {{"meshes", s.meshes},       {"instances", s.instances}, {"triangles", s.triangles},
+                   {"instanced_triangles", s.instanced_triangles},         {"spheres", s.spheres},
+                   {"planes", s.planes},       {"cylinders", s.cylinders}, {"tubes", s.tubes},
+                   {"bytes", s.geometry_bytes}};
+  j["materials"] = s.materials;
+  j["emissive_materials"] = s.emissive_materials;
+  j["textures"] = {{"count", s.textures}, {"images", s.images}, {"bytes", s.texture_bytes}};
+  j["lights"] = {{"ambient", s.ambient_lights}, {"directional", s.directional_lights}, {"point", s.point_lights},
+                 {"spot", s.spot_lights}};
+  j["cameras"] = s.cameras;
+  j["bounds"] = s.has_bounds ? Json{{"min", json_vec3(s.bounds_lower)}, {"max", json_vec3(s.bounds_upper)}} : Json(nullptr);
+  Json list = Json::array();
   size_t reason = 0;
-  bool first = true;
-  for (const EffectInfo& info : effect_catalog()) {
-    if (!effects.has(info.effect)) continue;
-    j << (first ? "" : ",") << "\n    {\"effect\": \"" << info.name << "\", \"reason\": \"" << json_escape(effects.reasons[reason++]) << "\"}";
-    first = false;
-  }
-  j << "\n  ],\n  \"auto_mode\": {\"mode\": \"" << mode_name(auto_mode) << "\", \"reason\": \"" << json_escape(auto_reason) << "\"},\n"
-    << "  \"warnings\": [";
-  for (size_t i = 0; i < s.warnings.size(); ++i) j << (i ? ", " : "") << "\"" << json_escape(s.warnings[i]) << "\"";
-  j << "]\n}\n";
-  return j.str();
+  for (const EffectInfo& info : effect_catalog())
+    if (effects.has(info.effect)) list.push_back({{"effect", info.name}, {"reason", effects.reasons[reason++]}});
+  j["effects"] = list;
+  j["auto_mode"] = {{"mode", mode_name(auto_mode)}, {"reason", auto_reason}};
+  j["warnings"] = s.warnings;
+  return json_text(j);
 }
 
 void print_info(std::ostream& out, const std::string& path, const SceneDesc& scene, const SceneSummary& s,
@@ -75,6 +66,12 @@ void print_info(std::ostream& out, const std::string& path, const SceneDesc& sce
 
 int info_main(int argc, char** argv) {
   CLI::App app{"Scene statistics, warnings, and the effects the scene calls for."};
+  app.footer(
+      "\nExamples:\n"
+      "  radiant info assets/showcase.scene                  counts, bounds, lights, effects, auto mode\n"
+      "  radiant info model.gltf --json | jq .warnings       one JSON object for scripts\n"
+      "  radiant info scene.gltf --scene 1                   another glTF scene of the file\n"
+      "  cat room.scene | radiant info -                     a .scene on standard input\n");
   std::string scene_path;
   bool json = false, allow_external = false;
   int gltf_scene = -1;
@@ -83,7 +80,7 @@ int info_main(int argc, char** argv) {
   app.add_option("--scene", gltf_scene, "glTF scene index");
   app.add_flag("--allow-external-files", allow_external, "Let scene files refer to files outside their folder");
   try {
-    app.parse(argc, argv);
+    parse_arguments(app, argc, argv);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);
     std::cerr << "radiant info: " << e.what() << "\n";

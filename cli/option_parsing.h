@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "memory/memory_budget.h"
 #include "render/render_options.h"
@@ -18,6 +19,14 @@ namespace radiant::cli {
 // these take numbers finite in a float and in [low, high], or (0, high] for the positive one.
 CLI::Validator number_in(double low, double high);
 CLI::Validator positive_number(double high = std::numeric_limits<float>::max());
+
+// Parses a command's arguments (argv[0] is the command) with what CLI11 does not check: a flag
+// given twice (`--spp 4 --spp=8`) is an error naming both, and an unknown flag is an error that
+// suggests the nearest known ones (`--sampels`: did you mean --sampler or --spp?). Throws
+// CLI::ParseError.
+void parse_arguments(CLI::App& app, int argc, char** argv);
+// The same for the words of a script line (the first word is the command).
+void parse_arguments(CLI::App& app, std::vector<std::string> words);
 
 // Each throws CLI::ValidationError naming `flag` on bad input. Numbers must be finite as floats.
 vec3 parse_vec3(const std::string& flag, const std::string& text);

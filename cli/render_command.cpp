@@ -24,7 +24,8 @@ const char* render_examples =
     "  radiant render assets/first-render.scene -o sphere.png --spp 81 --sampler jittered\n"
     "  radiant render model.obj -o model.exr --env-color 1,1,1 --aov albedo,normal,variance\n"
     "  radiant render scene.gltf -o preview.png --effects=-shadows,-indirect --width 320\n"
-    "  cat room.scene | radiant render - -o room.png --mode path --spp 256 --threads 2\n";
+    "  cat room.scene | radiant render - -o room.png --mode path --spp 256 --threads 2\n"
+    "  radiant render scene.gltf -o - --format exr --stats stats.json | oiiotool - -o out.tif\n";
 
 }  // namespace
 
@@ -35,7 +36,8 @@ int render_main(int argc, char** argv) {
   std::string scene_path, output, stats_path;
   RenderFlags flags;
   app.add_option("SCENE", scene_path, "Scene file, or - for a .scene on standard input")->required();
-  app.add_option("-o,--output", output, "Output image (.png is 8-bit sRGB, .exr linear float)")->required();
+  app.add_option("-o,--output", output, "Output image (.png is 8-bit sRGB, .exr linear float; - for standard output)")
+      ->required();
   flags.bind(app, true);
   app.add_option("--time-limit", flags.options.time_limit_seconds, "Stop after this many seconds (loading included)")
       ->check(time_limit_range());
@@ -43,10 +45,12 @@ int render_main(int argc, char** argv) {
       ->check(positive_number());
   app.add_option("--crop", flags.crop, "Render only pixels X0,Y0,X1,Y1 (half-open)");
   app.add_option("--aov", flags.aovs, "Extra EXR channels: albedo,normal,depth,variance,spp");
-  app.add_option("--stats", stats_path, "Write render statistics as JSON");
+  app.add_option("--stats", stats_path, "Write render statistics as JSON (- for standard output)");
+  std::string format;
+  app.add_option("--format", format, "The image format of -o - (png, exr, tif, jpg, ...; default png)");
   app.set_version_flag("--version", "radiant " RADIANT_VERSION);
   try {
-    app.parse(argc, argv);
+    parse_arguments(app, argc, argv);
     flags.finish();
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);
@@ -57,14 +61,22 @@ int render_main(int argc, char** argv) {
   options.progress = isatty(STDERR_FILENO) && !options.quiet;
   if (options.time_limit_seconds > 0)
     options.deadline = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.time_limit_seconds));
-  if (!options.aovs.empty() && !is_float_format(output)) {
-    std::cerr << "radiant render: --aov needs an EXR output (got '" << output << "')\n";
+  RenderJob job{options, output, stats_path};
+  if (!format.empty()) {
+    if (!is_standard_output(output)) {
+      std::cerr << "radiant render: --format is for -o - (the extension of '" << output << "' names its format)\n";
+      return exit_usage;
+    }
+    job.format = format;
+  }
+  if (!options.aovs.empty() && !is_float_format(image_format_name(job))) {
+    std::cerr << "radiant render: --aov needs an EXR output (got '" << image_format_name(job) << "')\n";
     return exit_usage;
   }
 
   MemoryBudget budget = flags.memory_budget();
   options.memory = &budget;
-  RenderJob job{options, output, stats_path};
+  job.options.memory = &budget;
   PhaseTimes times;
   const char* doing = "loading";
   try {

@@ -7,6 +7,7 @@
 #include "interrupts.h"
 #include "option_parsing.h"
 #include "output/output_set.h"
+#include "scene/scene_summary.h"
 
 namespace radiant::cli {
 
@@ -21,8 +22,12 @@ std::string out_of_memory_message(const std::string& scene_path, const std::stri
          "; a --max-memory below what this machine can give refuses such work before it allocates)";
 }
 
+std::string image_format_name(const RenderJob& job) {
+  return is_standard_output(job.output) ? "-." + job.format : job.output;
+}
+
 void check_render_job_outputs(const RenderJob& job) {
-  check_image_output(job.output);
+  check_image_output(image_format_name(job));
   for (const NamedFile& output : render_job_outputs(job)) check_output_place(output.path);
 }
 
@@ -33,14 +38,27 @@ namespace {
 OutputImage output_image(const RenderJob& job, const RenderResult& result) {
   std::vector<std::string> aovs = job.options.aovs;
   bool partial = result.stats.interrupted;
-  if (partial && is_float_format(job.output) && std::find(aovs.begin(), aovs.end(), "spp") == aovs.end())
+  if (partial && is_float_format(image_format_name(job)) && std::find(aovs.begin(), aovs.end(), "spp") == aovs.end())
     aovs.push_back("spp");
   OutputImage image = film_to_image(result.film, aovs);
   if (partial) image.metadata.emplace_back("radiant:partial", std::string("interrupted by ") + signal_name(interrupt_signal()));
   return image;
 }
 
+// The temporary for `target`, or for standard output in `format`.
+TemporaryFile& output_file(OutputSet& outputs, const std::string& target, const std::string& format) {
+  return is_standard_output(target) ? outputs.create_standard_output(format) : outputs.create(target);
+}
+
 }  // namespace
+
+void print_render_notes(const std::string& scene_path, const PreparedScene& prepared, const ResolvedSettings& s) {
+  if (s.camera_framed) std::cerr << "radiant: the scene has no camera; using one that frames the whole scene\n";
+  if (!s.mode_reason.empty()) std::cerr << "radiant: mode " << mode_name(s.mode) << ": " << s.mode_reason << "\n";
+  if (!has_light_sources(*prepared.scene) && is_black(s.environment_color) && s.environment_map.empty())
+    std::cerr << "radiant: warning: " << scene_path
+              << ": no lights, emissive materials or environment: the image is black (light it with --env-color or --env)\n";
+}
 
 void run_render_job(const std::string& scene_path, PreparedScene& prepared, const RenderJob& job, PhaseTimes& times) {
   using Clock = std::chrono::steady_clock;
@@ -50,24 +68,21 @@ void run_render_job(const std::string& scene_path, PreparedScene& prepared, cons
   check_outputs_spare_scene_files(prepared.scene->input_files, render_job_outputs(job));
   prepare_view(prepared, job.options);
   times.build = prepared.build_seconds;
+  if (!job.options.quiet) print_render_notes(scene_path, prepared, resolve_settings(prepared, job.options));
   RenderResult result = render_prepared(prepared, options);
   if (result.stats.interrupted && result.stats.samples == 0) throw_if_interrupted();  // nothing to save
   times.render = result.stats.render_seconds;
-  const ResolvedSettings& s = result.settings;
-  if (!job.options.quiet) {
-    if (s.camera_framed) std::cerr << "radiant: the scene has no camera; using one that frames the whole scene\n";
-    if (!s.mode_reason.empty()) std::cerr << "radiant: mode " << mode_name(s.mode) << ": " << s.mode_reason << "\n";
-  }
   auto write_start = Clock::now();
   OutputSet outputs;
-  write_image(outputs.create(job.output), output_image(job, result));
+  write_image(output_file(outputs, job.output, job.format), output_image(job, result));
   times.write = std::chrono::duration<double>(Clock::now() - write_start).count();
   if (!job.stats_path.empty())
-    outputs.create(job.stats_path).write(render_stats_json(scene_path, job.output, result, times));
+    output_file(outputs, job.stats_path, "json").write(render_stats_json(scene_path, job.output, result, times));
   outputs.commit();
-  if (!job.options.quiet) std::cerr << "radiant: " << render_summary(job.output, result, times) << "\n";
+  std::string written = is_standard_output(job.output) ? "standard output" : job.output;
+  if (!job.options.quiet) std::cerr << "radiant: " << render_summary(written, result, times) << "\n";
   if (int signal = interrupt_signal())
-    std::cerr << "radiant: interrupted by " << signal_name(signal) << "; wrote " << job.output
+    std::cerr << "radiant: interrupted by " << signal_name(signal) << "; wrote " << written
               << (result.stats.interrupted ? " with what was rendered, marked partial\n" : "\n");
   throw_if_interrupted();
 }

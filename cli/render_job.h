@@ -14,10 +14,14 @@ namespace radiant::cli {
 
 struct RenderJob {
   RenderOptions options;
-  std::string output;
-  std::string stats_path;
+  std::string output;      // "-": standard output, in `format`
+  std::string stats_path;  // "-": standard output
+  std::string format = "png";  // the extension that names the format of `-o -`
   std::optional<uint64_t> max_memory_bytes;  // a batch render line's own --max-memory
 };
+
+// A name whose extension names the image format: the output, or for `-o -` "-.FORMAT".
+std::string image_format_name(const RenderJob& job);
 
 // The job's outputs, named by their flags.
 std::vector<NamedFile> render_job_outputs(const RenderJob& job);
@@ -30,6 +34,10 @@ std::string out_of_memory_message(const std::string& scene_path, const std::stri
 // error, when not; it also loads the image writer) and every output can be created where it
 // goes (std::runtime_error).
 void check_render_job_outputs(const RenderJob& job);
+
+// What a render prints before it starts, unless quiet: a framing camera, auto mode's choice
+// and reason, and a scene that nothing lights (no light, emission or environment, flags included).
+void print_render_notes(const std::string& scene_path, const PreparedScene& prepared, const ResolvedSettings& settings);
 
 // Renders, writes the image and the stats and commits them together (neither replaces an
 // existing file unless both were written), prints notes and the summary unless quiet. `times`

@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <sstream>
 
+#include "json_output.h"
 #include "option_parsing.h"
 
 namespace radiant::cli {
@@ -14,27 +14,6 @@ size_t peak_memory_bytes() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   return size_t(usage.ru_maxrss) * 1024;
-}
-
-std::string json_escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\t': out += "\\t"; break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20) {
-          char buffer[8];
-          std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
-          out += buffer;
-        } else {
-          out += c;
-        }
-    }
-  }
-  return out;
 }
 
 std::string render_summary(const std::string& output, const RenderResult& r, const PhaseTimes& times) {
@@ -66,33 +45,37 @@ std::string render_stats_json(const std::string& scene_path, const std::string& 
   const ResolvedSettings& s = r.settings;
   const RayCounts& rays = r.stats.rays;
   double rays_per_second = r.stats.render_seconds > 0 ? double(rays.total()) / r.stats.render_seconds : 0;
-  std::ostringstream j;
-  j.precision(6);
-  j << "{\n"
-    << "  \"scene\": \"" << json_escape(scene_path) << "\",\n"
-    << "  \"output\": \"" << json_escape(output) << "\",\n"
-    << "  \"width\": " << r.film.width << ", \"height\": " << r.film.height << ",\n"
-    << "  \"mode\": \"" << mode_name(s.mode) << "\", \"mode_reason\": \"" << json_escape(s.mode_reason) << "\",\n"
-    << "  \"sampler\": \"" << sampler_name(s.sampler) << "\", \"spp\": " << s.spp << ", \"max_depth\": " << s.max_depth << ",\n"
-    << "  \"effects\": \"" << effect_names(s.effects) << "\",\n"
-    << "  \"compiled_variant\": \"" << effect_names(s.compiled_variant) << "\",\n"
-    << "  \"seconds\": {\"load\": " << t.load << ", \"build\": " << t.build << ", \"render\": " << t.render
-    << ", \"write\": " << t.write << ", \"total\": " << (t.load + t.build + t.render + t.write) << "},\n"
-    << "  \"rays\": {\"camera\": " << rays.camera << ", \"shadow\": " << rays.shadow << ", \"reflection\": " << rays.reflection
-    << ", \"refraction\": " << rays.refraction << ", \"indirect\": " << rays.indirect << ", \"total\": " << rays.total() << "},\n"
-    << "  \"rays_per_second\": " << rays_per_second << ",\n"
-    << "  \"samples\": " << r.stats.samples << ", \"passes\": " << r.stats.passes << ",\n"
-    << "  \"pixel_samples\": {\"min\": " << r.stats.min_pixel_samples << ", \"median\": " << r.stats.median_pixel_samples
-    << ", \"p90\": " << r.stats.p90_pixel_samples << ", \"max\": " << r.stats.max_pixel_samples << ", \"mean\": "
-    << double(r.stats.samples) / double(std::max<size_t>(1, r.film.pixels.size())) << "},\n"
-    << "  \"estimated_relative_error\": " << r.stats.estimated_relative_error << ",\n"
-    << "  \"stopped_by_time_limit\": " << (r.stats.stopped_by_time_limit ? "true" : "false") << ",\n"
-    << "  \"interrupted\": " << (r.stats.interrupted ? "true" : "false") << ",\n"
-    << "  \"nonfinite_samples_dropped\": " << rays.nonfinite_samples << ",\n"
-    << "  \"untraceable_rays\": " << r.stats.untraceable_rays << ",\n"
-    << "  \"peak_memory_bytes\": " << peak_memory_bytes() << "\n"
-    << "}\n";
-  return j.str();
+  Json j;
+  j["scene"] = scene_path;
+  j["output"] = output;
+  j["width"] = r.film.width;
+  j["height"] = r.film.height;
+  j["mode"] = mode_name(s.mode);
+  j["mode_reason"] = s.mode_reason;
+  j["sampler"] = sampler_name(s.sampler);
+  j["spp"] = s.spp;
+  j["max_depth"] = s.max_depth;
+  j["effects"] = effect_names(s.effects);
+  j["compiled_variant"] = effect_names(s.compiled_variant);
+  j["seconds"] = {{"load", t.load}, {"build", t.build}, {"render", t.render}, {"write", t.write},
+                  {"total", t.load + t.build + t.render + t.write}};
+  j["rays"] = {{"camera", rays.camera},         {"shadow", rays.shadow},         {"reflection", rays.reflection},
+               {"refraction", rays.refraction}, {"indirect", rays.indirect}, {"total", rays.total()}};
+  j["rays_per_second"] = rays_per_second;
+  j["samples"] = r.stats.samples;
+  j["passes"] = r.stats.passes;
+  j["pixel_samples"] = {{"min", r.stats.min_pixel_samples},
+                        {"median", r.stats.median_pixel_samples},
+                        {"p90", r.stats.p90_pixel_samples},
+                        {"max", r.stats.max_pixel_samples},
+                        {"mean", double(r.stats.samples) / double(std::max<size_t>(1, r.film.pixels.size()))}};
+  j["estimated_relative_error"] = json_number(r.stats.estimated_relative_error);
+  j["stopped_by_time_limit"] = r.stats.stopped_by_time_limit;
+  j["interrupted"] = r.stats.interrupted;
+  j["nonfinite_samples_dropped"] = rays.nonfinite_samples;
+  j["untraceable_rays"] = r.stats.untraceable_rays;
+  j["peak_memory_bytes"] = peak_memory_bytes();
+  return json_text(j);
 }
 
 }  // namespace radiant::cli

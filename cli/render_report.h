@@ -18,7 +18,5 @@ std::string render_stats_json(const std::string& scene_path, const std::string& 
                               const PhaseTimes& times);
 // Peak resident memory of this process in bytes.
 size_t peak_memory_bytes();
-// Escapes a string for a JSON string literal.
-std::string json_escape(const std::string& text);
 
 }  // namespace radiant::cli

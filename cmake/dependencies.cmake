@@ -6,6 +6,7 @@ find_package(TinyGLTF REQUIRED)
 find_package(tinyobjloader REQUIRED)
 find_package(TBB REQUIRED)
 find_package(CLI11 REQUIRED)
+find_package(nlohmann_json 3 REQUIRED)
 find_package(doctest REQUIRED)
 
 # Debian's OpenImageIO config lists /usr/include/opencv4, which exists only with libopencv-dev;

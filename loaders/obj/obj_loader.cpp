@@ -270,11 +270,7 @@ void append_obj(SceneDesc& scene, const std::string& path, const mat4& transform
 SceneDesc load_obj(const std::string& path, const LoadOptions& options) {
   SceneDesc scene;
   scene.name = std::filesystem::path(path).stem().string();
-  append_obj(scene, path, mat4{}, options);
-  bool emissive = false;
-  for (const MaterialDesc& material : scene.materials) emissive = emissive || !is_black(material.emission);
-  if (scene.lights.empty() && !emissive)
-    scene.warnings.push_back(path + ": no lights or emissive materials: the image will be black unless --env-color is given");
+  append_obj(scene, path, mat4{}, options);  // a scene without light is reported by render and info, flags known
   return scene;
 }
 

@@ -1,5 +1,6 @@
 #include "scene_format/scene_format_values.h"
 
+#include <cctype>
 #include <charconv>
 #include <cmath>
 
@@ -173,9 +174,12 @@ std::string read_word(const BuildContext& context, const Attribute& attribute) {
 
 bool read_boolean(const BuildContext& context, const Attribute& attribute) {
   std::string word = read_word(context, attribute);
-  if (word != "true" && word != "false")
+  // Any case, as the Scala path tracer's reader took them (`s True`, `s FALSE`).
+  std::string lower = word;
+  for (char& c : lower) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (lower != "true" && lower != "false")
     fail(context, attribute.arguments[0], "expected true or false, got " + quote(word));
-  return word == "true";
+  return lower == "true";
 }
 
 int read_choice(const BuildContext& context, const Attribute& attribute,

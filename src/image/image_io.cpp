@@ -21,15 +21,22 @@ namespace {
 
 constexpr const char* module_file = "libradiant_oiio.so";
 
-// Beside the running executable first, then where the build put it (tests and benchmarks run
-// from their own folders).
+// Beside the running executable first, then where an installation puts it relative to the
+// executable (bin/../lib/.../radiant), then, for a program inside the build tree (tests and
+// benchmarks run from their own folders), where the build put it. An installed radiant never
+// loads a module from a build tree.
 std::vector<fs::path> module_candidates() {
   std::vector<fs::path> candidates;
   std::error_code error;
   fs::path executable = fs::read_symlink("/proc/self/exe", error);
-  if (!error) candidates.push_back(executable.parent_path() / module_file);
-  fs::path built = fs::path(RADIANT_MODULE_DIR) / module_file;
-  if (candidates.empty() || candidates.front() != built) candidates.push_back(built);
+  fs::path build = fs::path(RADIANT_MODULE_DIR);
+  if (!error) {
+    candidates.push_back(executable.parent_path() / module_file);
+    candidates.push_back(executable.parent_path().parent_path() / RADIANT_INSTALLED_MODULE_DIR / module_file);
+  }
+  auto relative = executable.lexically_relative(build);
+  bool in_build_tree = error || (!relative.empty() && *relative.begin() != "..");
+  if (in_build_tree && (candidates.empty() || candidates.front() != build / module_file)) candidates.push_back(build / module_file);
   return candidates;
 }
 

@@ -41,6 +41,10 @@ void check_writable_folder(const std::string& target, const std::string& folder)
 }  // namespace
 
 void check_output_place(const std::string& target) {
+  if (is_standard_output(target)) {
+    if (fcntl(STDOUT_FILENO, F_GETFL) == -1) fail("standard output", "it is closed");
+    return;
+  }
   struct stat status;
   if (stat(target.c_str(), &status) == 0 && S_ISDIR(status.st_mode)) fail(target, "it is a folder");
   check_writable_folder(target, folder_of(target));
@@ -55,6 +59,10 @@ void check_output_folder(const std::string& folder) {
 
 DistinctFiles::Key DistinctFiles::key_of(const std::string& path) {
   Key key;
+  if (is_standard_output(path)) {
+    key.normal_path = "<standard output>";  // no path names it
+    return key;
+  }
   struct stat status;
   if (stat(path.c_str(), &status) == 0) {
     key.exists = true;
@@ -68,7 +76,9 @@ DistinctFiles::Key DistinctFiles::key_of(const std::string& path) {
   return key;
 }
 
-void DistinctFiles::add_input(const NamedFile& file) { files_.emplace(key_of(file.path), file); }
+void DistinctFiles::add_input(const NamedFile& file) {
+  if (file.path != "-") files_.emplace(key_of(file.path), file);  // "-" is standard input
+}
 
 void DistinctFiles::add_output(const NamedFile& file) {
   auto [at, added] = files_.emplace(key_of(file.path), file);

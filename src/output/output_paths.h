@@ -9,9 +9,12 @@
 
 namespace radiant {
 
+// `-o -` and `--stats -`: the output goes to standard output (a pipe) instead of a file.
+inline bool is_standard_output(const std::string& target) { return target == "-"; }
+
 // Throws std::runtime_error "cannot write 'TARGET': WHY" when no file can be created at
 // `target`: its folder is missing, is not a folder or is not writable by this process, or
-// `target` itself is a folder.
+// `target` itself is a folder. Standard output ("-") must be open.
 void check_output_place(const std::string& target);
 
 // The same for a folder that is created when missing (converge --out): `folder`, or else its
@@ -30,7 +33,8 @@ struct NamedFile {
 // paths are equal once the symlinks of their existing part are resolved.
 class DistinctFiles {
  public:
-  // Inputs may repeat (one scene rendered twice); add every input before the outputs.
+  // Inputs may repeat (one scene rendered twice); add every input before the outputs. Standard
+  // input ("-") is no file; standard output is one, which two outputs cannot share.
   void add_input(const NamedFile& file);
   // Throws std::invalid_argument (a usage error) when `file` is the same file as one added
   // before: "--stats 'a.png' is the same file as -o 'a.png'".

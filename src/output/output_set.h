@@ -14,6 +14,9 @@ class OutputSet {
  public:
   // A new temporary for `target` (TemporaryFile's errors).
   TemporaryFile& create(const std::string& target);
+  // A temporary whose bytes go to standard output when committed: it lives in the temporary
+  // folder ($TMPDIR, else /tmp) under a name with `extension`, which names the format.
+  TemporaryFile& create_standard_output(const std::string& extension);
   // Finishes every file, then renames each onto its target. Throws std::runtime_error naming the
   // file that failed; when a finish fails, no target has been touched. (The renames themselves
   // are separate steps: one failing after another succeeded is not undone, but a rename within
@@ -24,6 +27,7 @@ class OutputSet {
 
  private:
   std::vector<std::unique_ptr<TemporaryFile>> files_;
+  std::vector<const TemporaryFile*> to_standard_output_;  // among files_: copied, never renamed
 };
 
 }  // namespace radiant

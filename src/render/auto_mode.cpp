@@ -43,7 +43,14 @@ RenderMode choose_auto_mode(const SceneDesc& scene, std::string& reason) {
     reason = "light can bounce between surfaces (indirect light needs the path tracer)";
     return RenderMode::path;
   }
-  reason = "one convex object lit only by point, spot or directional lights: no indirect light exists";
+  // One convex object: it cannot light itself, so what it shows is its own emission and the
+  // direct light of the delta lights, which the Whitted model computes exactly.
+  if (!scene.lights.empty())
+    reason = "one convex object lit only by point, spot or directional lights: no indirect light exists";
+  else if (is_emissive(scene, scene.shapes[0].material))
+    reason = "one convex emissive object and no other light: it shows only its own emission";
+  else
+    reason = "nothing emits light: the image is black in every mode";
   return RenderMode::whitted;
 }
 

@@ -18,6 +18,7 @@
 #include "integrators/path.h"
 #include "integrators/whitted.h"
 #include "render/camera.h"
+#include "render/progress_meter.h"
 
 namespace radiant {
 
@@ -99,6 +100,7 @@ struct PassRunner {
   Film& film;
   tbb::enumerable_thread_specific<RayCounts>& counts;
   const StopCheck& stop;
+  ProgressMeter& progress;
 
   void render_pixel(int x, int y, uint32_t first, uint32_t end) const {
     FilmPixel& p = film.at(x - s.window.x0, y - s.window.y0);
@@ -128,23 +130,16 @@ struct PassRunner {
   void run(uint32_t first, uint32_t end, const std::vector<uint8_t>& active) const {
     const PixelWindow& w = s.window;
     tbb::parallel_for(tbb::blocked_range2d<int>(w.y0, w.y1, 8, w.x0, w.x1, 8), [&](const tbb::blocked_range2d<int>& r) {
+      uint64_t rendered = 0;
       for (int y = r.rows().begin(); y < r.rows().end(); ++y)
         for (int x = r.cols().begin(); x < r.cols().end(); ++x) {
           if (stop()) return;
-          if (active.empty() || active[size_t(y - w.y0) * film.width + (x - w.x0)]) render_pixel(x, y, first, end);
+          if (active.empty() || active[size_t(y - w.y0) * film.width + (x - w.x0)]) render_pixel(x, y, first, end), ++rendered;
         }
+      progress.add(rendered * (end - first));
     });
   }
 };
-
-// Printed at the start too (without an estimate yet), so that the terminal shows the load is over.
-void print_progress(double fraction, double elapsed) {
-  if (fraction > 0)
-    std::fprintf(stderr, "\rrendering %3d%%  ETA %5.1fs ", int(fraction * 100), elapsed * (1 - fraction) / fraction);
-  else
-    std::fprintf(stderr, "\rrendering   0%%%14s", "");
-  std::fflush(stderr);
-}
 
 // Builds (or rebuilds) the accelerator, charging its estimated size first.
 void build_accel(PreparedScene& prepared) {
@@ -219,17 +214,20 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
     stop.deadline = options.deadline.value_or(
         start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limit)));
   }
+  uint64_t pixels = uint64_t(width) * uint64_t(height);
+  ProgressMeter progress(options.progress && !options.quiet, pixels * uint64_t(s.spp), stop.deadline);
   PassRunner runner{ctx, s, select_integrator(s), make_camera_frame(s.camera, s.width, s.height),
-                    !options.aovs.empty(), options.seed, result.film, counts, stop};
+                    !options.aovs.empty(), options.seed, result.film, counts, stop, progress};
 
   // More threads than TBB's limit (the cores) are not started anyway, and asking prints a warning.
   int cores = tbb::this_task_arena::max_concurrency();
   tbb::task_arena arena(options.threads > 0 ? std::min(options.threads, cores) : cores);
   std::vector<uint8_t> active;
   uint32_t done = 0, total = uint32_t(s.spp);
-  // One pass for a plain render; growing passes when a budget or a noise target may stop early.
-  uint32_t pass = (adaptive || timed) ? std::min<uint32_t>(total, adaptive ? 8u : 1u) : total;
-  if (options.progress && !options.quiet) print_progress(0, 0);
+  // One pass for a plain render; growing passes when a budget or a noise target may stop early,
+  // or when someone watches the image sharpen.
+  bool progressive = bool(options.on_pass);
+  uint32_t pass = (adaptive || timed || progressive) ? std::min<uint32_t>(total, adaptive ? 8u : 1u) : total;
   while (done < total) {
     uint32_t end = std::min(total, done + pass);
     arena.execute([&] { runner.run(done, end, active); });
@@ -240,13 +238,14 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
       result.stats.stopped_by_time_limit = !result.stats.interrupted;
       break;
     }
-    if (options.progress && !options.quiet) print_progress(double(done) / total, seconds_since(start));
+    if (progressive) options.on_pass(result.film, done);
     if (adaptive) {
       active.assign(result.film.pixels.size(), 0);
       size_t remaining = 0;
       for (size_t i = 0; i < result.film.pixels.size(); ++i)
         remaining += active[i] = pixel_relative_error(result.film.pixels[i]) > options.noise_threshold;
       if (remaining == 0) break;
+      progress.set_remaining(uint64_t(remaining) * (total - done));
     }
     if (timed) {
       // Passes that fit in the time left keep every pixel at the same number of samples.
@@ -263,9 +262,10 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
       pass = next;
     } else if (adaptive) {
       pass = std::min<uint32_t>(pass * 2, 64);
+    } else if (progressive) {
+      pass = done;  // doubles the samples each pass
     }
   }
-  if (options.progress && !options.quiet) std::fprintf(stderr, "\r%40s\r", "");
   result.stats.render_seconds = seconds_since(start);
   result.stats.build_seconds = prepared.build_seconds;
   for (const RayCounts& c : counts) result.stats.rays += c;

@@ -5,6 +5,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,6 +15,8 @@
 #include "scene/scene_desc.h"
 
 namespace radiant {
+
+struct Film;
 
 struct CameraOverride {
   std::optional<vec3> look_from, look_at, up;
@@ -42,6 +45,11 @@ struct RenderOptions {
   std::optional<std::chrono::steady_clock::time_point> deadline;
   // When set and nonzero, the render stops at the next pixel (the CLI's SIGINT/SIGTERM handler).
   const std::atomic<int>* stop_request = nullptr;
+  // Progressive rendering (`radiant session`): when set, passes grow from one sample per pixel
+  // (1, 2, 4, ...) and this is called after each complete pass with the film and the samples
+  // per pixel it holds. Each pixel still adds its samples in index order, so the final film is
+  // the one-pass render's, bit for bit.
+  std::function<void(const Film& film, uint32_t samples)> on_pass;
   float noise_threshold = 0;      // 0 = off
   float contribution_cutoff = 0.001f;  // Whitted: stop recursing below this weight
   bool quiet = false;

@@ -43,6 +43,13 @@ bool light_is_enclosed(const SceneAccel& accel, vec3 position) {
 
 }  // namespace
 
+bool has_light_sources(const SceneDesc& scene) {
+  if (!scene.lights.empty() || !is_black(scene.environment.color) || !scene.environment.map_path.empty()) return true;
+  for (const MaterialDesc& m : scene.materials)
+    if (!is_black(m.emission)) return true;
+  return false;
+}
+
 SceneSummary summarize_scene(const SceneDesc& scene) {
   SceneSummary s;
   count_geometry(scene, s);
@@ -64,8 +71,7 @@ SceneSummary summarize_scene(const SceneDesc& scene) {
   s.warnings = scene.warnings;
   if (scene.degenerate_triangles_dropped > 0)
     s.warnings.push_back(std::to_string(scene.degenerate_triangles_dropped) + " degenerate triangle(s) dropped");
-  bool environment = !is_black(scene.environment.color) || !scene.environment.map_path.empty();
-  if (scene.lights.empty() && s.emissive_materials == 0 && !environment)
+  if (!has_light_sources(scene))
     s.warnings.push_back("no lights, emissive materials or environment: the image will be black unless --env-color or --env is given");
   if (!scene.instances.empty() || !scene.shapes.empty()) {
     auto accel = build_scene_accel(scene);

@@ -19,6 +19,9 @@ struct SceneSummary {
   std::vector<std::string> warnings;  // the loader's, plus the analysis below
 };
 
+// True when something in the file emits light: a light, an emissive material or an environment.
+bool has_light_sources(const SceneDesc& scene);
+
 // Counts and bounds, plus warnings: no light at all, lights enclosed by geometry (checked by
 // casting rays from each point or spot light), and the loader's own warnings.
 SceneSummary summarize_scene(const SceneDesc& scene);

@@ -1,5 +1,6 @@
 // `radiant info` and `radiant batch` as scripts use them.
 #include <doctest/doctest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <filesystem>
@@ -16,10 +17,12 @@ std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
 TEST_CASE("info: the showcase reports its shapes, lights by kind, effects with reasons and the auto mode") {
   CommandResult r = run_radiant("info " + quoted(source_path("assets/showcase.scene")) + " --json");
   REQUIRE(r.exit_code == 0);
-  CHECK(r.out.find("\"point\": 1, \"spot\": 1") != std::string::npos);
-  CHECK(r.out.find("{\"effect\": \"transparent-shadows\", \"reason\": \"2 transmissive material(s) let light through\"}") !=
-        std::string::npos);
-  CHECK(r.out.find("\"auto_mode\": {\"mode\": \"whitted\"") != std::string::npos);
+  nlohmann::json info = nlohmann::json::parse(r.out);
+  CHECK(info["lights"]["point"] == 1);
+  CHECK(info["lights"]["spot"] == 1);
+  nlohmann::json shadows = {{"effect", "transparent-shadows"}, {"reason", "2 transmissive material(s) let light through"}};
+  CHECK(std::find(info["effects"].begin(), info["effects"].end(), shadows) != info["effects"].end());
+  CHECK(info["auto_mode"]["mode"] == "whitted");
 }
 
 TEST_CASE("info: warns about a scene without light and about a light enclosed in geometry") {
@@ -105,4 +108,23 @@ TEST_CASE("batch: an image size out of range on a later line writes nothing") {
   CHECK(r.exit_code == 1);
   CHECK(r.err == "radiant batch: " + script.string() + ":3: image size 80000x20000 is out of range (1 to 65536)\n");
   CHECK_FALSE(fs::exists(dir.file("a.png")));
+}
+
+TEST_CASE("json: documents stay valid whatever the names hold: quotes, control characters, invalid UTF-8") {
+  ScratchDir dir("json-names");
+  std::string name = std::string("we\"ird\\ \x01\t") + "\xff\xfe" + ".scene";
+  fs::path scene = dir.write(name, "scene a \"quoted\" name\n@camera\nposition 0 0 5\ndirection 0 0 -1\nup 0 1 0\n"
+                                   "@light point\ncolor 255 255 255\nposition 0 0 5\n@sphere\ncenter 0 0 0\nradius 1\n");
+  CommandResult info = run_radiant("info --json " + quoted(scene));
+  REQUIRE(info.exit_code == 0);
+  nlohmann::json document = nlohmann::json::parse(info.out);  // throws unless valid
+  std::string reported = document["scene"];
+  CHECK(reported.find("we\"ird\\ \x01\t") != std::string::npos);
+  CHECK(reported.find("\xef\xbf\xbd") != std::string::npos);  // U+FFFD for the bytes that are not UTF-8
+  CHECK(document["name"] == "a \"quoted\" name");
+  fs::path stats = dir.file("stats.json");
+  CommandResult render = run_radiant("render " + quoted(scene) + " -o " + quoted(dir.file("o.png")) +
+                                     " --width 8 --height 8 --spp 1 --quiet --stats " + quoted(stats));
+  REQUIRE(render.exit_code == 0);
+  CHECK(nlohmann::json::parse(read_bytes(stats))["scene"].get<std::string>().find("we\"ird") != std::string::npos);
 }

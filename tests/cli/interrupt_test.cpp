@@ -12,6 +12,7 @@
 
 #include "image/image_io.h"
 #include "support/child_process.h"
+#include "support/test_scenes.h"
 
 using namespace radiant;
 using namespace radiant::test;
@@ -19,14 +20,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Inside a closed white sphere every path bounces --max-depth times: at depth 1000 one sample
-// of every pixel of 32x32 takes about half a second on one thread, so the whole render takes
-// minutes and a signal always finds it rendering.
-const char* closed_sphere_scene =
-    "@camera\nposition 0 0 0\ndirection 0 0 -1\nup 0 1 0\n"
-    "@light point\ncolor 255 255 255\nposition 0 0 0\n"
-    "@sphere\ncenter 0 0 0\nradius 10\nkd 1\n";
-
+// closed_sphere_scene at 256 spp takes minutes: a signal always finds it rendering.
 const std::vector<std::string> slow_render = {"--width", "32", "--height", "32", "--mode", "path", "--max-depth",
                                               "1000", "--spp", "256", "--threads", "1"};
 

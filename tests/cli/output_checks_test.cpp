@@ -228,3 +228,42 @@ TEST_CASE("same file: an output over a file the scene reads (texture, MTL, glTF 
   CHECK_FALSE(fs::exists(dir.file("first.png")));
   CHECK(read_bytes(dir.file("tex.png")) == texture);
 }
+
+TEST_CASE("outputs: -o - writes the image to standard output in --format, --stats - the JSON") {
+  ScratchDir dir("stdout-outputs");
+  fs::path scene = dir.write("s.scene", lit_plane_scene);
+  std::string render = "render " + quoted(scene) + " --width 8 --height 8 --spp 1 --quiet";
+  CommandResult file = run_radiant(render + " -o " + quoted(dir.file("o.png")));
+  REQUIRE(file.exit_code == 0);
+  CommandResult piped = run_radiant(render + " -o -");
+  REQUIRE(piped.exit_code == 0);
+  CHECK(piped.out == read_bytes(dir.file("o.png")));  // PNG unless --format says otherwise
+  CommandResult exr = run_radiant(render + " -o - --format exr");
+  REQUIRE(exr.exit_code == 0);
+  CHECK(exr.out.substr(0, 4) == std::string("\x76\x2f\x31\x01", 4));  // OpenEXR's magic number
+  CommandResult stats = run_radiant(render + " -o " + quoted(dir.file("p.png")) + " --stats -");
+  REQUIRE(stats.exit_code == 0);
+  CHECK(stats.out.find("\"rays_per_second\"") != std::string::npos);
+  CHECK(read_bytes(dir.file("p.png")) == read_bytes(dir.file("o.png")));
+  std::vector<std::string> left;
+  for (const auto& entry : fs::directory_iterator(fs::temp_directory_path()))
+    if (entry.path().filename().string().find("radiant-standard-output") != std::string::npos) left.push_back(entry.path());
+  CHECK(left.empty());  // the temporaries behind standard output are gone
+}
+
+TEST_CASE("outputs: standard output for two outputs, --format for a file and a bad --format are usage errors") {
+  ScratchDir dir("stdout-refusals");
+  fs::path scene = dir.write("s.scene", lit_plane_scene);
+  std::string render = "render " + quoted(scene) + " --width 8 --height 8 --spp 1";
+  CommandResult both = run_radiant(render + " -o - --stats -");
+  CHECK(both.exit_code == 2);
+  CHECK(both.err.find("--stats '-' is the same file as -o '-'") != std::string::npos);
+  CHECK(both.out.empty());
+  CommandResult format = run_radiant(render + " -o " + quoted(dir.file("o.png")) + " --format exr");
+  CHECK(format.exit_code == 2);
+  CHECK(format.err.find("--format is for -o -") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir.file("o.png")));
+  CommandResult unknown = run_radiant(render + " -o - --format xyz");
+  CHECK(unknown.exit_code == 2);
+  CHECK(unknown.out.empty());
+}

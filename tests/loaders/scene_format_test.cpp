@@ -78,6 +78,16 @@ TEST_CASE("older format: a wall that is not smooth is a mirror, and e scales c i
   check_vec3(material.emission, {0.4f, 0.8f, 1.6f});
 }
 
+TEST_CASE("older format: s takes true and false in any case, as the older reader did") {
+  for (const char* word : {"True", "FALSE", "tRuE", "false"}) {
+    SceneDesc scene = test::load_scene_text(std::string("@sphere\nr 1\np 0 0 0\ns ") + word + "\n");
+    bool smooth = std::string(word).size() == 4;  // "true" in some case
+    const MaterialDesc& material = scene.materials.at(size_t(scene.shapes[0].material));
+    CHECK_MESSAGE((material.kd.x > 0) == smooth, word);  // smooth: diffuse; not: a mirror
+    CHECK_MESSAGE((material.kr.x > 0) == !smooth, word);
+  }
+}
+
 TEST_CASE("older format: a sphere takes the defaults c = 255 255 255 and s = true") {
   SceneDesc scene = test::load_scene_text(older_scene);
   const ShapeDesc& sphere = scene.shapes[2];

@@ -19,9 +19,9 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 // Runs in the forked child: only async-signal-safe calls until exec.
-[[noreturn]] void exec_child(const std::vector<char*>& argv, const ChildSetup& setup, int stdout_fd, int stderr_fd) {
-  int null_fd = open("/dev/null", O_RDONLY);
-  dup2(null_fd, STDIN_FILENO);
+[[noreturn]] void exec_child(const std::vector<char*>& argv, const ChildSetup& setup, int stdin_fd, int stdout_fd,
+                             int stderr_fd) {
+  dup2(stdin_fd >= 0 ? stdin_fd : open("/dev/null", O_RDONLY), STDIN_FILENO);
   dup2(stdout_fd, STDOUT_FILENO);
   dup2(stderr_fd, STDERR_FILENO);
   if (!setup.keep_file_size_signal) signal(SIGXFSZ, SIG_IGN);  // inherited through exec: EFBIG instead of death
@@ -53,10 +53,14 @@ RadiantProcess::RadiantProcess(const std::vector<std::string>& args, const Child
     stderr_fd = open(io_.file("stderr.txt").c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   }
   if (stdout_fd < 0 || stderr_fd < 0) throw std::runtime_error("cannot open the child's output files");
+  int stdin_pipe[2] = {-1, -1};
+  if (setup.piped_stdin && pipe2(stdin_pipe, O_CLOEXEC) != 0) throw std::runtime_error("pipe failed");
   pid_ = fork();
-  if (pid_ == 0) exec_child(argv, setup, stdout_fd, stderr_fd);
+  if (pid_ == 0) exec_child(argv, setup, stdin_pipe[0], stdout_fd, stderr_fd);
   close(stdout_fd);
   close(stderr_fd);
+  if (setup.piped_stdin) close(stdin_pipe[0]);
+  stdin_ = stdin_pipe[1];
   if (pid_ < 0) throw std::runtime_error("fork failed");
 }
 
@@ -66,6 +70,34 @@ RadiantProcess::~RadiantProcess() {
     waitpid(pid_, nullptr, 0);
   }
   if (terminal_ >= 0) close(terminal_);
+  close_stdin();
+}
+
+void RadiantProcess::write_stdin(const std::string& text) {
+  if (stdin_ < 0) throw std::logic_error("write_stdin needs piped_stdin");
+  signal(SIGPIPE, SIG_IGN);  // a child that has exited fails the write instead of killing the tests
+  for (size_t done = 0; done < text.size();) {
+    ssize_t wrote = write(stdin_, text.data() + done, text.size() - done);
+    if (wrote <= 0) throw std::runtime_error("cannot write to the child's stdin");
+    done += size_t(wrote);
+  }
+}
+
+void RadiantProcess::close_stdin() {
+  if (stdin_ >= 0) close(stdin_);
+  stdin_ = -1;
+}
+
+bool RadiantProcess::wait_for_stdout(const std::string& text, int count, double timeout_seconds) {
+  auto end = Clock::now() + std::chrono::duration<double>(timeout_seconds);
+  for (;;) {
+    std::string out = read_bytes(io_.file("stdout.txt"));
+    int found = 0;
+    for (size_t at = out.find(text); at != std::string::npos; at = out.find(text, at + 1)) ++found;
+    if (found >= count) return true;
+    if (Clock::now() > end) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
 }
 
 void RadiantProcess::read_terminal(int timeout_ms) {
@@ -103,6 +135,7 @@ CommandResult RadiantProcess::wait(double timeout_seconds) {
     else std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
   pid_ = -1;
+  close_stdin();
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   result.out = read_bytes(io_.file("stdout.txt"));
   if (terminal_ >= 0) {

@@ -19,6 +19,7 @@ struct ChildSetup {
   bool keep_file_size_signal = false;  // leave SIGXFSZ's default (death) to radiant's own handling
   bool unprivileged = false;    // when the tests run as root, the child runs as nobody (uid 65534)
   bool terminal_stderr = false;  // stderr is a pseudo-terminal, as in an interactive shell
+  bool piped_stdin = false;      // stdin is a pipe the test writes to (write_stdin), else empty
 };
 
 class RadiantProcess {
@@ -33,6 +34,11 @@ class RadiantProcess {
   // With a terminal stderr: reads it until `text` has appeared; false after `timeout_seconds`.
   bool wait_for_stderr(const std::string& text, double timeout_seconds);
   void send(int signal) const;
+  // With piped_stdin: writes `text` to the child's standard input; closing it is the end of input.
+  void write_stdin(const std::string& text);
+  void close_stdin();
+  // Reads standard output until `text` has appeared `count` times; false after `timeout_seconds`.
+  bool wait_for_stdout(const std::string& text, int count, double timeout_seconds);
   // Waits for the exit; after `timeout_seconds` kills the child and gives exit code -1, as for
   // any death by a signal.
   CommandResult wait(double timeout_seconds);
@@ -42,6 +48,7 @@ class RadiantProcess {
   ScratchDir io_{"child"};
   pid_t pid_ = -1;
   int terminal_ = -1;  // the pseudo-terminal's master side
+  int stdin_ = -1;     // the write end of the child's stdin pipe
   std::string terminal_text_;
 };
 

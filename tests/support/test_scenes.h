@@ -10,4 +10,12 @@ inline constexpr const char* lit_plane_scene =
     "@light directional\ndirection 0 -1 0\ncolor 1 1 1\n"
     "@plane\npoint 0 0 0\nnormal 0 1 0\nkd 0.5 0.5 0.5\n";
 
+// Inside a closed white sphere every path bounces --max-depth times: at depth 1000 one sample
+// of every pixel of 32x32 takes about half a second on one thread, so tests that need a render
+// to be under way (signals, progress) can count on it.
+inline constexpr const char* closed_sphere_scene =
+    "@camera\nposition 0 0 0\ndirection 0 0 -1\nup 0 1 0\n"
+    "@light point\ncolor 255 255 255\nposition 0 0 0\n"
+    "@sphere\ncenter 0 0 0\nradius 10\nkd 1\n";
+
 }  // namespace radiant::test

@@ -1,0 +1,60 @@
+#include "render_line.h"
+
+#include "option_parsing.h"
+
+namespace radiant::cli {
+
+namespace fs = std::filesystem;
+
+bool read_command_line(std::istream& in, std::string& line) {
+  line.clear();
+  std::streambuf* buffer = in.rdbuf();
+  int c = buffer ? buffer->sbumpc() : std::char_traits<char>::eof();
+  if (c == std::char_traits<char>::eof()) return false;
+  for (; c != std::char_traits<char>::eof() && c != '\n'; c = buffer->sbumpc()) {
+    if (line.size() == max_command_line)
+      throw std::invalid_argument("line is longer than " + std::to_string(max_command_line) + " characters");
+    line += char(c);
+  }
+  return true;
+}
+
+std::vector<std::string> split_words(const std::string& line) {
+  std::vector<std::string> words;
+  std::string word;
+  bool quoted = false, any = false;
+  for (char c : line) {
+    if (c == '"') {
+      quoted = !quoted, any = true;
+    } else if (!quoted && (c == ' ' || c == '\t' || c == '\r')) {
+      if (any) words.push_back(word), word.clear(), any = false;
+    } else {
+      word += c, any = true;
+    }
+  }
+  if (quoted) throw std::invalid_argument("unterminated quote");
+  if (any) words.push_back(word);
+  return words;
+}
+
+RenderJob parse_render_line(std::vector<std::string> words, const fs::path& base) {
+  CLI::App app{"render"};
+  RenderFlags flags;
+  RenderJob job;
+  app.add_option("-o,--output", job.output)->required();
+  flags.bind(app, true);
+  app.add_option("--stats", job.stats_path);
+  app.add_option("--aov", flags.aovs);
+  app.add_option("--crop", flags.crop);
+  app.add_option("--noise-threshold", flags.options.noise_threshold)->check(positive_number());
+  parse_arguments(app, std::move(words));
+  flags.finish();
+  job.options = flags.options;
+  job.max_memory_bytes = flags.max_memory_bytes;
+  if (fs::path(job.output).is_relative()) job.output = (base / job.output).string();
+  if (!job.stats_path.empty() && fs::path(job.stats_path).is_relative()) job.stats_path = (base / job.stats_path).string();
+  if (!job.options.aovs.empty() && !is_float_format(job.output)) throw std::invalid_argument("--aov needs an EXR output");
+  return job;
+}
+
+}  // namespace radiant::cli

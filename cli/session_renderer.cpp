@@ -1,0 +1,116 @@
+#include "session_renderer.h"
+
+#include <chrono>
+#include <new>
+
+#include "output/output_set.h"
+#include "render_report.h"
+
+namespace radiant::cli {
+
+SessionRenderer::SessionRenderer(Reporter report) : report_(std::move(report)), thread_([this] { run(); }) {}
+
+SessionRenderer::~SessionRenderer() {
+  {
+    std::lock_guard lock(mutex_);
+    closing_ = true;
+    pending_.reset();
+    stop_ = 1;
+  }
+  changed_.notify_all();
+  thread_.join();
+}
+
+void SessionRenderer::start(SessionRequest request) {
+  {
+    std::lock_guard lock(mutex_);
+    pending_ = std::move(request);
+    stop_ = 1;  // the render under way, if any, is stale
+  }
+  changed_.notify_all();
+}
+
+void SessionRenderer::cancel() {
+  std::lock_guard lock(mutex_);
+  pending_.reset();
+  stop_ = 1;
+}
+
+void SessionRenderer::wait_idle() {
+  std::unique_lock lock(mutex_);
+  changed_.wait(lock, [&] { return !busy_ && !pending_; });
+}
+
+std::optional<FinishedRender> SessionRenderer::last_finished() const {
+  std::lock_guard lock(mutex_);
+  return last_;
+}
+
+void SessionRenderer::run() {
+  for (;;) {
+    {
+      SessionRequest request;
+      {
+        std::unique_lock lock(mutex_);
+        changed_.wait(lock, [&] { return closing_ || pending_; });
+        if (closing_) return;
+        request = std::move(*pending_);
+        pending_.reset();
+        busy_ = true;
+        stop_ = 0;  // under the lock: a start() after this point stops this render
+      }
+      render(request);
+    }  // the request's hold on the scene ends before the session may replace the scene
+    {
+      std::lock_guard lock(mutex_);
+      busy_ = false;
+    }
+    changed_.notify_all();
+  }
+}
+
+void SessionRenderer::render(const SessionRequest& request) {
+  using Clock = std::chrono::steady_clock;
+  const RenderJob& job = request.job;
+  try {
+    PreparedScene& prepared = *request.scene;
+    RenderOptions options = job.options;
+    options.stop_request = &stop_;
+    prepare_view(prepared, options);
+    PhaseTimes times;
+    times.build = prepared.build_seconds;
+    uint32_t total = uint32_t(resolve_settings(prepared, options).spp);
+    // Each pass short of the last replaces the image, so a viewer that reloads shows it sharpen;
+    // the finished render is written below, with its statistics.
+    options.on_pass = [&](const Film& film, uint32_t samples) {
+      if (samples >= total || stop_) return;
+      OutputSet outputs;
+      write_image(outputs.create(job.output), film_to_image(film, job.options.aovs));
+      outputs.commit();
+    };
+    RenderResult result = render_prepared(prepared, options);
+    if (result.stats.interrupted) return;  // a newer request replaced it
+    times.render = result.stats.render_seconds;
+    FinishedRender finished;
+    finished.image = film_to_image(result.film, job.options.aovs);
+    auto write_start = Clock::now();
+    OutputSet outputs;
+    write_image(outputs.create(job.output), finished.image);
+    times.write = std::chrono::duration<double>(Clock::now() - write_start).count();
+    if (!job.stats_path.empty())
+      outputs.create(job.stats_path).write(render_stats_json(request.scene_path, job.output, result, times));
+    outputs.commit();
+    finished.summary = render_summary(job.output, result, times);
+    {
+      std::lock_guard lock(mutex_);
+      last_ = finished;
+    }
+    report_(request.line, "", &finished);
+  } catch (const std::bad_alloc&) {
+    report_(request.line, out_of_memory_message(request.scene_path, "rendering", *request.job.options.memory), nullptr);
+  } catch (const std::exception& e) {
+    report_(request.line, e.what(), nullptr);
+  }
+}
+
+}  // namespace radiant::cli

@@ -1,0 +1,36 @@
+// The settings of `radiant session`: every `render` flag, as `set` and `unset` leave them.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "render_job.h"
+
+namespace radiant::cli {
+
+class SessionSettings {
+ public:
+  // `set NAME [VALUE...]`: the flag --NAME (a leading "--" may be given) with these values,
+  // replacing any earlier one. Checked at once by parsing every setting as a `render` line
+  // would (std::invalid_argument naming the flag): a bad value leaves the settings unchanged.
+  // The flags the session itself owns are refused with what to use instead: -o (`save`), the
+  // camera placement (moveto/turnto) and --max-memory (given when the session starts).
+  void set(std::string name, std::vector<std::string> values);
+  // `unset NAME`: back to the default. False when it was not set.
+  bool unset(std::string name);
+
+  // Flags as a command line gives them ("--spp", "64", "--quiet", ...) become settings.
+  void set_from_arguments(const std::vector<std::string>& arguments);
+
+  // The render these settings ask for, writing `output`; relative paths resolve against `base`.
+  RenderJob job(const std::string& output, const std::filesystem::path& base) const;
+  // The settings as `render` flags, in name order ("--mode path --spp 64").
+  std::string flags() const;
+
+ private:
+  std::map<std::string, std::vector<std::string>> flags_;  // name without dashes -> values
+};
+
+}  // namespace radiant::cli

@@ -1,0 +1,120 @@
+// `radiant session` driven through a pipe, as a script or another program drives it.
+#include <doctest/doctest.h>
+
+#include <chrono>
+#include <filesystem>
+#include <thread>
+
+#include "support/child_process.h"
+#include "support/test_support.h"
+
+using namespace radiant::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
+
+// first-render.scene: a camera at (0, 0, 1000) looking down -z with +y up.
+fs::path copy_scene(ScratchDir& dir) {
+  fs::copy_file(source_path("assets/first-render.scene"), dir.file("s.scene"));
+  return dir.file("s.scene");
+}
+
+std::vector<std::string> session_args(ScratchDir& dir, std::vector<std::string> more) {
+  std::vector<std::string> args = {"session", copy_scene(dir).string(), "-o", dir.file("view.png").string(),
+                                   "--width", "32", "--height", "32"};
+  args.insert(args.end(), more.begin(), more.end());
+  return args;
+}
+
+ChildSetup piped() {
+  ChildSetup setup;
+  setup.piped_stdin = true;
+  return setup;
+}
+
+}  // namespace
+
+TEST_CASE("session: moves and turns give the image of the equivalent render line, byte for byte") {
+  ScratchDir dir("session-same");
+  RadiantProcess session(session_args(dir, {"--spp", "4", "--mode", "path"}), piped());
+  session.write_stdin("moveto 300 0 1000\nturnto -300 0 -1200\n");
+  session.close_stdin();  // the end of input waits for the last render
+  CommandResult r = session.wait(120);
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.out.find("wrote ") != std::string::npos);
+  CommandResult line = run_radiant("render " + quoted(dir.file("s.scene")) + " -o " + quoted(dir.file("line.png")) +
+                                   " --width 32 --height 32 --spp 4 --mode path --look-from 300,0,1000 --look-at 0,0,-200");
+  REQUIRE(line.exit_code == 0);
+  CHECK(read_bytes(dir.file("view.png")) == read_bytes(dir.file("line.png")));
+}
+
+TEST_CASE("session: info prints the view as render flags that reproduce it after turns") {
+  ScratchDir dir("session-info");
+  RadiantProcess session(session_args(dir, {"--spp", "2"}), piped());
+  session.write_stdin("turn 0 7 0\nmove 10 -5 0\nturn 3 0 0\nwait\ninfo\nsave " + dir.file("saved.png").string() + "\n");
+  session.close_stdin();
+  CommandResult r = session.wait(120);
+  REQUIRE(r.exit_code == 0);
+  size_t at = r.out.find("view: ");
+  REQUIRE(at != std::string::npos);
+  std::string flags = r.out.substr(at + 6, r.out.find('\n', at) - at - 6);
+  CHECK(flags.find("--look-from 10,-5,1000 ") == 0);
+  CommandResult line = run_radiant("render " + quoted(dir.file("s.scene")) + " -o " + quoted(dir.file("line.png")) +
+                                   " --width 32 --height 32 --spp 2 " + flags);
+  REQUIRE(line.exit_code == 0);
+  CHECK(read_bytes(dir.file("view.png")) == read_bytes(dir.file("line.png")));
+  CHECK(read_bytes(dir.file("saved.png")) == read_bytes(dir.file("line.png")));  // save: the last finished image
+}
+
+TEST_CASE("session: a change mid-render cancels the stale render within a bounded time") {
+  ScratchDir dir("session-cancel");
+  // 2^24 samples per pixel would take hours: only a cancelled render lets the session go on.
+  RadiantProcess session(session_args(dir, {"--spp", "16777216", "--mode", "path"}), piped());
+  auto deadline = Clock::now() + std::chrono::seconds(60);
+  while (!fs::exists(dir.file("view.png")) && Clock::now() < deadline)  // the first pass was written
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  REQUIRE(fs::exists(dir.file("view.png")));
+  auto asked = Clock::now();
+  session.write_stdin("set spp 2\n");
+  REQUIRE(session.wait_for_stdout("wrote ", 1, 30));
+  double seconds = std::chrono::duration<double>(Clock::now() - asked).count();
+  CHECK(seconds < 10);
+  session.write_stdin("quit\n");
+  CommandResult r = session.wait(30);
+  CHECK(r.exit_code == 0);
+  CHECK(r.out.find("2 spp") != std::string::npos);
+  CHECK(r.out.find("wrote ", r.out.find("wrote ") + 1) == std::string::npos);  // the stale render printed nothing
+  CommandResult line = run_radiant("render " + quoted(dir.file("s.scene")) + " -o " + quoted(dir.file("line.png")) +
+                                   " --width 32 --height 32 --spp 2 --mode path");
+  CHECK(read_bytes(dir.file("view.png")) == read_bytes(dir.file("line.png")));
+}
+
+TEST_CASE("session: a bad command names its line, the session goes on, and quit returns the last failure") {
+  ScratchDir dir("session-errors");
+  RadiantProcess session(session_args(dir, {"--spp", "1"}), piped());
+  session.write_stdin("jump 1 2 3\nmoveto 1 2\nset spp banana\nset output x.png\nsave nowhere.xyz\nmove 0 0 -10\nwait\nquit\n");
+  CommandResult r = session.wait(120);
+  CHECK(r.exit_code == 2);
+  CHECK(r.err.find("line 1: unknown command 'jump'") != std::string::npos);
+  CHECK(r.err.find("line 2: 'moveto' needs three numbers") != std::string::npos);
+  CHECK(r.err.find("line 3: ") != std::string::npos);
+  CHECK(r.err.find("line 4: --output: ") != std::string::npos);
+  CHECK(r.err.find("line 5: ") != std::string::npos);
+  CHECK(r.out.find("wrote ") != std::string::npos);  // line 6 still rendered
+  CHECK_FALSE(fs::exists(dir.file("nowhere.xyz")));
+}
+
+TEST_CASE("session: without a scene, commands that need one say so; the end of input exits cleanly") {
+  ScratchDir dir("session-empty");
+  RadiantProcess session({"session", "-o", dir.file("view.png").string()}, piped());
+  session.write_stdin("turn 0 10 0\nrender " + copy_scene(dir).string() + "\nset width 16\nset height 16\nset spp 1\n");
+  session.close_stdin();
+  CommandResult r = session.wait(120);
+  CHECK(r.exit_code == 2);  // the failed turn
+  CHECK(r.err.find("line 1: no scene yet") != std::string::npos);
+  CHECK(fs::exists(dir.file("view.png")));
+}
