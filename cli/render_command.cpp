@@ -61,7 +61,10 @@ int render_main(int argc, char** argv) {
   options.progress = isatty(STDERR_FILENO) && !options.quiet;
   if (options.time_limit_seconds > 0)
     options.deadline = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.time_limit_seconds));
-  RenderJob job{options, output, stats_path};
+  RenderJob job;
+  job.options = options;
+  job.output = output;
+  job.stats_path = stats_path;
   if (!format.empty()) {
     if (!is_standard_output(output)) {
       std::cerr << "radiant render: --format is for -o - (the extension of '" << output << "' names its format)\n";
