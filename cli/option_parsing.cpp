@@ -7,6 +7,8 @@
 #include <limits>
 #include <sstream>
 
+#include "image/view_transform.h"
+
 namespace radiant::cli {
 
 namespace {
@@ -233,6 +235,12 @@ void RenderFlags::bind(CLI::App& app, bool image_flags) {
     app.add_option("--width", width, "Image width in pixels (default: from the scene or camera)")->check(CLI::Range(1, 65536));
     app.add_option("--height", height, "Image height in pixels")->check(CLI::Range(1, 65536));
     app.add_option("--spp", spp, "Samples per pixel (the maximum with --noise-threshold)")->check(CLI::Range(1, 1 << 24));
+    app.add_option("--exposure", options.exposure, "Exposure in stops for PNG, TIFF, JPEG... (EXR stays linear)")
+        ->check(number_in(-64, 64));
+    app.add_option("--view", view, "View transform of PNG, TIFF, JPEG...: standard (sRGB), linear, filmic or agx");
+    app.add_option("--bit-depth", options.bit_depth, "8 or 16 bits per channel for PNG and TIFF")
+        ->check(CLI::IsMember({8, 16}));
+    app.add_flag("--half", options.half_float, "EXR with 16-bit half floats instead of 32-bit");
   }
   app.add_option("--mode", mode, "Integrator: whitted, path, naive or auto (default auto)");
   app.add_option("--max-depth", max_depth, "Surface interactions that gather light (1 = direct only)")->check(CLI::Range(1, 1000));
@@ -262,6 +270,13 @@ void RenderFlags::finish() {
   if (max_depth) options.max_depth = max_depth;
   if (!mode.empty()) options.mode = parse_mode("--mode", mode);
   if (!sampler.empty()) options.sampler = parse_sampler("--sampler", sampler);
+  if (!view.empty()) {
+    try {
+      options.view = parse_view_transform(view);
+    } catch (const std::invalid_argument& e) {
+      throw CLI::ValidationError("--view", e.what());
+    }
+  }
   if (!env_color.empty()) {
     vec3 c = parse_vec3("--env-color", env_color);
     if (min_component(c) < 0) throw CLI::ValidationError("--env-color", "radiance cannot be negative");

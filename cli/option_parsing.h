@@ -47,7 +47,7 @@ const char* sampler_name(SamplerKind kind);
 // parsing to convert the string flags.
 struct RenderFlags {
   RenderOptions options;
-  std::string mode, sampler, env_color, crop, aovs, look_from, look_at, up;
+  std::string mode, sampler, env_color, crop, aovs, look_from, look_at, up, view;
   int width = 0, height = 0, spp = 0, max_depth = 0, gltf_scene = -1;
   float fov = 0;
   bool allow_external_files = false;

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <iostream>
 
+#include "image/image_io.h"
 #include "interrupts.h"
 #include "option_parsing.h"
 #include "output/output_set.h"
@@ -27,7 +28,13 @@ std::string image_format_name(const RenderJob& job) {
 }
 
 void check_render_job_outputs(const RenderJob& job) {
-  check_image_output(image_format_name(job));
+  std::string format = image_format_name(job);
+  check_image_output(format);
+  std::string extension = lowercase_extension(format);
+  if (job.options.half_float && !is_float_format(format))
+    throw std::invalid_argument("--half needs an EXR output (got '" + format + "')");
+  if (job.options.bit_depth == 16 && extension != ".png" && extension != ".tif" && extension != ".tiff")
+    throw std::invalid_argument("--bit-depth 16 needs a PNG or TIFF output (got '" + format + "')");
   for (const NamedFile& output : render_job_outputs(job)) check_output_place(output.path);
 }
 
@@ -41,6 +48,7 @@ OutputImage output_image(const RenderJob& job, const RenderResult& result) {
   if (partial && is_float_format(image_format_name(job)) && std::find(aovs.begin(), aovs.end(), "spp") == aovs.end())
     aovs.push_back("spp");
   OutputImage image = film_to_image(result.film, aovs);
+  set_output_encoding(image, job.options, result.settings);
   if (partial) image.metadata.emplace_back("radiant:partial", std::string("interrupted by ") + signal_name(interrupt_signal()));
   return image;
 }

@@ -79,20 +79,26 @@ void SessionRenderer::render(const SessionRequest& request) {
     prepare_view(prepared, options);
     PhaseTimes times;
     times.build = prepared.build_seconds;
-    uint32_t total = uint32_t(resolve_settings(prepared, options).spp);
+    ResolvedSettings settings = resolve_settings(prepared, options);
+    uint32_t total = uint32_t(settings.spp);
+    auto image_of = [&](const Film& film) {
+      OutputImage image = film_to_image(film, job.options.aovs);
+      set_output_encoding(image, job.options, settings);
+      return image;
+    };
     // Each pass short of the last replaces the image, so a viewer that reloads shows it sharpen;
     // the finished render is written below, with its statistics.
     options.on_pass = [&](const Film& film, uint32_t samples) {
       if (samples >= total || stop_) return;
       OutputSet outputs;
-      write_image(outputs.create(job.output), film_to_image(film, job.options.aovs));
+      write_image(outputs.create(job.output), image_of(film));
       outputs.commit();
     };
     RenderResult result = render_prepared(prepared, options);
     if (result.stats.interrupted) return;  // a newer request replaced it
     times.render = result.stats.render_seconds;
     FinishedRender finished;
-    finished.image = film_to_image(result.film, job.options.aovs);
+    finished.image = image_of(result.film);
     auto write_start = Clock::now();
     OutputSet outputs;
     write_image(outputs.create(job.output), finished.image);

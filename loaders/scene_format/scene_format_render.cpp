@@ -7,7 +7,7 @@ namespace radiant::scene_format {
 
 static const std::vector<AttributeName> render_names = {{"mode", ""},      {"spp", ""},   {"sampler", ""},
                                                         {"max-depth", ""}, {"width", ""}, {"height", ""},
-                                                        {"background", ""}};
+                                                        {"background", ""}, {"view", ""}};
 
 void build_render_block(BuildContext& context, const Block& block) {
   expect_block_arguments(context, block, 0);
@@ -21,6 +21,9 @@ void build_render_block(BuildContext& context, const Block& block) {
   if (auto* a = find(attributes, "max-depth")) settings.max_depth = read_integer(context, *a, 1, max_render_depth);
   if (auto* a = find(attributes, "width")) settings.width = read_integer(context, *a, 1, max_image_side);
   if (auto* a = find(attributes, "height")) settings.height = read_integer(context, *a, 1, max_image_side);
+  // Same order as ViewTransform.
+  if (auto* a = find(attributes, "view"))
+    settings.view = ViewTransform(read_choice(context, *a, {"standard", "linear", "filmic", "agx"}));
   if (auto* a = find(attributes, "background")) context.scene.environment.color = radiance_from_scene(read_color(context, *a));
 }
 

@@ -27,6 +27,7 @@ OIIO::TypeDesc type_desc(PixelType type) {
     case PixelType::uint8: return OIIO::TypeDesc::UINT8;
     case PixelType::half: return OIIO::TypeDesc::HALF;
     case PixelType::float32: return OIIO::TypeDesc::FLOAT;
+    case PixelType::uint16: return OIIO::TypeDesc::UINT16;
   }
   return OIIO::TypeDesc::FLOAT;
 }

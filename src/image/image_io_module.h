@@ -14,7 +14,7 @@
 
 namespace radiant {
 
-enum class PixelType { uint8, half, float32 };
+enum class PixelType { uint8, half, float32, uint16 };
 
 // A file's text attributes as name and value: PNG tEXt chunks, EXR string header attributes.
 using ImageMetadata = std::vector<std::pair<std::string, std::string>>;
@@ -76,7 +76,7 @@ struct ImageIoModule {
 };
 
 // Raised whenever the struct above changes, so that a stale module is refused, not misread.
-constexpr uint32_t image_io_interface_version = 2;
+constexpr uint32_t image_io_interface_version = 3;
 
 }  // namespace radiant
 

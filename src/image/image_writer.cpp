@@ -20,7 +20,8 @@ ImageWriteSpec output_spec(const std::string& path, const OutputImage& image) {
   spec.height = image.height;
   int channels = as_float ? int(image.channels.size()) : 3;
   spec.channel_names.assign(image.channels.begin(), image.channels.begin() + channels);
-  spec.type = as_float ? PixelType::float32 : PixelType::uint8;
+  if (as_float) spec.type = image.half ? PixelType::half : PixelType::float32;
+  else spec.type = image.bit_depth == 16 ? PixelType::uint16 : PixelType::uint8;
   spec.color_space = as_float ? "Linear" : "sRGB";
   spec.zip = as_float;
   spec.metadata = image.metadata;
@@ -31,15 +32,18 @@ ImageWriteSpec output_spec(const std::string& path, const OutputImage& image) {
 
 void write_image(TemporaryFile& file, const OutputImage& image) {
   ImageWriteSpec spec = output_spec(file.target(), image);
-  bool as_float = spec.type == PixelType::float32;
+  bool as_float = spec.type == PixelType::float32 || spec.type == PixelType::half;
   std::vector<float> data;
   const float* source = image.pixels.data();
   if (!as_float) {
-    // sRGB-encode and clamp the color channels; the writer quantizes to 8 bits.
+    // The display values of the color channels; the writer quantizes them to 8 or 16 bits.
     size_t stride = image.channels.size();
     data.resize(size_t(image.width) * image.height * 3);
-    for (size_t i = 0; i < size_t(image.width) * image.height; ++i)
-      for (int c = 0; c < 3; ++c) data[i * 3 + c] = linear_to_srgb(std::clamp(image.pixels[i * stride + c], 0.0f, 1.0f));
+    for (size_t i = 0; i < size_t(image.width) * image.height; ++i) {
+      const float* p = &image.pixels[i * stride];
+      color3 shown = display_encode({p[0], p[1], p[2]}, image.display);
+      for (int c = 0; c < 3; ++c) data[i * 3 + c] = shown[c];
+    }
     source = data.data();
   }
   write_image_file(file, spec, source);

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "image/image_io_module.h"
+#include "image/view_transform.h"
 #include "output/temporary_file.h"
 
 namespace radiant {
@@ -15,6 +16,9 @@ struct OutputImage {
   std::vector<std::string> channels;
   std::vector<float> pixels;  // interleaved, top row first
   ImageMetadata metadata;     // text attributes recorded in the file (PNG tEXt, EXR header)
+  DisplaySettings display;    // exposure and view transform of 8- and 16-bit formats
+  int bit_depth = 8;          // 8 or 16, for formats without float storage
+  bool half = false;          // float formats: 16-bit half floats instead of 32-bit
 };
 
 // True for formats that store linear floating point (EXR, HDR, PFM, TIFF float is not chosen).
@@ -27,7 +31,8 @@ bool is_float_format(const std::string& path);
 void check_image_output(const std::string& path);
 
 // Writes `image` to `file`, which is renamed onto its target when committed. Formats without
-// float storage get the first three channels, sRGB-encoded and clamped to 8 bits. Throws
+// float storage get the first three channels through the exposure and view transform, in 8 or
+// 16 bits; float formats get every channel as linear radiance. Throws
 // std::runtime_error naming the target and the writer's reason.
 void write_image(TemporaryFile& file, const OutputImage& image);
 

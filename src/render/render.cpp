@@ -315,6 +315,12 @@ std::vector<std::string> output_channel_names(const std::vector<std::string>& ao
   return channels;
 }
 
+void set_output_encoding(OutputImage& image, const RenderOptions& options, const ResolvedSettings& settings) {
+  image.display = {options.exposure, settings.view};
+  image.bit_depth = options.bit_depth;
+  image.half = options.half_float;
+}
+
 OutputImage film_to_image(const Film& film, const std::vector<std::string>& aovs) {
   OutputImage image;
   image.width = film.width;

@@ -41,6 +41,7 @@ struct ResolvedSettings {
   RenderMode mode = RenderMode::path;
   std::string mode_reason;  // why auto picked the mode ("" when given)
   SamplerKind sampler = SamplerKind::jittered;
+  ViewTransform view = ViewTransform::standard;
   CameraDesc camera;
   bool camera_framed = false;  // no camera in the file: one frames the scene
   color3 environment_color;
@@ -90,5 +91,8 @@ std::vector<std::string> output_channel_names(const std::vector<std::string>& ao
 
 // The film as an image with the requested AOV channels (a cropped render's film is the window).
 OutputImage film_to_image(const Film& film, const std::vector<std::string>& aovs);
+// How the image is to be stored, as the options ask: exposure, the resolved view transform, bit
+// depth and half floats (src/image/view_transform.h).
+void set_output_encoding(OutputImage& image, const RenderOptions& options, const ResolvedSettings& settings);
 
 }  // namespace radiant

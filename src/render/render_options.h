@@ -50,6 +50,13 @@ struct RenderOptions {
   // per pixel it holds. Each pixel still adds its samples in index order, so the final film is
   // the one-pass render's, bit for bit.
   std::function<void(const Film& film, uint32_t samples)> on_pass;
+  // How the image is stored (src/image/view_transform.h): exposure in stops and the view
+  // transform of 8- and 16-bit outputs (the scene's `view` setting, else standard), their bit
+  // depth, and half floats for EXR.
+  float exposure = 0;
+  std::optional<ViewTransform> view;
+  int bit_depth = 8;
+  bool half_float = false;
   float noise_threshold = 0;      // 0 = off
   float contribution_cutoff = 0.001f;  // Whitted: stop recursing below this weight
   bool quiet = false;

@@ -72,6 +72,7 @@ ResolvedSettings resolve_settings(const PreparedScene& prepared, const RenderOpt
   if (r.spp < 1) throw std::invalid_argument("--spp must be at least 1");
   if (r.max_depth < 1) throw std::invalid_argument("--max-depth must be at least 1");
 
+  r.view = options.view ? *options.view : scene.settings.view.value_or(ViewTransform::standard);
   r.environment_color = options.env_color ? *options.env_color : scene.environment.color;
   r.environment_map = options.env_map.empty() ? scene.environment.map_path : options.env_map;
 

@@ -171,12 +171,15 @@ struct EnvironmentDesc {
 
 enum class RenderMode { auto_select, whitted, path, naive };
 enum class SamplerKind { grid, random, jittered, sobol };
+// How radiance becomes a displayed value in 8- and 16-bit images (src/image/view_transform.h).
+enum class ViewTransform { standard, linear, filmic, agx };
 
 // Render settings a scene file may carry; command-line flags override each one that is set.
 struct SceneSettings {
   std::optional<int> width, height, spp, max_depth;
   std::optional<RenderMode> mode;
   std::optional<SamplerKind> sampler;
+  std::optional<ViewTransform> view;
 };
 
 // ---------------------------------------------------------------- the scene
