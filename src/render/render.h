@@ -41,6 +41,7 @@ struct ResolvedSettings {
   RenderMode mode = RenderMode::path;
   std::string mode_reason;  // why auto picked the mode ("" when given)
   SamplerKind sampler = SamplerKind::jittered;
+  LightSampler light_sampler = LightSampler::power;  // as the light table resolved `automatic`
   CameraDesc camera;
   bool camera_framed = false;  // no camera in the file: one frames the scene
   color3 environment_color;

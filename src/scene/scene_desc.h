@@ -171,6 +171,9 @@ struct EnvironmentDesc {
 
 enum class RenderMode { auto_select, whitted, path, naive };
 enum class SamplerKind { grid, random, jittered, sobol };
+// How the path tracer chooses the light to sample at a point: in proportion to power, by a light
+// BVH's estimate of each light's contribution there, or the BVH when there are many lights.
+enum class LightSampler { automatic, power, bvh };
 
 // Render settings a scene file may carry; command-line flags override each one that is set.
 struct SceneSettings {
