@@ -73,7 +73,8 @@ std::string render_stats_json(const std::string& scene_path, const std::string& 
     << "  \"output\": \"" << json_escape(output) << "\",\n"
     << "  \"width\": " << r.film.width << ", \"height\": " << r.film.height << ",\n"
     << "  \"mode\": \"" << mode_name(s.mode) << "\", \"mode_reason\": \"" << json_escape(s.mode_reason) << "\",\n"
-    << "  \"sampler\": \"" << sampler_name(s.sampler) << "\", \"spp\": " << s.spp << ", \"max_depth\": " << s.max_depth << ",\n"
+    << "  \"sampler\": \"" << sampler_name(s.sampler) << "\", \"light_sampler\": \""
+    << (s.light_sampler == LightSampler::bvh ? "bvh" : "power") << "\", \"spp\": " << s.spp << ", \"max_depth\": " << s.max_depth << ",\n"
     << "  \"effects\": \"" << effect_names(s.effects) << "\",\n"
     << "  \"compiled_variant\": \"" << effect_names(s.compiled_variant) << "\",\n"
     << "  \"seconds\": {\"load\": " << t.load << ", \"build\": " << t.build << ", \"render\": " << t.render
