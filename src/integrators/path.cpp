@@ -61,8 +61,8 @@ color3 sample_one_light(const RenderContext& ctx, const SurfaceHit& hit, const B
   const LightTable& lights = *ctx.lights;
   // Random numbers are drawn only when used (one light needs no choice, a delta light no
   // point); their dimensions stay fixed, so skipping one changes no other.
-  float u_choice = light_choice_needs_random(lights) ? sample_1d(sample, dimension(depth, light_choice)) : 0;
   LightChoice choice;
+  auto u_choice = [&] { return sample_1d(sample, dimension(depth, light_choice)); };
   if (!choose_light(lights, hit.position, f.normal, u_choice, choice)) return {};
   size_t index = choice.slot;
   float select_pdf = choice.probability;

@@ -12,21 +12,18 @@ struct LightChoice {
   float probability = 0;
 };
 
-// Whether choosing needs a random number (one light under power sampling does not).
-inline bool light_choice_needs_random(const LightTable& lights) {
-  return lights.sampler == LightSampler::bvh || lights.selection.size() > 1;
-}
-
 bool choose_light_by_bvh(const LightTable& lights, vec3 p, vec3 n, float u, LightChoice& choice);
 float light_choice_probability_by_bvh(const LightTable& lights, vec3 p, vec3 n, size_t slot);
 
-// Chooses a light for point `p` with shading normal `n` from u in [0,1); false when none can be
-// chosen. Power sampling ignores p and n and stays inline: a scene with few lights pays only
-// this branch for the BVH.
-inline bool choose_light(const LightTable& lights, vec3 p, vec3 n, float u, LightChoice& choice) {
-  if (lights.sampler == LightSampler::bvh) return choose_light_by_bvh(lights, p, n, u, choice);
+// Chooses a light for point `p` with shading normal `n`, calling `draw_u` for a number in [0,1)
+// only when there is a choice to make (one light under power sampling has none); false when
+// none can be chosen. Power sampling ignores p and n and stays inline: a scene with few lights
+// pays one branch for the BVH.
+template <class DrawU>
+inline bool choose_light(const LightTable& lights, vec3 p, vec3 n, DrawU draw_u, LightChoice& choice) {
+  if (lights.sampler == LightSampler::bvh) return choose_light_by_bvh(lights, p, n, draw_u(), choice);
   if (lights.selection.empty()) return false;
-  choice.slot = lights.selection.size() > 1 ? sample_discrete(lights.selection, u) : 0;
+  choice.slot = lights.selection.size() > 1 ? sample_discrete(lights.selection, draw_u()) : 0;
   choice.probability = lights.selection.pmf[choice.slot];
   return true;
 }

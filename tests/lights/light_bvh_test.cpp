@@ -133,7 +133,7 @@ TEST_CASE("light BVH: sampled lights follow the choice probabilities (chi-square
     for (int k = 0; k < samples; ++k) {
       float u = float(engine() >> 8) * 0x1p-24f;
       LightChoice choice;
-      REQUIRE(choose_light(lights, s.p, s.n, u, choice));
+      REQUIRE(choose_light(lights, s.p, s.n, [u] { return u; }, choice));
       observed[choice.slot] += 1;
       float evaluated = light_choice_probability(lights, s.p, s.n, choice.slot);
       mismatched += std::abs(choice.probability - evaluated) > 1e-6f * evaluated;
@@ -204,7 +204,7 @@ TEST_CASE("light BVH: a tree of one light chooses it with probability one where 
   scene.lights.push_back(point_light({0, 3, 0}, {1, 1, 1}));
   LightTable lights = bvh_table(scene, {0, 0, 0});
   LightChoice choice;
-  REQUIRE(choose_light(lights, {1, 0, 0}, {0, 1, 0}, 0.7f, choice));
+  REQUIRE(choose_light(lights, {1, 0, 0}, {0, 1, 0}, [] { return 0.7f; }, choice));
   CHECK(choice.slot == 0);
   CHECK(choice.probability == 1);
   CHECK(light_choice_probability(lights, {1, 0, 0}, {0, 1, 0}, 0) == 1);
