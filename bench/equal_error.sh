@@ -27,3 +27,8 @@ own_error() { awk -v e="$1" -v r="$2" 'BEGIN {v = e * e - r * r; printf "%.6g", 
 # renderer whose seed cannot be changed (Embree's tutorial): E^2 = sigma^2 (1/n - 1/N), so
 # e_n = E sqrt(N / (N - n)).
 nested_own_error() { awk -v e="$1" -v n="$2" -v N="$3" 'BEGIN {printf "%.6g", e * sqrt(N / (N - n))}'; }
+
+# mean_value IMAGE: the mean of its R, G and B values (the level a relative error is relative to).
+mean_value() {
+  oiiotool "$1" --ch R,G,B --printstats 2>/dev/null | awk '/Stats Avg:/ {printf "%.6g", ($3 + $4 + $5) / 3; exit}'
+}

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "image/view_transform.h"
+#include "lights/light_table.h"
 
 namespace radiant::cli {
 
@@ -90,6 +91,13 @@ SamplerKind parse_sampler(const std::string& flag, const std::string& text) {
   if (text == "jittered") return SamplerKind::jittered;
   if (text == "sobol") return SamplerKind::sobol;
   throw CLI::ValidationError(flag, "unknown sampler '" + text + "' (expected grid, random, jittered or sobol)");
+}
+
+LightSampler parse_light_sampler(const std::string& flag, const std::string& text) {
+  if (text == "auto") return LightSampler::automatic;
+  if (text == "power") return LightSampler::power;
+  if (text == "bvh") return LightSampler::bvh;
+  throw CLI::ValidationError(flag, "unknown light sampler '" + text + "' (expected auto, power or bvh)");
 }
 
 PixelWindow parse_window(const std::string& flag, const std::string& text) {
@@ -247,6 +255,9 @@ void RenderFlags::bind(CLI::App& app, bool image_flags) {
   app.add_option("--threads", options.threads, "Worker threads (default: all cores); never changes the image")->check(CLI::Range(0, 1024));
   app.add_option("--seed", options.seed, "Random seed");
   app.add_option("--sampler", sampler, "grid, random, jittered (Whitted default) or sobol (path default)");
+  app.add_option("--light-sampler", light_sampler,
+                 "How the path tracer chooses a light: power, bvh (by estimated contribution) or auto (bvh from " +
+                     std::to_string(light_bvh_min_lights) + " lights with a position; default)");
   app.add_option("--camera", options.camera, "Camera name or index (default: the first)");
   app.add_option("--scene", gltf_scene, "glTF scene index (default: the file's default scene)")->check(CLI::NonNegativeNumber);
   app.add_option("--env-color", env_color, "Uniform environment radiance R,G,B (linear)");
@@ -277,6 +288,7 @@ void RenderFlags::finish() {
       throw CLI::ValidationError("--view", e.what());
     }
   }
+  if (!light_sampler.empty()) options.light_sampler = parse_light_sampler("--light-sampler", light_sampler);
   if (!env_color.empty()) {
     vec3 c = parse_vec3("--env-color", env_color);
     if (min_component(c) < 0) throw CLI::ValidationError("--env-color", "radiance cannot be negative");

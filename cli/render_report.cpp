@@ -53,6 +53,7 @@ std::string render_stats_json(const std::string& scene_path, const std::string& 
   j["mode"] = mode_name(s.mode);
   j["mode_reason"] = s.mode_reason;
   j["sampler"] = sampler_name(s.sampler);
+  j["light_sampler"] = s.light_sampler == LightSampler::bvh ? "bvh" : "power";
   j["spp"] = s.spp;
   j["max_depth"] = s.max_depth;
   j["effects"] = effect_names(s.effects);

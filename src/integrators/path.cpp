@@ -9,6 +9,7 @@
 #include "lights/area_light.h"
 #include "lights/delta_light.h"
 #include "lights/environment_light.h"
+#include "lights/light_selection.h"
 #include "materials/bsdf.h"
 #include "sampling/warp.h"
 
@@ -58,13 +59,13 @@ template <uint32_t E>
 color3 sample_one_light(const RenderContext& ctx, const SurfaceHit& hit, const Bsdf& bsdf, const HitShading& f,
                         const SampleContext& sample, int depth, RayCounts& counts) {
   const LightTable& lights = *ctx.lights;
-  if (lights.selection.empty()) return {};
   // Random numbers are drawn only when used (one light needs no choice, a delta light no
   // point); their dimensions stay fixed, so skipping one changes no other.
-  size_t index = lights.selection.size() > 1
-                     ? sample_discrete(lights.selection, sample_1d(sample, dimension(depth, light_choice)))
-                     : 0;
-  float select_pdf = lights.selection.pmf[index];
+  LightChoice choice;
+  auto u_choice = [&] { return sample_1d(sample, dimension(depth, light_choice)); };
+  if (!choose_light(lights, hit.position, f.normal, u_choice, choice)) return {};
+  size_t index = choice.slot;
+  float select_pdf = choice.probability;
 
   if (index < lights.delta_lights.size()) {
     if (!enabled<E>(ctx.effects, effect_direct_delta)) return {};
@@ -131,8 +132,9 @@ struct PathVariant {
           // The environment has a selection slot only when it exists (--effects=all can switch
           // the effect on for a scene without one).
           if (LightSampling && !specular_bounce && lights.has_environment()) {
-            float light_pdf = lights.selection.pmf[lights.environment_slot()] *
-                              environment_pdf(lights, previous_normal, normalize(ray.direction));
+            float light_pdf =
+                light_choice_probability(lights, previous_position, previous_normal, lights.environment_slot()) *
+                environment_pdf(lights, previous_normal, normalize(ray.direction));
             weight = power_heuristic(previous_pdf, light_pdf);
           }
           radiance += throughput * background * weight;
@@ -158,7 +160,7 @@ struct PathVariant {
           int light_index = hit_light_index(lights, id);
           if (LightSampling && !specular_bounce && light_index >= 0) {
             const AreaLight& light = lights.area_lights[light_index - lights.delta_lights.size()];
-            float light_pdf = lights.selection.pmf[light_index] *
+            float light_pdf = light_choice_probability(lights, previous_position, previous_normal, size_t(light_index)) *
                               area_light_pdf(light, previous_position, hit.position, hit.geometric_normal);
             weight = power_heuristic(previous_pdf, light_pdf);
           }

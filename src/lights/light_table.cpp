@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "image/image_io.h"
+#include "lights/light_bounds.h"
 #include "memory/input_file.h"
 #include "scene/scene_bounds.h"
 
@@ -142,6 +143,77 @@ std::vector<float> float_weights(const std::vector<double>& weights) {
   return scaled;
 }
 
+// The bounds of a light with a position (intensity not yet normalised), or false for a light at
+// infinity. Intensities are W/sr along the normal: I for point and spot lights, L x area for a
+// triangle, L x pi r^2 (its projected area) for a sphere.
+bool light_bounds_of(const SceneDesc& scene, const LightTable& table, size_t slot, LightBounds& bounds) {
+  if (slot < table.delta_lights.size()) {
+    const LightDesc& l = scene.lights[size_t(table.delta_lights[slot])];
+    if (l.kind == LightKind::directional) return false;
+    float intensity = luminance(l.intensity);
+    if (l.kind == LightKind::point) bounds = point_light_bounds(l.position, {0, 0, 1}, -1, 0, intensity);
+    else if (l.use_cone)  // glTF: full intensity inside the inner cone, falling to 0 at the outer one
+      bounds = point_light_bounds(l.position, l.direction, std::cos(l.inner_cone),
+                                  std::cos(std::max(0.0f, l.outer_cone - l.inner_cone)), intensity);
+    else  // cos^exponent in front of the light, nothing behind it
+      bounds = point_light_bounds(l.position, l.direction, 1, 0, intensity);
+    return true;
+  }
+  const AreaLight& l = table.area_lights[slot - table.delta_lights.size()];
+  float radiance = luminance(scene.materials[size_t(l.material)].emission);
+  if (l.shape == AreaLightShape::sphere) {
+    vec3 r = {l.radius, l.radius, l.radius};
+    bounds = point_light_bounds(l.center, {0, 0, 1}, -1, 0, radiance * pi * l.radius * l.radius);
+    bounds.lower = l.center - r, bounds.upper = l.center + r;
+  } else {
+    bounds = point_light_bounds(l.p0, l.normal, 1, 0, radiance * l.area);
+    bounds.lower = min(l.p0, min(l.p1, l.p2)), bounds.upper = max(l.p0, max(l.p1, l.p2));
+  }
+  bounds.two_sided = l.two_sided;
+  return true;
+}
+
+// Sets the table's sampler and, for the BVH, builds the tree over the lights with a position and
+// the power selection among the lights at infinity and the tree. `power` holds each slot's
+// selection weight.
+void choose_light_sampler(const SceneDesc& scene, LightTable& table, const std::vector<double>& power,
+                          LightSampler requested, MemoryBudget* budget) {
+  size_t slots = table.delta_lights.size() + table.area_lights.size(), directional = 0;
+  for (int index : table.delta_lights) directional += scene.lights[size_t(index)].kind == LightKind::directional;
+  size_t bounded = slots - directional;
+  bool use_bvh = requested == LightSampler::bvh ||
+                 (requested == LightSampler::automatic && bounded >= light_bvh_min_lights);
+  table.sampler = use_bvh ? LightSampler::bvh : LightSampler::power;
+  if (!use_bvh) return;
+  table.bvh_memory = MemoryCharge(budget, light_bvh_bytes(bounded, slots), scene.source_path + ": the light BVH");
+  std::vector<BoundedLight> lights;
+  lights.reserve(bounded);
+  double total_intensity = 0, tree_power = 0;
+  for (size_t slot = 0; slot < slots; ++slot) {
+    BoundedLight light{int(slot), {}};
+    if (!light_bounds_of(scene, table, slot, light.bounds)) continue;
+    total_intensity += light.bounds.intensity;
+    tree_power += power[slot];
+    lights.push_back(light);
+  }
+  // Intensities as fractions of the whole: sums up the tree cannot overflow a float.
+  for (BoundedLight& l : lights) l.bounds.intensity = float(l.bounds.intensity / std::max(total_intensity, 1e-300));
+  table.bvh = build_light_bvh(std::move(lights), slots);
+
+  std::vector<double> weights;
+  for (size_t slot = 0; slot < table.delta_lights.size(); ++slot)
+    if (scene.lights[size_t(table.delta_lights[slot])].kind == LightKind::directional) {
+      table.infinite_lights.push_back(int(slot));
+      weights.push_back(power[slot]);
+    }
+  if (table.has_environment()) {
+    table.infinite_lights.push_back(int(table.environment_slot()));
+    weights.push_back(power[table.environment_slot()]);
+  }
+  weights.push_back(table.bvh.empty() ? 0 : tree_power);
+  table.infinite_selection = make_distribution(float_weights(weights));
+}
+
 }  // namespace
 
 std::unique_ptr<ImageSource> open_environment_map(const std::string& path) {
@@ -159,7 +231,7 @@ std::unique_ptr<ImageSource> open_environment_map(const std::string& path) {
 }
 
 LightTable make_light_table(const SceneDesc& scene, color3 environment_color, const std::string& environment_map_path,
-                            bool use_area_lights, MemoryBudget* budget) {
+                            bool use_area_lights, MemoryBudget* budget, LightSampler sampler) {
   LightTable table;
   if (use_area_lights)
     table.area_light_memory = MemoryCharge(budget, area_light_bytes(scene), scene.source_path + ": the area lights");
@@ -192,6 +264,8 @@ LightTable make_light_table(const SceneDesc& scene, color3 environment_color, co
     weights.push_back(std::max(average, 1e-6) * disk * 4);
   }
   table.selection = make_distribution(float_weights(weights));
+  // Whitted (no area lights) lights every point with every light: it chooses none.
+  choose_light_sampler(scene, table, weights, use_area_lights ? sampler : LightSampler::power, budget);
   return table;
 }
 

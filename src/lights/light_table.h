@@ -1,5 +1,6 @@
 // Every light of a scene in the form the integrators sample: delta lights, emissive triangles
-// and spheres as area lights, and the environment, chosen in proportion to their power.
+// and spheres as area lights, and the environment, chosen in proportion to their power or, with
+// many lights, by a light BVH (lights/light_selection.h chooses).
 #pragma once
 
 #include <cstdint>
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "image/image_io_module.h"
+#include "lights/light_bvh.h"
 #include "math/vec.h"
 #include "memory/memory_budget.h"
 #include "sampling/distribution.h"
@@ -49,6 +51,14 @@ struct LightTable {
 
   // Selection among [delta lights..., area lights..., environment] by power.
   Distribution1D selection;
+  // How a light is chosen (power or bvh, never automatic). With `bvh`, the lights at infinity
+  // (directional lights, the environment) and the tree as one entry are chosen by power, then a
+  // light of the tree by its importance at the shading point.
+  LightSampler sampler = LightSampler::power;
+  LightBvh bvh;                          // point and spot lights, emissive triangles and spheres
+  Distribution1D infinite_selection;     // over [infinite_lights..., the tree]
+  std::vector<int> infinite_lights;      // their slots in [delta lights..., area lights..., environment]
+  MemoryCharge bvh_memory;               // the tree, held against the budget
   std::vector<int> instance_light_base;  // first area light of each instance's triangles, or -1
   std::vector<int> shape_light;          // area light of each analytic shape, or -1
   MemoryCharge area_light_memory;        // held against the budget
@@ -56,12 +66,19 @@ struct LightTable {
   size_t environment_slot() const { return delta_lights.size() + area_lights.size(); }
 };
 
+// Lights with a position from which `automatic` chooses the BVH: with fewer, power sampling's
+// choice costs one table lookup, and a scene with one light pays nothing for the tree.
+constexpr size_t light_bvh_min_lights = 8;
+
 // Builds the table. `environment_color` and `environment_map_path` are the resolved background
-// (scene, then --env-color/--env). `budget` (when given) is charged for the area lights and the
-// environment map (by the size its header declares) before they are built. Throws
-// std::runtime_error when the map cannot be read, MemoryLimitError when the budget refuses.
+// (scene, then --env-color/--env). `budget` (when given) is charged for the area lights, the
+// light BVH and the environment map (by the size its header declares) before they are built.
+// `sampler` is how the path tracer will choose lights (`automatic` is resolved here; Whitted,
+// without area lights, gets power: it chooses none). Throws std::runtime_error when the map
+// cannot be read, MemoryLimitError when the budget refuses.
 LightTable make_light_table(const SceneDesc& scene, color3 environment_color, const std::string& environment_map_path,
-                            bool use_area_lights, MemoryBudget* budget = nullptr);
+                            bool use_area_lights, MemoryBudget* budget = nullptr,
+                            LightSampler sampler = LightSampler::automatic);
 
 // Opens an environment map and checks its header (readable, of a usable size): what `batch`
 // checks of every view before rendering. Throws std::runtime_error naming the file.

@@ -197,8 +197,10 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
                                          " channels (film, AOVs and output image)");
   bool path_like = s.mode != RenderMode::whitted;
   LightTable lights =
-      make_light_table(*prepared.scene, s.environment_color, s.environment_map, path_like, options.memory);
+      make_light_table(*prepared.scene, s.environment_color, s.environment_map, path_like, options.memory,
+                       options.light_sampler);
   lights.environment_scale = prepared.scene->environment.map_scale;
+  s.light_sampler = lights.sampler;
   MemoryCharge materials_memory(options.memory, shading_materials_bytes(*prepared.scene),
                                 prepared.scene->source_path + ": the materials prepared for shading");
   RenderContext ctx = make_context(prepared, s, lights, options);

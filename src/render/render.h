@@ -42,6 +42,7 @@ struct ResolvedSettings {
   std::string mode_reason;  // why auto picked the mode ("" when given)
   SamplerKind sampler = SamplerKind::jittered;
   ViewTransform view = ViewTransform::standard;
+  LightSampler light_sampler = LightSampler::power;  // as the light table resolved `automatic`
   CameraDesc camera;
   bool camera_framed = false;  // no camera in the file: one frames the scene
   color3 environment_color;

@@ -31,6 +31,7 @@ struct RenderOptions {
   std::optional<int> width, height, spp, max_depth;
   std::optional<RenderMode> mode;
   std::optional<SamplerKind> sampler;
+  LightSampler light_sampler = LightSampler::automatic;  // path and naive modes' light choice
   int threads = 0;  // 0 = all cores; more than the cores runs on the cores
   uint32_t seed = 0;
   std::string camera;  // name or index; empty = the first

@@ -173,6 +173,9 @@ enum class RenderMode { auto_select, whitted, path, naive };
 enum class SamplerKind { grid, random, jittered, sobol };
 // How radiance becomes a displayed value in 8- and 16-bit images (src/image/view_transform.h).
 enum class ViewTransform { standard, linear, filmic, agx };
+// How the path tracer chooses the light to sample at a point: in proportion to power, by a light
+// BVH's estimate of each light's contribution there, or the BVH when there are many lights.
+enum class LightSampler { automatic, power, bvh };
 
 // Render settings a scene file may carry; command-line flags override each one that is set.
 struct SceneSettings {

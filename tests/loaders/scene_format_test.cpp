@@ -270,3 +270,17 @@ TEST_CASE("asset room-older-format.scene: six walls, an emitting sphere, a mirro
   CHECK(scene.cameras.size() == 1);
   CHECK(scene.lights.empty());
 }
+
+TEST_CASE("asset many-lights.scene: 400 small emissive quads (800 triangles) over a floor with six balls") {
+  SceneDesc scene = load_asset("many-lights.scene");
+  size_t lamp_triangles = 0;
+  for (const InstanceDesc& instance : scene.instances) {
+    const MeshDesc& mesh = scene.meshes.at(size_t(instance.mesh));
+    if (mesh.material >= 0 && !is_black(scene.materials.at(size_t(mesh.material)).emission))
+      lamp_triangles += mesh.triangle_count();
+  }
+  CHECK(lamp_triangles == 2 * 400);
+  CHECK(scene.lights.empty());
+  CHECK(scene.shapes.size() == 7);  // the floor and six balls
+  CHECK(scene.settings.mode == RenderMode::path);
+}

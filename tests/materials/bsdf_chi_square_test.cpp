@@ -6,6 +6,7 @@
 #include <functional>
 
 #include "bsdf_test_configs.h"
+#include "support/chi_square.h"
 
 namespace radiant::test {
 namespace {
@@ -79,41 +80,6 @@ std::vector<double> expected_counts(const SurfaceMaterial& m, vec3 wo) {
   return counts;
 }
 
-// Upper tail of the chi-square distribution (Wilson-Hilferty normal approximation).
-double chi_square_p_value(double statistic, int dof) {
-  double k = dof, z = (std::cbrt(statistic / k) - (1 - 2 / (9 * k))) / std::sqrt(2 / (9 * k));
-  return 0.5 * std::erfc(z / std::sqrt(2.0));
-}
-
-// Pools cells expecting few samples (pbrt's rule), then returns the p-value; "" or a failure reason.
-std::string chi_square_test(const std::vector<double>& observed, const std::vector<double>& expected,
-                            double& p_value) {
-  std::vector<int> order(observed.size());
-  for (size_t i = 0; i < order.size(); ++i) order[i] = int(i);
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return expected[a] < expected[b]; });
-  double statistic = 0, pooled_observed = 0, pooled_expected = 0;
-  int dof = 0, pooled_cells = 0;
-  for (int cell : order) {
-    if (expected[cell] == 0) {
-      if (observed[cell] > sample_count * 1e-5) return "samples in a cell of zero probability";
-    } else if (expected[cell] < min_expected_count ||
-               (pooled_cells > 0 && pooled_expected < min_expected_count)) {
-      pooled_observed += observed[cell], pooled_expected += expected[cell], ++pooled_cells;
-    } else {
-      double d = observed[cell] - expected[cell];
-      statistic += d * d / expected[cell], ++dof;
-    }
-  }
-  if (pooled_cells > 0) {
-    double d = pooled_observed - pooled_expected;
-    statistic += d * d / pooled_expected, ++dof;
-  }
-  dof -= 1;
-  if (dof < 1) return "too few cells";
-  p_value = chi_square_p_value(statistic, dof);
-  return "";
-}
-
 void run_chi_square_tests(const std::vector<BsdfConfig>& configs) {
   int test_count = int(non_delta_configs().size() * std::size(wo_cosines));
   double corrected = 1 - std::pow(1 - significance, 1.0 / test_count);  // Sidak
@@ -124,7 +90,7 @@ void run_chi_square_tests(const std::vector<BsdfConfig>& configs) {
       std::vector<double> observed = observed_counts(config.material, wo, seed++);
       std::vector<double> expected = expected_counts(config.material, wo);
       double p_value = 0;
-      std::string failure = chi_square_test(observed, expected, p_value);
+      std::string failure = chi_square_test(observed, expected, sample_count, min_expected_count, p_value);
       INFO(config.name, ", cos(wo) = ", cos_wo, ", p-value = ", p_value);
       CHECK(failure == "");
       CHECK(p_value > corrected);

@@ -1,0 +1,51 @@
+// A bounding volume hierarchy over the lights that have a position, for choosing one in
+// proportion to its estimated contribution at a shading point (pbrt-v4's BVHLightSampler,
+// Cycles' light tree): each step down picks a child by its importance, and the probability of
+// a light is the product of those choices along its path from the root.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "lights/light_bounds.h"
+
+namespace radiant {
+
+struct LightBvhNode {
+  LightBounds bounds;       // of every light below
+  int parent = -1;          // -1 for the root
+  int second_child = -1;    // interior nodes: the first child is the next node
+  int light = -1;           // leaves: the light's slot in the light table
+  bool is_leaf() const { return light >= 0; }
+};
+
+struct LightBvh {
+  std::vector<LightBvhNode> nodes;  // root first, depth-first
+  std::vector<int> leaf_of_light;   // leaf node of each light-table slot, -1 outside the tree
+  bool empty() const { return nodes.empty(); }
+};
+
+// A light of the tree to put in: its slot in the light table and its bounds.
+struct BoundedLight {
+  int slot = 0;
+  LightBounds bounds;
+};
+
+// Bytes build_light_bvh needs for `lights` lights out of `slots` table slots (tree and scratch),
+// for charging the memory budget first.
+uint64_t light_bvh_bytes(uint64_t lights, uint64_t slots);
+
+// Builds the tree over `lights` (those of intensity 0 are left out: they are never chosen), split
+// by pbrt-v4's cost of position and orientation; `slots` sizes leaf_of_light.
+LightBvh build_light_bvh(std::vector<BoundedLight> lights, size_t slots);
+
+// Chooses a light for point `p` with shading normal `n` (zero in a medium) from u in [0,1):
+// sets its table slot and the probability of choosing it (the probabilities of all lights sum to
+// one at every point). False only for an empty tree.
+bool sample_light_bvh(const LightBvh& bvh, vec3 p, vec3 n, float u, int& slot, float& probability);
+
+// The probability that sample_light_bvh chooses table slot `slot` at (p, n), found by walking
+// from its leaf to the root; 0 for a slot outside the tree.
+float light_bvh_probability(const LightBvh& bvh, vec3 p, vec3 n, int slot);
+
+}  // namespace radiant
