@@ -106,9 +106,11 @@ struct PassRunner {
     for (uint32_t index = first; index < end; ++index) {
       SampleContext sample{s.sampler, uint32_t(y) * uint32_t(s.width) + uint32_t(x), index, uint32_t(s.spp), seed};
       vec2 offset = sample_pixel(sample);
-      Ray ray = generate_camera_ray(frame, float(x) + offset.x, float(y) + offset.y);
+      vec2 lens = frame.lens_radius > 0 ? sample_2d(sample, lens_dimension) : vec2{0.5f, 0.5f};
+      std::optional<Ray> ray = generate_camera_ray(frame, float(x) + offset.x, float(y) + offset.y, lens);
       FirstHit first_hit;
-      color3 value = radiance(ctx, ray, sample, c, want_aovs ? &first_hit : nullptr);
+      // Where the projection sees nothing (outside a fisheye's circle) the sample is black.
+      color3 value = ray ? radiance(ctx, *ray, sample, c, want_aovs ? &first_hit : nullptr) : color3{};
       if (!is_finite(value) || (want_aovs && !is_finite(first_hit))) {
         c.nonfinite_samples++;  // dropped, AOVs and all: never reaches the film
         continue;

@@ -15,7 +15,9 @@ namespace radiant {
 
 // ---------------------------------------------------------------- cameras
 
-enum class Projection { perspective, orthographic };
+// Equirectangular: longitude across the image (the view direction at its centre), latitude
+// down it. Fisheye: equidistant, the field of view across the circle inscribed in the image.
+enum class Projection { perspective, orthographic, equirectangular, fisheye };
 
 struct CameraDesc {
   std::string name;
@@ -25,6 +27,11 @@ struct CameraDesc {
   vec3 up = {0, 1, 0};        // unit, orthogonal to forward
   float vertical_fov_degrees = 45;  // perspective
   float ortho_height = 2;           // orthographic: full height of the view volume
+  float fisheye_fov_degrees = 180;  // fisheye
+  // Thin lens (perspective and orthographic, as pbrt's lensradius and focaldistance): 0 = pinhole.
+  float lens_radius = 0;
+  float focus_distance = 0;  // along the view direction; 0 = unset
+  int aperture_blades = 0;   // 0 = a round aperture, 3 or more a regular polygon
   float aspect = 0;                 // width / height; 0 = take it from the image size
   int width = 0, height = 0;        // image size the file asks for; 0 = unset
 };

@@ -138,6 +138,11 @@ struct Checker {
     in_range(s.radius, where + ".radius");
     if (s.kind == ShapeKind::cylinder && (!(s.height > 0) || !std::isfinite(s.height)))
       fail(where + ".height", "must be positive");
+    if (!(c.fisheye_fov_degrees > 0 && c.fisheye_fov_degrees <= 360)) fail(where, "fisheye field of view out of (0, 360]");
+    if (!(c.lens_radius >= 0)) fail(where + ".lens_radius", "must not be negative");
+    in_range(c.lens_radius, where + ".lens_radius");
+    if (!(c.focus_distance >= 0)) fail(where + ".focus_distance", "must not be negative");
+    in_range(c.focus_distance, where + ".focus_distance");
     if (s.kind == ShapeKind::cylinder) in_range(s.height, where + ".height");
   }
 
