@@ -152,9 +152,11 @@ void apply_camera_override(CameraDesc& camera, const CameraOverride& o) {
   }
   if (o.up && !(length(*o.up) > 0 && is_finite(*o.up))) throw std::invalid_argument("--up must be a non-zero vector");
   vec3 up = o.up ? *o.up : camera.up;
-  if (o.projection) {
+  if (o.projection && *o.projection != camera.projection) {
     camera.projection = *o.projection;
-    // Default image shapes: the whole sphere at equal angular steps, the fisheye's circle.
+    // The file's image size belongs to its own projection. Default shapes: the whole sphere at
+    // equal angular steps, the fisheye's circle, the file's aspect otherwise.
+    camera.width = camera.height = 0;
     if (camera.projection == Projection::equirectangular) camera.aspect = 2;
     if (camera.projection == Projection::fisheye) camera.aspect = 1;
   }

@@ -101,6 +101,12 @@ TEST_CASE("camera flags: the .scene camera's panorama attribute sets the project
   r = run_radiant("render " + quoted(fisheye) + " -o " + quoted(dir.file("f.exr")) + " --height 6 --spp 1 --quiet");
   REQUIRE(r.exit_code == 0);
   CHECK(read_image(dir.file("f.exr")).width == 6);
+  // The equirect camera's own 2:1 resolution does not follow it into --camera-type fisheye.
+  fs::path sized = dir.write("s.scene", "@camera\nposition 0 0 5\ndirection 0 0 -1\npanorama equirect\nresolution 16 8\n" +
+                                           std::string(sphere_scene));
+  r = run_radiant("render " + quoted(sized) + " -o " + quoted(dir.file("s.exr")) + " --camera-type fisheye --width 6 --spp 1 --quiet");
+  REQUIRE(r.exit_code == 0);
+  CHECK(read_image(dir.file("s.exr")).height == 6);
   fs::path bad = dir.write("bad.scene", "@camera\nposition 0 0 5\ndirection 0 0 -1\nfisheye-fov 90\n" + std::string(sphere_scene));
   r = run_radiant("render " + quoted(bad) + " -o " + quoted(dir.file("b.exr")) + " --spp 1 --quiet");
   CHECK(r.exit_code == 1);
