@@ -20,6 +20,8 @@ namespace {
 const std::vector<std::string> supported_extensions = {
     "KHR_lights_punctual",       "KHR_materials_emissive_strength", "KHR_texture_transform",
     "KHR_materials_transmission", "KHR_materials_ior",              "KHR_materials_unlit",
+    "KHR_materials_specular",     "KHR_materials_clearcoat",        "KHR_materials_sheen",
+    "KHR_materials_volume",       "KHR_materials_iridescence",      "KHR_materials_anisotropy",
     "KHR_mesh_quantization"};
 
 bool is_supported(const std::string& name) {

@@ -80,17 +80,20 @@ std::vector<uint32_t> vertex_order(const GltfContext& context, const tinygltf::P
 
 void fill_shading_frames(GltfContext& context, MeshDesc& mesh, bool has_normals, const std::string& where) {
   const MaterialDesc& material = context.scene.materials[mesh.material];
-  bool normal_mapped = material.normal_texture.valid() && !mesh.texcoords0.empty();
-  context.charge(shading_frame_bytes(mesh, material.normal_texture.valid()), where);
+  // Normal maps and anisotropy (KHR_materials_anisotropy) are both written in the tangent frame.
+  bool needs_tangents = material.normal_texture.valid() || material.anisotropy_strength > 0;
+  bool normal_mapped = needs_tangents && !mesh.texcoords0.empty();
+  context.charge(shading_frame_bytes(mesh, needs_tangents), where);
   if (!has_normals) {
     // glTF 3.7.2.1: without normals, clients MUST calculate flat normals and ignore the tangents.
     shade_flat(mesh, normal_mapped);
   } else if (size_t bad = repair_normals(mesh)) {
     context.warn(where + ".attributes.NORMAL: " + std::to_string(bad) + " zero-length normals recomputed");
   }
-  if (mesh.tangents.empty() && material.normal_texture.valid()) {
+  if (mesh.tangents.empty() && needs_tangents) {
     if (mesh.texcoords0.empty())
-      context.warn(where + ": normal map without TEXCOORD_0; tangents cannot be generated");
+      context.warn(where + (material.normal_texture.valid() ? ": normal map" : ": anisotropic material") +
+                   " without TEXCOORD_0; tangents cannot be generated");
     else
       generate_tangents(mesh);
   }

@@ -17,6 +17,7 @@
 #include "integrators/naive.h"
 #include "integrators/path.h"
 #include "integrators/whitted.h"
+#include "materials/volume_absorption.h"
 #include "render/camera.h"
 
 namespace radiant {
@@ -42,6 +43,8 @@ RenderContext make_context(const PreparedScene& prepared, const ResolvedSettings
   for (const MaterialDesc& m : scene.materials) ctx.flat_materials.push_back(resolve_material(scene, m, {}));
   ctx.flat_bsdf_materials.reserve(scene.materials.size());
   for (const SurfaceMaterial& m : ctx.flat_materials) ctx.flat_bsdf_materials.emplace_back(m);
+  ctx.absorption.reserve(scene.materials.size());
+  for (const MaterialDesc& m : scene.materials) ctx.absorption.push_back(volume_absorption(m));
   ctx.effects = s.effects;
   ctx.max_depth = s.max_depth;
   ctx.contribution_cutoff = options.contribution_cutoff;
@@ -50,7 +53,7 @@ RenderContext make_context(const PreparedScene& prepared, const ResolvedSettings
 
 // What make_context's per-material tables take.
 uint64_t shading_materials_bytes(const SceneDesc& scene) {
-  return saturating_multiply(scene.materials.size(), sizeof(SurfaceMaterial) + sizeof(BsdfMaterial));
+  return saturating_multiply(scene.materials.size(), sizeof(SurfaceMaterial) + sizeof(BsdfMaterial) + sizeof(color3));
 }
 
 RadianceFunction select_integrator(const ResolvedSettings& s) {

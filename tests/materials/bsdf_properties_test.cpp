@@ -40,7 +40,7 @@ TEST_CASE("bsdf energy: directional albedo never exceeds 1") {
 }
 
 TEST_CASE("bsdf energy: white furnace, a white Lambertian reflects exactly everything") {
-  SurfaceMaterial white = metallic_roughness({1, 1, 1}, 0, 1);
+  SurfaceMaterial white = gltf_lambert({1, 1, 1});
   for (float cos_wo : wo_cosines) {
     color3 albedo = directional_albedo(white, {0, 0, 1}, spherical_direction(cos_wo, 1), 4000, 3);
     CHECK(albedo.x == doctest::Approx(1).epsilon(1e-5));
