@@ -174,6 +174,7 @@ void RenderFlags::bind(CLI::App& app, bool image_flags) {
   app.add_option("--sampler", sampler, "grid, random, jittered (Whitted default) or sobol (path default)");
   app.add_option("--camera", options.camera, "Camera name or index (default: the first)");
   app.add_option("--scene", gltf_scene, "glTF scene index (default: the file's default scene)")->check(CLI::NonNegativeNumber);
+  app.add_option("--variant", variant, "glTF material variant by name (KHR_materials_variants)");
   app.add_option("--env-color", env_color, "Uniform environment radiance R,G,B (linear)");
   app.add_option("--env", options.env_map, "Equirectangular environment map (.exr or .hdr)");
   app.add_option("--look-from", look_from, "Camera position X,Y,Z");

@@ -39,7 +39,7 @@ const char* sampler_name(SamplerKind kind);
 // parsing to convert the string flags.
 struct RenderFlags {
   RenderOptions options;
-  std::string mode, sampler, env_color, crop, aovs, look_from, look_at, up, camera_type;
+  std::string mode, sampler, env_color, crop, aovs, look_from, look_at, up, camera_type, variant;
   int width = 0, height = 0, spp = 0, max_depth = 0, gltf_scene = -1;
   float fov = 0;
   float lens_radius = -1, focus_distance = 0;  // unset: -1, 0

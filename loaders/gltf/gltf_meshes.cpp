@@ -4,6 +4,7 @@
 
 #include "gltf/gltf_accessors.h"
 #include "gltf/gltf_materials.h"
+#include "gltf/gltf_variants.h"
 #include "scene/mesh_ops.h"
 #include "scene/scene_memory.h"
 
@@ -128,7 +129,8 @@ bool convert_primitive(GltfContext& context, const tinygltf::Primitive& primitiv
   // A strip or a fan lists each triangle's three corners again.
   context.charge(saturating_multiply(order.size(), primitive.mode == TINYGLTF_MODE_TRIANGLES ? 4 : 12), where);
   mesh.indices = triangles_of(primitive.mode, order);
-  mesh.material = scene_material(context, primitive.material, where + ".material");
+  mesh.material = scene_material(context, variant_material(context, primitive, context.variant, where),
+                                 where + ".material");
   context.scene.degenerate_triangles_dropped += drop_degenerate_triangles(mesh);
   if (mesh.indices.empty()) {
     context.warn(where + ": no triangles left; primitive skipped");

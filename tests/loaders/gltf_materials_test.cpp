@@ -142,3 +142,58 @@ TEST_CASE("gltf: a normal-mapped primitive without NORMAL gets flat normals on u
     CHECK(mesh.tangents[i].x == doctest::Approx(1));  // generated along +u = +x
   }
 }
+
+TEST_CASE("gltf materials: KHR_materials_variants picks each primitive's material by --variant name") {
+  ScratchDir dir("gltf-variants");
+  GltfBuilder b = quad_builder();
+  std::string body =
+      "\"materials\":[{\"name\":\"plain\"},{\"name\":\"red\"},{\"name\":\"blue\"}],"
+      "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0},\"indices\":1,\"material\":0,"
+      "\"extensions\":{\"KHR_materials_variants\":{\"mappings\":[{\"material\":1,\"variants\":[0]},"
+      "{\"material\":2,\"variants\":[1,2]}]}}}]}],"
+      "\"nodes\":[{\"mesh\":0}],\"scenes\":[{\"nodes\":[0]}],\"extensionsUsed\":[\"KHR_materials_variants\"],"
+      "\"extensions\":{\"KHR_materials_variants\":{\"variants\":[{\"name\":\"red shoe\"},{\"name\":\"blue shoe\"},"
+      "{\"name\":\"night\"}]}}";
+  std::string path = dir.write("v.gltf", b.gltf(body)).string();
+  auto material_name = [&](const std::string& variant) {
+    LoadOptions options;
+    options.material_variant = variant;
+    SceneDesc scene = load_scene(path, options);
+    CHECK(scene.warnings.empty());
+    return scene.materials.at(size_t(scene.meshes.at(0).material)).name;
+  };
+  CHECK(material_name("") == "plain");
+  CHECK(material_name("red shoe") == "red");
+  CHECK(material_name("blue shoe") == "blue");
+  CHECK(material_name("night") == "blue");
+  LoadOptions unknown;
+  unknown.material_variant = "green";
+  CHECK_THROWS_WITH_AS(load_scene(path, unknown),
+                       (path + ": no material variant 'green' (variants: red shoe, blue shoe, night)").c_str(), LoadError);
+  std::string plain = dir.write("plain.gltf", quad_builder().gltf(std::string(quad_mesh) + ",\"nodes\":[{\"mesh\":0}],"
+                                                                  "\"scenes\":[{\"nodes\":[0]}]")).string();
+  CHECK_THROWS_WITH_AS(load_scene(plain, unknown),
+                       (plain + ": no material variant 'green' (the file has no KHR_materials_variants)").c_str(),
+                       LoadError);
+  std::string obj = dir.write("t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").string();
+  CHECK_THROWS_WITH_AS(load_scene(obj, unknown),
+                       (obj + ": material variants (--variant) are a glTF extension (KHR_materials_variants)").c_str(),
+                       LoadError);
+}
+
+TEST_CASE("gltf materials: a variant mapping to a material out of range names its place") {
+  ScratchDir dir("gltf-variant-range");
+  GltfBuilder b = quad_builder();
+  std::string body =
+      "\"materials\":[{}],\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0},\"indices\":1,"
+      "\"extensions\":{\"KHR_materials_variants\":{\"mappings\":[{\"material\":5,\"variants\":[0]}]}}}]}],"
+      "\"nodes\":[{\"mesh\":0}],\"scenes\":[{\"nodes\":[0]}],"
+      "\"extensions\":{\"KHR_materials_variants\":{\"variants\":[{\"name\":\"a\"}]}}";
+  std::string path = dir.write("v.gltf", b.gltf(body)).string();
+  LoadOptions options;
+  options.material_variant = "a";
+  CHECK_THROWS_WITH_AS(load_scene(path, options),
+                       (path + ": meshes[0].primitives[0].extensions.KHR_materials_variants.mappings[0].material: "
+                               "material 5 out of range (1 materials)").c_str(),
+                       LoadError);
+}
