@@ -15,17 +15,6 @@ std::vector<BsdfConfig> all_configs() {
   return configs;
 }
 
-// Directional albedo: the mean sample weight, absorbed samples counting 0.
-color3 directional_albedo(const SurfaceMaterial& m, vec3 n, vec3 wo, int samples, unsigned seed) {
-  UniformRandom random(seed);
-  color3 sum;
-  for (int k = 0; k < samples; ++k) {
-    float u_lobe = random.next();
-    if (auto s = Bsdf(m, n, wo).sample(u_lobe, random.next2())) sum += s->weight;
-  }
-  return sum / float(samples);
-}
-
 TEST_CASE("bsdf energy: directional albedo never exceeds 1") {
   unsigned seed = 7;
   for (const BsdfConfig& config : all_configs()) {

@@ -147,6 +147,17 @@ inline std::vector<BsdfConfig> delta_configs() {
   };
 }
 
+// Directional albedo: the mean sample weight, absorbed samples counting 0.
+inline color3 directional_albedo(const SurfaceMaterial& m, vec3 n, vec3 wo, int samples, unsigned seed) {
+  UniformRandom random(seed);
+  color3 sum;
+  for (int k = 0; k < samples; ++k) {
+    float u_lobe = random.next();
+    if (auto s = Bsdf(m, n, wo).sample(u_lobe, random.next2())) sum += s->weight;
+  }
+  return sum / float(samples);
+}
+
 // A unit direction at polar cosine `cos_theta` from +z, azimuth `phi`.
 inline vec3 spherical_direction(float cos_theta, float phi) {
   float sin_theta = std::sqrt(std::max(0.0f, 1 - cos_theta * cos_theta));

@@ -11,13 +11,7 @@ namespace {
 constexpr vec3 up = {0, 0, 1};
 
 color3 albedo(const SurfaceMaterial& m, vec3 wo, int samples = 20000) {
-  UniformRandom random(31);
-  color3 sum;
-  for (int k = 0; k < samples; ++k) {
-    float u_lobe = random.next();
-    if (auto s = Bsdf(m, up, wo).sample(u_lobe, random.next2())) sum += s->weight;
-  }
-  return sum / float(samples);
+  return directional_albedo(m, up, wo, samples, 31);
 }
 
 TEST_CASE("clearcoat: a smooth coat over a black base is a dielectric mirror of ior 1.5 times the factor") {

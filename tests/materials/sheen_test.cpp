@@ -10,13 +10,7 @@ namespace {
 constexpr vec3 up = {0, 0, 1};
 
 color3 albedo(const SurfaceMaterial& m, vec3 wo, int samples = 40000) {
-  UniformRandom random(41);
-  color3 sum;
-  for (int k = 0; k < samples; ++k) {
-    float u_lobe = random.next();
-    if (auto s = Bsdf(m, up, wo).sample(u_lobe, random.next2())) sum += s->weight;
-  }
-  return sum / float(samples);
+  return directional_albedo(m, up, wo, samples, 41);
 }
 
 TEST_CASE("sheen: over a black base the surface reflects the sheen colour times the tabulated albedo E") {

@@ -10,15 +10,8 @@ namespace {
 
 constexpr vec3 up = {0, 0, 1};
 
-// Directional albedo of `m` seen from wo: the mean sample weight, absorbed samples counting 0.
 color3 albedo(const SurfaceMaterial& m, vec3 wo, int samples = 40000) {
-  UniformRandom random(21);
-  color3 sum;
-  for (int k = 0; k < samples; ++k) {
-    float u_lobe = random.next();
-    if (auto s = Bsdf(m, up, wo).sample(u_lobe, random.next2())) sum += s->weight;
-  }
-  return sum / float(samples);
+  return directional_albedo(m, up, wo, samples, 21);
 }
 
 // The reflectance of a smooth black dielectric's mirror lobe at wo (its only lobe).
