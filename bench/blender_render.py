@@ -1,6 +1,7 @@
 """Renders a glTF file with Blender Cycles the way radiant renders it (run by bench scripts):
 
-    blender -b --factory-startup -P bench/blender_render.py -- SCENE.gltf OUT SIZE SPP MAX_DEPTH SEED THREADS
+    blender -b --factory-startup -P bench/blender_render.py -- SCENE.gltf OUT SIZE SPP MAX_DEPTH SEED THREADS \
+        [env=R,G,B] [principled]
 
 Settings that would make Cycles do different work than radiant are switched off: adaptive
 sampling, denoising, clamping, light-threshold culling, the Blackman-Harris pixel filter (a
@@ -8,7 +9,9 @@ one-pixel box, as radiant's), and the Filmic view (Standard: sRGB, clamped, as r
 MAX_DEPTH counts surface interactions as radiant's --max-depth does, so Cycles gets
 MAX_DEPTH - 1 bounces. Every non-metallic Principled BSDF becomes a Diffuse BSDF plus its emission
 (see as_lambert): radiant's Lambertian glTF material, metallic 0 with KHR_materials_specular
-factor 0, which Blender 3.4's importer does not read. OUT ending in
+factor 0, which Blender 3.4's importer does not read; `principled` keeps the imported Principled
+BSDF instead (the material comparisons of bench/material_balls.sh). `env=R,G,B` is the world's
+uniform radiance (radiant's --env-color; default black). OUT ending in
 .exr is written linear, anything else as 8-bit sRGB. Prints "render seconds: S" (scene sync, BVH
 and sampling, measured around the render call) for the bench script to read.
 """
@@ -25,6 +28,8 @@ if not hasattr(numpy, "bool"):
 args = sys.argv[sys.argv.index("--") + 1:]
 scene_path, out_path = args[0], args[1]
 size, spp, max_depth, seed, threads = (int(a) for a in args[2:7])
+environment = next((tuple(float(c) for c in a[4:].split(",")) for a in args[7:] if a.startswith("env=")), (0, 0, 0))
+keep_principled = "principled" in args[7:]
 
 bpy.ops.wm.read_factory_settings(use_empty=True)
 bpy.ops.import_scene.gltf(filepath=scene_path)
@@ -61,7 +66,7 @@ def as_lambert(material):
 
 
 for material in bpy.data.materials:
-    if material.node_tree:
+    if material.node_tree and not keep_principled:
         as_lambert(material)
 
 scene.render.engine = "CYCLES"
@@ -90,9 +95,9 @@ scene.view_settings.view_transform = "Standard"
 scene.view_settings.look = "None"
 scene.view_settings.exposure = 0.0
 scene.view_settings.gamma = 1.0
-scene.world = bpy.data.worlds.new("black") if scene.world is None else scene.world
+scene.world = bpy.data.worlds.new("background") if scene.world is None else scene.world
 scene.world.use_nodes = False
-scene.world.color = (0.0, 0.0, 0.0)
+scene.world.color = environment
 
 settings = scene.render.image_settings
 if out_path.endswith(".exr"):

@@ -322,6 +322,7 @@ void run_converge(const std::string& scene_path, ConvergeFlags& flags, std::vect
   load_options.allow_external_files = flags.render.allow_external_files;
   load_options.budget = &budget;
   load_options.gltf_scene = flags.render.gltf_scene;
+  load_options.material_variant = flags.render.variant;
   PreparedScene prepared = prepare_scene(load_scene(scene_path, load_options), options);
   check_outputs_spare_scene_files(prepared.scene->input_files, {{"the report file", files.csv.string()},
                                                                 {"the report file", files.json.string()},

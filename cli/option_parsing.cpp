@@ -9,6 +9,7 @@
 
 #include "image/view_transform.h"
 #include "lights/light_table.h"
+#include "scene/coordinate_range.h"
 
 namespace radiant::cli {
 
@@ -98,6 +99,15 @@ LightSampler parse_light_sampler(const std::string& flag, const std::string& tex
   if (text == "power") return LightSampler::power;
   if (text == "bvh") return LightSampler::bvh;
   throw CLI::ValidationError(flag, "unknown light sampler '" + text + "' (expected auto, power or bvh)");
+}
+
+Projection parse_camera_type(const std::string& flag, const std::string& text) {
+  if (text == "perspective") return Projection::perspective;
+  if (text == "orthographic") return Projection::orthographic;
+  if (text == "equirect") return Projection::equirectangular;
+  if (text == "fisheye") return Projection::fisheye;
+  throw CLI::ValidationError(flag, "unknown camera type '" + text +
+                                       "' (expected perspective, orthographic, equirect or fisheye)");
 }
 
 PixelWindow parse_window(const std::string& flag, const std::string& text) {
@@ -260,12 +270,20 @@ void RenderFlags::bind(CLI::App& app, bool image_flags) {
                      std::to_string(light_bvh_min_lights) + " lights with a position; default)");
   app.add_option("--camera", options.camera, "Camera name or index (default: the first)");
   app.add_option("--scene", gltf_scene, "glTF scene index (default: the file's default scene)")->check(CLI::NonNegativeNumber);
+  app.add_option("--variant", variant, "glTF material variant by name (KHR_materials_variants)");
   app.add_option("--env-color", env_color, "Uniform environment radiance R,G,B (linear)");
   app.add_option("--env", options.env_map, "Equirectangular environment map (.exr or .hdr)");
   app.add_option("--look-from", look_from, "Camera position X,Y,Z");
   app.add_option("--look-at", look_at, "Point the camera looks at X,Y,Z");
   app.add_option("--up", up, "Camera up vector X,Y,Z");
-  app.add_option("--fov", fov, "Vertical field of view in degrees")->check(positive_number(180));
+  app.add_option("--fov", fov, "Vertical field of view in degrees (a fisheye's whole one, up to 360)")
+      ->check(positive_number(360));
+  app.add_option("--camera-type", camera_type, "perspective, orthographic, equirect (360 degrees) or fisheye");
+  app.add_option("--lens-radius", lens_radius, "Thin-lens aperture radius in scene units (0 = pinhole)")
+      ->check(number_in(0, max_scene_coordinate));
+  app.add_option("--focus-distance", focus_distance, "Distance in focus along the view (default: to --look-at)")
+      ->check(positive_number(max_scene_coordinate));
+  app.add_option("--blades", blades, "Aperture blades: a polygonal bokeh (0 = round)")->check(CLI::Range(0, 64));
   app.add_option("--effects", options.effects, "Switch effects off/on: e.g. -shadows,-indirect, or 'all' (generic integrator)");
   app.add_flag("--allow-external-files", allow_external_files, "Let scene files refer to files outside their folder");
   app.add_option("--max-memory", max_memory,
@@ -300,6 +318,11 @@ void RenderFlags::finish() {
   if (!look_at.empty()) options.camera_override.look_at = parse_vec3("--look-at", look_at);
   if (!up.empty()) options.camera_override.up = parse_vec3("--up", up);
   if (fov != 0) options.camera_override.fov_degrees = fov;
+  if (!camera_type.empty()) options.camera_override.projection = parse_camera_type("--camera-type", camera_type);
+  if (lens_radius >= 0) options.camera_override.lens_radius = lens_radius;
+  if (focus_distance > 0) options.camera_override.focus_distance = focus_distance;
+  if (blades == 1 || blades == 2) throw CLI::ValidationError("--blades", "an aperture needs 0 (round) or at least 3 blades");
+  if (blades >= 0) options.camera_override.aperture_blades = blades;
   if (!max_memory.empty()) max_memory_bytes = parse_memory_limit("--max-memory", max_memory);
 }
 

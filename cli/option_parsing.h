@@ -33,6 +33,7 @@ vec3 parse_vec3(const std::string& flag, const std::string& text);
 RenderMode parse_mode(const std::string& flag, const std::string& text);
 SamplerKind parse_sampler(const std::string& flag, const std::string& text);
 LightSampler parse_light_sampler(const std::string& flag, const std::string& text);
+Projection parse_camera_type(const std::string& flag, const std::string& text);
 PixelWindow parse_window(const std::string& flag, const std::string& text);
 std::vector<std::string> parse_aovs(const std::string& flag, const std::string& text);
 // --time-limit's check: seconds in (0, max_time_limit_seconds] (CLI::PositiveNumber lets NaN
@@ -48,9 +49,11 @@ const char* sampler_name(SamplerKind kind);
 // parsing to convert the string flags.
 struct RenderFlags {
   RenderOptions options;
-  std::string mode, sampler, light_sampler, env_color, crop, aovs, look_from, look_at, up, view;
+  std::string mode, sampler, light_sampler, env_color, crop, aovs, look_from, look_at, up, view, camera_type, variant;
   int width = 0, height = 0, spp = 0, max_depth = 0, gltf_scene = -1;
   float fov = 0;
+  float lens_radius = -1, focus_distance = 0;  // unset: -1, 0
+  int blades = -1;                             // unset: -1
   bool allow_external_files = false;
   std::string max_memory;                   // GiB, as given
   std::optional<uint64_t> max_memory_bytes;  // set by finish() when --max-memory is given

@@ -100,6 +100,7 @@ int render_main(int argc, char** argv) {
     load_options.allow_external_files = flags.allow_external_files;
     load_options.budget = &budget;
     load_options.gltf_scene = flags.gltf_scene;
+    load_options.material_variant = flags.variant;
     SceneDesc scene = load_scene(scene_path, load_options);
     times.load = seconds_since(start);
     if (!options.quiet)

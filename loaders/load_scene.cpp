@@ -64,6 +64,8 @@ static SceneDesc load_by_extension(const std::string& path, const LoadOptions& o
   check_input_file(path, path, options);
   std::string ext = lowercase_extension(path);
   if (ext == ".gltf" || ext == ".glb") return load_gltf(path, options);
+  if (!options.material_variant.empty())
+    throw LoadError(path + ": material variants (--variant) are a glTF extension (KHR_materials_variants)");
   if (ext == ".obj") return load_obj(path, options);
   if (ext == ".scene") {
     std::ifstream in(path, std::ios::binary);

@@ -26,6 +26,7 @@ struct LoadOptions {
   MemoryBudget* budget = nullptr;
   size_t max_memory_bytes = 0;  // the limit of that own budget; 0 = default_memory_limit()
   int gltf_scene = -1;          // glTF scene index; -1 = the file's default scene
+  std::string material_variant;  // KHR_materials_variants: the variant to use; "" = the default materials
   // Every file the load reads is appended here (load_scene sets it; SceneDesc::input_files).
   std::vector<std::string>* files_read = nullptr;
 };

@@ -3,7 +3,8 @@
 
 Source data: https://www.graphics.cornell.edu/online/box/data.html (millimetres, camera looking
 along +z from (278, 273, -800), 35 mm lens on a 25 mm film: 39.3 degrees vertical fov).
-Walls are Lambertian (roughness 1, metallic 0) with the usual reflectances; the ceiling light is
+Walls are Lambertian (metallic 0, KHR_materials_specular specularFactor 0: no Fresnel layer) with
+the usual reflectances; the ceiling light is
 an emissive quad of radiance (17, 12, 4) = emissiveFactor x KHR_materials_emissive_strength.
 Run from the repository root: python3 scripts/make_cornell_gltf.py
 """
@@ -132,17 +133,18 @@ def build():
     materials = []
     for name, color, emission in MATERIALS:
         material = {"name": name, "pbrMetallicRoughness": {
-            "baseColorFactor": list(color) + [1.0], "metallicFactor": 0.0, "roughnessFactor": 1.0}}
+            "baseColorFactor": list(color) + [1.0], "metallicFactor": 0.0, "roughnessFactor": 1.0},
+            "extensions": {"KHR_materials_specular": {"specularFactor": 0.0}}}
         if emission:
             factor, strength = emission
             material["emissiveFactor"] = list(factor)
-            material["extensions"] = {"KHR_materials_emissive_strength": {"emissiveStrength": strength}}
+            material["extensions"]["KHR_materials_emissive_strength"] = {"emissiveStrength": strength}
         materials.append(material)
     vertical_fov = 2 * math.atan(12.5 / 35)
     return {
         "asset": {"version": "2.0", "generator": "radiant scripts/make_cornell_gltf.py",
                   "copyright": "CC0 1.0; geometry from the Cornell University Program of Computer Graphics"},
-        "extensionsUsed": ["KHR_materials_emissive_strength"],
+        "extensionsUsed": ["KHR_materials_emissive_strength", "KHR_materials_specular"],
         "scene": 0,
         "scenes": [{"name": "Cornell box", "nodes": list(range(len(nodes)))}],
         "nodes": nodes,

@@ -24,6 +24,7 @@ struct GltfContext {
   std::vector<std::vector<int>> mesh_parts;  // glTF mesh -> its MeshDesc indices (one per primitive)
   std::map<int, int> mirrored_meshes;        // MeshDesc -> its copy with reversed winding
   int default_material = -1;                 // the glTF default material, made on first use
+  int variant = -1;                          // the KHR_materials_variants index in use, or -1
 
   // Throws `file: where: message`.
   [[noreturn]] void fail(const std::string& where, const std::string& message) const {

@@ -9,6 +9,7 @@
 #include "gltf/gltf_declarations.h"
 #include "gltf/gltf_files.h"
 #include "gltf/gltf_materials.h"
+#include "gltf/gltf_variants.h"
 #include "gltf/gltf_memory.h"
 #include "gltf/gltf_meshes.h"
 #include "gltf/gltf_nodes.h"
@@ -20,7 +21,9 @@ namespace {
 const std::vector<std::string> supported_extensions = {
     "KHR_lights_punctual",       "KHR_materials_emissive_strength", "KHR_texture_transform",
     "KHR_materials_transmission", "KHR_materials_ior",              "KHR_materials_unlit",
-    "KHR_mesh_quantization"};
+    "KHR_materials_specular",     "KHR_materials_clearcoat",        "KHR_materials_sheen",
+    "KHR_materials_volume",       "KHR_materials_variants",         "KHR_materials_iridescence",
+    "KHR_materials_anisotropy",   "KHR_mesh_quantization"};
 
 bool is_supported(const std::string& name) {
   return std::find(supported_extensions.begin(), supported_extensions.end(), name) != supported_extensions.end();
@@ -89,6 +92,7 @@ SceneDesc load_gltf(const std::string& path, const LoadOptions& given) {
   scene.name = std::filesystem::path(path).stem().string();
   tinygltf::Model model = parse(path, bytes, options, scene);
   GltfContext context{model, path, options, scene, {}, {}, -1};
+  context.variant = selected_variant(context);
   for (const std::string& name : model.extensionsUsed)
     if (!is_supported(name)) context.warn("extension " + name + " is not supported and is ignored");
   convert_images(context);

@@ -103,6 +103,108 @@ static TextureRef texture_ref(const GltfContext& context, int index, double texc
   return ref;
 }
 
+// A textureInfo inside a material extension (tinygltf leaves extensions as JSON values).
+static TextureRef extension_texture(const GltfContext& context, const tinygltf::Value& extension_value,
+                                    const char* key, const std::string& extension_where) {
+  if (!extension_value.Has(key)) return {};
+  const tinygltf::Value& info = extension_value.Get(key);
+  std::string info_where = extension_where + "." + key;
+  int index = info.Has("index") ? index_value(context, info.Get("index"), context.model.textures.size(),
+                                              info_where + ".index", "texture")
+                                : -1;
+  return texture_ref(context, index, number(info, "texCoord", 0), {}, info_where);
+}
+
+// An RGB factor inside a material extension: three non-negative numbers.
+static color3 extension_color(const GltfContext& context, const tinygltf::Value& extension_value, const char* key,
+                              color3 fallback, const std::string& extension_where) {
+  if (!extension_value.Has(key)) return fallback;
+  const tinygltf::Value& v = extension_value.Get(key);
+  std::string where = extension_where + "." + key;
+  if (!v.IsArray() || v.ArrayLen() != 3) context.fail(where, "must be an array of 3 numbers");
+  color3 c;
+  for (int i = 0; i < 3; ++i) {
+    if (!v.Get(i).IsNumber()) context.fail(where, "must be an array of 3 numbers");
+    c[i] = non_negative_float(context, v.Get(i).GetNumberAsDouble(), where);
+  }
+  return c;
+}
+
+// KHR_materials_specular: the strength and tint of a dielectric's Fresnel layer.
+static void convert_specular(const GltfContext& context, const tinygltf::Value& specular, const std::string& where,
+                             MaterialDesc& material) {
+  std::string specular_where = where + ".extensions.KHR_materials_specular";
+  material.specular = non_negative_float(context, number(specular, "specularFactor", 1), specular_where + ".specularFactor");
+  material.specular_strength_texture = extension_texture(context, specular, "specularTexture", specular_where);
+  material.specular_color = extension_color(context, specular, "specularColorFactor", {1, 1, 1}, specular_where);
+  material.specular_color_texture = extension_texture(context, specular, "specularColorTexture", specular_where);
+}
+
+// KHR_materials_clearcoat: a clear GGX layer with its own strength and roughness.
+static void convert_clearcoat(const GltfContext& context, const tinygltf::Value& clearcoat, const std::string& where,
+                              MaterialDesc& material) {
+  std::string clearcoat_where = where + ".extensions.KHR_materials_clearcoat";
+  material.clearcoat =
+      non_negative_float(context, number(clearcoat, "clearcoatFactor", 0), clearcoat_where + ".clearcoatFactor");
+  material.clearcoat_texture = extension_texture(context, clearcoat, "clearcoatTexture", clearcoat_where);
+  material.clearcoat_roughness = non_negative_float(context, number(clearcoat, "clearcoatRoughnessFactor", 0),
+                                                    clearcoat_where + ".clearcoatRoughnessFactor");
+  material.clearcoat_roughness_texture =
+      extension_texture(context, clearcoat, "clearcoatRoughnessTexture", clearcoat_where);
+}
+
+// KHR_materials_sheen: the colour and roughness of a Charlie sheen.
+static void convert_sheen(const GltfContext& context, const tinygltf::Value& sheen, const std::string& where,
+                          MaterialDesc& material) {
+  std::string sheen_where = where + ".extensions.KHR_materials_sheen";
+  material.sheen_color = extension_color(context, sheen, "sheenColorFactor", {0, 0, 0}, sheen_where);
+  material.sheen_color_texture = extension_texture(context, sheen, "sheenColorTexture", sheen_where);
+  material.sheen_roughness =
+      non_negative_float(context, number(sheen, "sheenRoughnessFactor", 0), sheen_where + ".sheenRoughnessFactor");
+  material.sheen_roughness_texture = extension_texture(context, sheen, "sheenRoughnessTexture", sheen_where);
+}
+
+// KHR_materials_volume: the thickness (0 = a thin wall) and the Beer-Lambert attenuation. The
+// thickness texture only matters to rasterizers, which cannot measure the path inside.
+static void convert_volume(const GltfContext& context, const tinygltf::Value& volume, const std::string& where,
+                           MaterialDesc& material) {
+  std::string volume_where = where + ".extensions.KHR_materials_volume";
+  material.thickness = non_negative_float(context, number(volume, "thicknessFactor", 0), volume_where + ".thicknessFactor");
+  if (volume.Has("attenuationDistance")) {
+    std::string distance_where = volume_where + ".attenuationDistance";
+    double distance = number(volume, "attenuationDistance", 0);
+    if (!(distance > 0)) context.fail(distance_where, "must be positive, got " + number_text(distance));
+    material.attenuation_distance = non_negative_float(context, distance, distance_where);
+  }
+  material.attenuation_color = extension_color(context, volume, "attenuationColor", {1, 1, 1}, volume_where);
+}
+
+// KHR_materials_iridescence: the strength, index and thickness range of a thin film.
+static void convert_iridescence(const GltfContext& context, const tinygltf::Value& iridescence,
+                                const std::string& where, MaterialDesc& material) {
+  std::string at = where + ".extensions.KHR_materials_iridescence";
+  material.iridescence = non_negative_float(context, number(iridescence, "iridescenceFactor", 0), at + ".iridescenceFactor");
+  material.iridescence_texture = extension_texture(context, iridescence, "iridescenceTexture", at);
+  material.iridescence_ior = non_negative_float(context, number(iridescence, "iridescenceIor", 1.3), at + ".iridescenceIor");
+  material.iridescence_thickness_min = non_negative_float(
+      context, number(iridescence, "iridescenceThicknessMinimum", 100), at + ".iridescenceThicknessMinimum");
+  material.iridescence_thickness_max = non_negative_float(
+      context, number(iridescence, "iridescenceThicknessMaximum", 400), at + ".iridescenceThicknessMaximum");
+  material.iridescence_thickness_texture = extension_texture(context, iridescence, "iridescenceThicknessTexture", at);
+}
+
+// KHR_materials_anisotropy: the strength, rotation and direction texture of anisotropic GGX.
+static void convert_anisotropy(const GltfContext& context, const tinygltf::Value& anisotropy,
+                               const std::string& where, MaterialDesc& material) {
+  std::string at = where + ".extensions.KHR_materials_anisotropy";
+  material.anisotropy_strength =
+      non_negative_float(context, number(anisotropy, "anisotropyStrength", 0), at + ".anisotropyStrength");
+  double rotation = number(anisotropy, "anisotropyRotation", 0);
+  if (!(std::abs(rotation) <= 1e6)) context.fail(at + ".anisotropyRotation", number_text(rotation) + " is not an angle");
+  material.anisotropy_rotation = float(rotation);
+  material.anisotropy_texture = extension_texture(context, anisotropy, "anisotropyTexture", at);
+}
+
 static color3 color_of(const std::vector<double>& factor, color3 fallback) {
   if (factor.size() < 3) return fallback;
   return {float(factor[0]), float(factor[1]), float(factor[2])};
@@ -144,15 +246,21 @@ static MaterialDesc convert_material(const GltfContext& context, const tinygltf:
   material.double_sided = source.doubleSided;
   if (const tinygltf::Value* transmission = extension(source.extensions, "KHR_materials_transmission")) {
     material.transmission = float(number(*transmission, "transmissionFactor", 0));
-    if (transmission->Has("transmissionTexture")) {
-      const tinygltf::Value& info = transmission->Get("transmissionTexture");
-      std::string info_where = where + ".extensions.KHR_materials_transmission.transmissionTexture";
-      int index = info.Has("index") ? index_value(context, info.Get("index"), context.model.textures.size(),
-                                                  info_where + ".index", "texture")
-                                    : -1;
-      material.transmission_texture = texture_ref(context, index, number(info, "texCoord", 0), {}, info_where);
-    }
+    material.transmission_texture = extension_texture(context, *transmission, "transmissionTexture",
+                                                      where + ".extensions.KHR_materials_transmission");
   }
+  if (const tinygltf::Value* specular = extension(source.extensions, "KHR_materials_specular"))
+    convert_specular(context, *specular, where, material);
+  if (const tinygltf::Value* clearcoat = extension(source.extensions, "KHR_materials_clearcoat"))
+    convert_clearcoat(context, *clearcoat, where, material);
+  if (const tinygltf::Value* sheen = extension(source.extensions, "KHR_materials_sheen"))
+    convert_sheen(context, *sheen, where, material);
+  if (const tinygltf::Value* volume = extension(source.extensions, "KHR_materials_volume"))
+    convert_volume(context, *volume, where, material);
+  if (const tinygltf::Value* iridescence = extension(source.extensions, "KHR_materials_iridescence"))
+    convert_iridescence(context, *iridescence, where, material);
+  if (const tinygltf::Value* anisotropy = extension(source.extensions, "KHR_materials_anisotropy"))
+    convert_anisotropy(context, *anisotropy, where, material);
   if (const tinygltf::Value* ior = extension(source.extensions, "KHR_materials_ior"))
     material.ior = float(number(*ior, "ior", 1.5));
   material.unlit = extension(source.extensions, "KHR_materials_unlit") != nullptr;
@@ -160,8 +268,15 @@ static MaterialDesc convert_material(const GltfContext& context, const tinygltf:
 }
 
 void convert_materials(GltfContext& context) {
-  for (size_t i = 0; i < context.model.materials.size(); ++i)
-    context.scene.materials.push_back(convert_material(context, context.model.materials[i], element("materials", i)));
+  for (size_t i = 0; i < context.model.materials.size(); ++i) {
+    const tinygltf::Material& source = context.model.materials[i];
+    context.scene.materials.push_back(convert_material(context, source, element("materials", i)));
+    const tinygltf::Value* clearcoat = extension(source.extensions, "KHR_materials_clearcoat");
+    if (clearcoat && clearcoat->Has("clearcoatNormalTexture"))
+      context.warn(element("materials", i) +
+                   ".extensions.KHR_materials_clearcoat.clearcoatNormalTexture: not supported, the coat uses the "
+                   "material's shading normal");
+  }
 }
 
 int scene_material(GltfContext& context, int index, const std::string& where) {

@@ -4,6 +4,7 @@
 
 #include "gltf/gltf_accessors.h"
 #include "gltf/gltf_materials.h"
+#include "gltf/gltf_variants.h"
 #include "scene/mesh_ops.h"
 #include "scene/scene_memory.h"
 
@@ -80,17 +81,20 @@ std::vector<uint32_t> vertex_order(const GltfContext& context, const tinygltf::P
 
 void fill_shading_frames(GltfContext& context, MeshDesc& mesh, bool has_normals, const std::string& where) {
   const MaterialDesc& material = context.scene.materials[mesh.material];
-  bool normal_mapped = material.normal_texture.valid() && !mesh.texcoords0.empty();
-  context.charge(shading_frame_bytes(mesh, material.normal_texture.valid()), where);
+  // Normal maps and anisotropy (KHR_materials_anisotropy) are both written in the tangent frame.
+  bool needs_tangents = material.normal_texture.valid() || material.anisotropy_strength > 0;
+  bool normal_mapped = needs_tangents && !mesh.texcoords0.empty();
+  context.charge(shading_frame_bytes(mesh, needs_tangents), where);
   if (!has_normals) {
     // glTF 3.7.2.1: without normals, clients MUST calculate flat normals and ignore the tangents.
     shade_flat(mesh, normal_mapped);
   } else if (size_t bad = repair_normals(mesh)) {
     context.warn(where + ".attributes.NORMAL: " + std::to_string(bad) + " zero-length normals recomputed");
   }
-  if (mesh.tangents.empty() && material.normal_texture.valid()) {
+  if (mesh.tangents.empty() && needs_tangents) {
     if (mesh.texcoords0.empty())
-      context.warn(where + ": normal map without TEXCOORD_0; tangents cannot be generated");
+      context.warn(where + (material.normal_texture.valid() ? ": normal map" : ": anisotropic material") +
+                   " without TEXCOORD_0; tangents cannot be generated");
     else
       generate_tangents(mesh);
   }
@@ -125,7 +129,8 @@ bool convert_primitive(GltfContext& context, const tinygltf::Primitive& primitiv
   // A strip or a fan lists each triangle's three corners again.
   context.charge(saturating_multiply(order.size(), primitive.mode == TINYGLTF_MODE_TRIANGLES ? 4 : 12), where);
   mesh.indices = triangles_of(primitive.mode, order);
-  mesh.material = scene_material(context, primitive.material, where + ".material");
+  mesh.material = scene_material(context, variant_material(context, primitive, context.variant, where),
+                                 where + ".material");
   context.scene.degenerate_triangles_dropped += drop_degenerate_triangles(mesh);
   if (mesh.indices.empty()) {
     context.warn(where + ": no triangles left; primitive skipped");

@@ -40,7 +40,8 @@ void build_viewer_block(BuildContext& context, const Block& block) {
 
 static const std::vector<AttributeName> camera_names = {
     {"position", ""}, {"direction", ""},     {"look-at", ""},   {"up", ""},         {"fov", ""},
-    {"view-distance", ""}, {"view-size", ""}, {"resolution", ""}, {"orthographic", ""}};
+    {"view-distance", ""}, {"view-size", ""}, {"resolution", ""}, {"orthographic", ""},
+    {"lens-radius", ""}, {"focus-distance", ""}, {"blades", ""}, {"panorama", ""}, {"fisheye-fov", ""}};
 
 // Fails at the later of the two attributes when both are given.
 static void exclusive(const BuildContext& context, const Attribute* first, const Attribute* second) {
@@ -61,6 +62,26 @@ static vec3 camera_forward(const BuildContext& context, const Attributes& attrib
     fail(context, look_at->name, "'look-at' must differ from 'position'");
   if (!is_finite(offset)) fail(context, look_at->name, "'look-at' is too far from 'position'");
   return normalize(offset / max_component(abs(offset)));
+}
+
+// `panorama equirect|fisheye` (with `fisheye-fov DEGREES`, default 180): they see all around or
+// through a circle, so they take no field of view, view plane or orthographic height.
+static void set_panorama(const BuildContext& context, const Attributes& attributes, CameraDesc& camera) {
+  const Attribute* panorama = find(attributes, "panorama");
+  const Attribute* fisheye_fov = find(attributes, "fisheye-fov");
+  if (!panorama) {
+    if (fisheye_fov) fail(context, fisheye_fov->name, "'fisheye-fov' needs 'panorama fisheye'");
+    return;
+  }
+  for (const char* other : {"fov", "view-distance", "view-size", "orthographic"}) exclusive(context, panorama, find(attributes, other));
+  bool fisheye = read_choice(context, *panorama, {"equirect", "fisheye"}) == 1;
+  camera.projection = fisheye ? Projection::fisheye : Projection::equirectangular;
+  camera.aspect = fisheye ? 1 : 2;
+  if (!fisheye_fov) return;
+  if (!fisheye) fail(context, fisheye_fov->name, "'fisheye-fov' needs 'panorama fisheye'");
+  camera.fisheye_fov_degrees = read_positive(context, *fisheye_fov);
+  if (camera.fisheye_fov_degrees > 360)
+    fail(context, fisheye_fov->arguments[0], "'fisheye-fov' must be at most 360 degrees");
 }
 
 // Field of view from `fov` or from a view plane (`view-distance` d, `view-size` w h), or the
@@ -94,6 +115,29 @@ static void set_projection(const BuildContext& context, const Attributes& attrib
     camera.projection = Projection::orthographic;
     camera.ortho_height = read_positive(context, *orthographic);
   }
+  set_panorama(context, attributes, camera);
+}
+
+// A thin lens: `lens-radius` (0 = pinhole) focused at `focus-distance`, by default the distance
+// to `look-at` along the view; `blades` 3 or more make the aperture a polygon.
+static void set_lens(const BuildContext& context, const Attributes& attributes, CameraDesc& camera) {
+  const Attribute* radius = find(attributes, "lens-radius");
+  const Attribute* focus = find(attributes, "focus-distance");
+  if (const Attribute* blades = find(attributes, "blades")) {
+    camera.aperture_blades = read_integer(context, *blades, 0, 64);
+    if (camera.aperture_blades == 1 || camera.aperture_blades == 2)
+      fail(context, blades->arguments[0], "'blades' must be 0 (a round aperture) or 3 to 64");
+  }
+  if (focus) camera.focus_distance = read_positive(context, *focus);
+  if (!radius) return;
+  camera.lens_radius = read_non_negative(context, *radius);
+  if (camera.lens_radius == 0) return;
+  if (camera.projection == Projection::equirectangular || camera.projection == Projection::fisheye)
+    fail(context, radius->name, "'lens-radius' needs a perspective or orthographic camera");
+  if (focus) return;
+  const Attribute* look_at = find(attributes, "look-at");
+  if (!look_at) fail(context, radius->name, "'lens-radius' needs 'focus-distance' or 'look-at' to focus on");
+  camera.focus_distance = dot(read_vec3(context, *look_at) - camera.position, camera.forward);
 }
 
 void build_camera_block(BuildContext& context, const Block& block) {
@@ -104,6 +148,7 @@ void build_camera_block(BuildContext& context, const Block& block) {
   camera.position = read_vec3(context, require(context, attributes, "position", "@camera"));
   set_frame(context, camera, camera_forward(context, attributes, camera.position), find(attributes, "up"));
   set_projection(context, attributes, camera);
+  set_lens(context, attributes, camera);
   if (const Attribute* resolution = find(attributes, "resolution")) {
     expect_arguments(context, *resolution, 2, "2 numbers (width height)");
     camera.width = parse_integer(context, resolution->arguments[0], "resolution", 1, 65536);

@@ -11,7 +11,8 @@
 
 namespace radiant {
 
-constexpr uint32_t effect_group_transparency = effect_transparent_shadows | effect_refraction | effect_alpha;
+constexpr uint32_t effect_group_transparency =
+    effect_transparent_shadows | effect_refraction | effect_alpha | effect_absorption;
 constexpr uint32_t effect_group_textures = effect_textures | effect_normal_maps;
 constexpr uint32_t effect_group_reflection = effect_reflection;
 constexpr uint32_t effect_group_indirect = effect_indirect;

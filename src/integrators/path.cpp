@@ -122,9 +122,14 @@ struct PathVariant {
     int depth = 0, max_depth = ctx.max_depth;
     uint64_t* ray_counter = &counts.camera;  // the kind of the next ray traced, counted when traced
     SurfaceMaterial resolved;                // the material at the current hit, when textured
+    int medium = -1;  // the absorbing volume the path is inside (a material index), or -1
     for (int transparent_steps = 0; transparent_steps < 256;) {
       ++*ray_counter;
       HitId id = intersect_nearest(*ctx.accel, ray);
+      // Beer-Lambert along the segment just traced inside a volume (a ray escaping one, which a
+      // closed mesh cannot let happen, keeps its light).
+      if (enabled<E>(ctx.effects, effect_absorption) && medium >= 0 && id.valid())
+        throughput *= exp(ctx.absorption[size_t(medium)] * -(id.t * length(ray.direction)));
       if (!id.valid()) {
         if (enabled<E>(ctx.effects, effect_environment)) {
           color3 background = eval_environment(lights, normalize(ray.direction));
@@ -197,6 +202,9 @@ struct PathVariant {
       } else {
         ray_counter = &counts.indirect;
       }
+      // Crossing a surface enters its volume from the front and leaves it from the back.
+      if (enabled<E>(ctx.effects, effect_absorption) && scattered->transmitted)
+        medium = hit.front_face && !is_black(ctx.absorption[size_t(hit.material)]) ? hit.material : -1;
       throughput *= scattered->weight;
       specular_bounce = scattered->delta;
       previous_pdf = scattered->pdf;

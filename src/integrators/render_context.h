@@ -45,6 +45,7 @@ struct RenderContext {
   color3 ambient;                              // sum of the ambient lights
   std::vector<SurfaceMaterial> flat_materials; // each material resolved once, for untextured renders
   std::vector<BsdfMaterial> flat_bsdf_materials;  // and its BSDF's direction-independent part
+  std::vector<color3> absorption;                 // each material's volume sigma (KHR_materials_volume)
   uint32_t effects = effect_all;
   int max_depth = 8;
   float contribution_cutoff = 0.001f;
@@ -63,11 +64,23 @@ const SurfaceMaterial& material_at(const RenderContext& ctx, const SurfaceHit& h
   return ctx.flat_materials[hit.material];
 }
 
+// The world direction of an anisotropic material's lobe (KHR_materials_anisotropy): its
+// tangent-space direction in the hit's tangent frame (bitangent cross(n, t) * w, as normal maps);
+// zero without anisotropy or tangents.
+inline vec3 anisotropy_tangent(const SurfaceHit& hit, const SurfaceMaterial& m, vec3 n) {
+  if (!(m.anisotropy > 0)) return {};
+  vec3 t = {hit.tangent.x, hit.tangent.y, hit.tangent.z};
+  if (length_squared(t) == 0) return {};
+  return t * m.anisotropy_direction.x + cross(n, t) * (hit.tangent.w * m.anisotropy_direction.y);
+}
+
 // The BSDF at a hit for material `m` (from material_at), seen from wo with shading normal `n`.
 template <uint32_t E>
 Bsdf bsdf_at(const RenderContext& ctx, const SurfaceHit& hit, const SurfaceMaterial& m, vec3 n, vec3 wo) {
-  if (enabled<E>(ctx.effects, effect_textures) || enabled<E>(ctx.effects, effect_normal_maps)) return Bsdf(m, n, wo);
-  return Bsdf(ctx.flat_bsdf_materials[hit.material], n, wo);
+  vec3 tangent = anisotropy_tangent(hit, m, n);
+  if (enabled<E>(ctx.effects, effect_textures) || enabled<E>(ctx.effects, effect_normal_maps))
+    return Bsdf(m, n, wo, tangent);
+  return Bsdf(ctx.flat_bsdf_materials[hit.material], n, wo, tangent);
 }
 
 }  // namespace radiant

@@ -4,6 +4,8 @@
 #include <initializer_list>
 #include <type_traits>
 
+#include "materials/metallic_roughness.h"
+
 namespace radiant {
 
 namespace {
@@ -12,7 +14,14 @@ color3 clamp01(color3 c) { return min(max(c, {0, 0, 0}), {1, 1, 1}); }
 
 BsdfParams make_params(const SurfaceMaterial& m) {
   if (m.unlit) return std::monostate{};
-  if (m.model == MaterialModel::metallic_roughness) return make_metallic_roughness_params(m);
+  if (m.model == MaterialModel::metallic_roughness) {
+    // Metallic 0, no transmission, specularFactor 0: the glTF material that is exactly Lambertian.
+    bool layered = m.clearcoat > 0 || max_component(m.sheen_color) > 0;
+    bool matte = !(m.metallic > 0) && !(m.transmission > 0) && !(m.specular > 0) && !layered;
+    if (matte) return LambertParams{clamp01(m.base_color)};
+    if (layered) return make_layered_params(m);
+    return make_metallic_roughness_params(m);
+  }
   PhongWeights phong = make_phong_weights(m);
   bool matte = phong.scatters && phong.p_glossy == 0 && phong.p_mirror == 0 && phong.p_transmission == 0;
   if (matte) return LambertParams{phong.kd};
@@ -39,25 +48,29 @@ BuiltBy(Make) -> BuiltBy<Make>;  // clang before 17 deduces no aggregate's argum
 
 // The lobes, returned as the variant itself and built in its storage: emplacing into an
 // existing variant goes through a temporary variant in libstdc++.
-BsdfLobes make_lobes(const BsdfParams& params, vec3 n, vec3 wo) {
+BsdfLobes make_lobes(const BsdfParams& params, vec3 n, vec3 wo, vec3 tangent) {
   if (auto* p = std::get_if<LambertParams>(&params))
     return BsdfLobes(std::in_place_type<LambertLobes>, BuiltBy{[&] { return make_lambert_lobes(*p, n, wo); }});
   if (auto* w = std::get_if<PhongWeights>(&params))
     return BsdfLobes(std::in_place_type<PhongLobes>, BuiltBy{[&] { return make_phong_lobes(*w, n, wo); }});
   if (auto* m = std::get_if<MetallicRoughnessParams>(&params))
     return BsdfLobes(std::in_place_type<MetallicRoughnessLobes>,
-                     BuiltBy{[&] { return make_metallic_roughness_lobes(*m, n, wo); }});
+                     BuiltBy{[&] { return make_metallic_roughness_lobes(*m, n, wo, tangent); }});
+  if (auto* c = std::get_if<LayeredParams>(&params))
+    return BsdfLobes(std::in_place_type<LayeredLobes>, BuiltBy{[&] { return make_layered_lobes(*c, n, wo, tangent); }});
   return {};
 }
 
 }  // namespace
 
-Bsdf::Bsdf(const BsdfMaterial& material, vec3 n, vec3 wo) : lobes_(make_lobes(material.params_, n, wo)) {}
+Bsdf::Bsdf(const BsdfMaterial& material, vec3 n, vec3 wo, vec3 tangent)
+    : lobes_(make_lobes(material.params_, n, wo, tangent)) {}
 
 color3 Bsdf::eval(vec3 wi) const {
   if (auto* l = std::get_if<LambertLobes>(&lobes_)) return eval_world(*l, wi);
   if (auto* l = std::get_if<PhongLobes>(&lobes_)) return eval_local(*l, to_local(l->frame, wi));
   if (auto* l = std::get_if<MetallicRoughnessLobes>(&lobes_)) return eval_local(*l, to_local(l->frame, wi));
+  if (auto* l = std::get_if<LayeredLobes>(&lobes_)) return eval_local(*l, to_local(l->frame, wi));
   return {0, 0, 0};
 }
 
@@ -65,6 +78,7 @@ float Bsdf::pdf(vec3 wi) const {
   if (auto* l = std::get_if<LambertLobes>(&lobes_)) return pdf_world(*l, wi);
   if (auto* l = std::get_if<PhongLobes>(&lobes_)) return pdf_local(*l, to_local(l->frame, wi));
   if (auto* l = std::get_if<MetallicRoughnessLobes>(&lobes_)) return pdf_local(*l, to_local(l->frame, wi));
+  if (auto* l = std::get_if<LayeredLobes>(&lobes_)) return pdf_local(*l, to_local(l->frame, wi));
   return 0;
 }
 
@@ -72,6 +86,7 @@ std::optional<BsdfSample> Bsdf::sample(float u_lobe, vec2 u) const {
   if (auto* l = std::get_if<LambertLobes>(&lobes_)) return sample_world(*l, u);
   if (auto* l = std::get_if<PhongLobes>(&lobes_)) return sample_local(*l, u_lobe, u);
   if (auto* l = std::get_if<MetallicRoughnessLobes>(&lobes_)) return sample_local(*l, u_lobe, u);
+  if (auto* l = std::get_if<LayeredLobes>(&lobes_)) return sample_local(*l, u_lobe, u);
   return std::nullopt;
 }
 
@@ -85,13 +100,17 @@ bool Bsdf::chooses_lobe() const {
     return count({l->p_diffuse, l->p_glossy, l->p_mirror, l->p_transmission}) > 1;
   if (auto* l = std::get_if<MetallicRoughnessLobes>(&lobes_))
     return count({l->p_specular, l->p_diffuse, l->p_transmission}) > 1;
+  if (auto* l = std::get_if<LayeredLobes>(&lobes_))
+    return count({l->p_coat, l->p_sheen, 1 - l->p_coat - l->p_sheen}) > 1 ||
+           count({l->base_lobes.p_specular, l->base_lobes.p_diffuse, l->base_lobes.p_transmission}) > 1;
   return false;
 }
 
 bool is_pure_delta(const SurfaceMaterial& m) {
   if (m.unlit) return true;
-  return m.model == MaterialModel::metallic_roughness ? is_metallic_roughness_pure_delta(m)
-                                                      : is_phong_pure_delta(m);
+  if (m.model != MaterialModel::metallic_roughness) return is_phong_pure_delta(m);
+  bool rough_coat = m.clearcoat > 0 && roughness_to_alpha(m.clearcoat_roughness) >= smooth_alpha_threshold;
+  return is_metallic_roughness_pure_delta(m) && !rough_coat && !(max_component(m.sheen_color) > 0);
 }
 
 color3 bsdf_albedo(const SurfaceMaterial& m) {

@@ -14,8 +14,9 @@ namespace radiant {
 
 // Each model's direction-independent part, and its lobes seen from one wo. Unlit surfaces
 // (std::monostate) show their color and scatter nothing.
-using BsdfParams = std::variant<std::monostate, LambertParams, PhongWeights, MetallicRoughnessParams>;
-using BsdfLobes = std::variant<std::monostate, LambertLobes, PhongLobes, MetallicRoughnessLobes>;
+using BsdfParams =
+    std::variant<std::monostate, LambertParams, PhongWeights, MetallicRoughnessParams, LayeredParams>;
+using BsdfLobes = std::variant<std::monostate, LambertLobes, PhongLobes, MetallicRoughnessLobes, LayeredLobes>;
 
 // The part of a material's BSDF that does not depend on directions: worked out once per
 // material when the material is the same at every hit (no textures), once per hit otherwise.
@@ -30,8 +31,9 @@ class BsdfMaterial {
 
 class Bsdf {
  public:
-  Bsdf(const BsdfMaterial& material, vec3 n, vec3 wo);
-  Bsdf(const SurfaceMaterial& m, vec3 n, vec3 wo) : Bsdf(BsdfMaterial(m), n, wo) {}
+  // `tangent` (world space, zero when unknown) orients anisotropic lobes (KHR_materials_anisotropy).
+  Bsdf(const BsdfMaterial& material, vec3 n, vec3 wo, vec3 tangent = {});
+  Bsdf(const SurfaceMaterial& m, vec3 n, vec3 wo, vec3 tangent = {}) : Bsdf(BsdfMaterial(m), n, wo, tangent) {}
 
   // f(wo, wi) * |dot(n, wi)| for the non-delta lobes.
   color3 eval(vec3 wi) const;

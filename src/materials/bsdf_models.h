@@ -8,6 +8,7 @@
 
 #include "materials/shading_frame.h"
 #include "materials/surface.h"
+#include "materials/thin_film.h"
 
 namespace radiant {
 
@@ -52,11 +53,22 @@ bool is_phong_pure_delta(const SurfaceMaterial& m);
 // The parameters depend on the material only; the lobe choice also on wo (Fresnel).
 struct MetallicRoughnessParams {
   float alpha = 1;
+  bool anisotropic = false;     // KHR_materials_anisotropy: GGX with anisotropic_alpha in the lobe frame
+  vec2 anisotropic_alpha;       // along the frame's x (the anisotropy direction) and y
   bool smooth = false;  // specular lobes are delta
   float ior = 1.5f;     // of the coating, always entered from outside
   color3 base;
   float metal = 0, plastic = 0, glass = 0;  // mix weights, summing to 1
-  float fade = 1;                            // strength of the plastic's specular coating
+  // The plastic's Fresnel coating (KHR_materials_specular): its strength, its tinted F0, and
+  // the untinted F0 of the ior that the exact Fresnel curve is rescaled from.
+  float specular = 1;
+  color3 specular_f0 = {0.04f, 0.04f, 0.04f};
+  float ior_f0 = 0.04f;
+  // KHR_materials_iridescence: the share of the thin film's Fresnel in the metal's and the
+  // plastic's specular reflection, the film, and the index above it (1.5 under a clearcoat).
+  float iridescence = 0;
+  ThinFilm film;
+  float film_outside_ior = 1;
 };
 MetallicRoughnessParams make_metallic_roughness_params(const SurfaceMaterial& m);
 struct MetallicRoughnessLobes : MetallicRoughnessParams {
@@ -66,10 +78,37 @@ struct MetallicRoughnessLobes : MetallicRoughnessParams {
   float eta = 1.5f;    // of the glass: n_transmitted / n_incident seen from wo
   float p_specular = 0, p_diffuse = 0, p_transmission = 0;
 };
-MetallicRoughnessLobes make_metallic_roughness_lobes(const MetallicRoughnessParams& params, vec3 n, vec3 wo);
+// `tangent` (world space, any length; zero when unknown) orients an anisotropic lobe's frame.
+MetallicRoughnessLobes make_metallic_roughness_lobes(const MetallicRoughnessParams& params, vec3 n, vec3 wo,
+                                                     vec3 tangent = {});
 color3 eval_local(const MetallicRoughnessLobes& l, vec3 wi);
 float pdf_local(const MetallicRoughnessLobes& l, vec3 wi);
 std::optional<BsdfSample> sample_local(const MetallicRoughnessLobes& l, float u_lobe, vec2 u);
 bool is_metallic_roughness_pure_delta(const SurfaceMaterial& m);
+
+// KHR_materials_clearcoat and KHR_materials_sheen: a clear dielectric GGX coat (ior 1.5) over a
+// Charlie sheen over the metallic-roughness BSDF. Only materials with a coat or a sheen get this
+// model, so the others pay nothing for it.
+struct LayeredParams {
+  MetallicRoughnessParams base;
+  float coat = 0;        // clearcoat factor × texture, in [0, 1]
+  float coat_alpha = 0;  // the coat's GGX alpha
+  bool coat_smooth = false;
+  color3 sheen;              // sheen colour × texture
+  float sheen_roughness = 0;
+};
+LayeredParams make_layered_params(const SurfaceMaterial& m);
+struct LayeredLobes : LayeredParams {
+  MetallicRoughnessLobes base_lobes;
+  bool valid = false;
+  ShadingFrame frame;  // the base's frame: z = the normal on wo's side
+  vec3 wo;             // local, wo.z > 0
+  float sheen_max = 0, sheen_albedo_o = 0;  // max(sheen colour), E(cosθo)
+  float p_coat = 0, p_sheen = 0;            // selection; the base gets the rest
+};
+LayeredLobes make_layered_lobes(const LayeredParams& params, vec3 n, vec3 wo, vec3 tangent = {});
+color3 eval_local(const LayeredLobes& l, vec3 wi);
+float pdf_local(const LayeredLobes& l, vec3 wi);
+std::optional<BsdfSample> sample_local(const LayeredLobes& l, float u_lobe, vec2 u);
 
 }  // namespace radiant

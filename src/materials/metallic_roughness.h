@@ -23,12 +23,11 @@ inline float dielectric_f0(float ior) {
   return ratio * ratio;
 }
 
-// Strength of the specular layer of an opaque dielectric: 1 for glossy surfaces, fading to 0 at
-// roughness 1, so that a fully rough dielectric is exactly Lambertian in both integrators.
-inline float dielectric_specular_fade(float roughness) {
-  float r = std::clamp(roughness, 0.0f, 1.0f);
-  float r2 = r * r, r4 = r2 * r2;
-  return 1 - r4 * r4;
+// KHR_materials_specular's F0 of a dielectric: the ior's F0 tinted by the specular color, at
+// most 1 per channel (the extension's min(F0 · specularColor, 1)).
+inline color3 tinted_dielectric_f0(float ior, color3 specular_color) {
+  float f0 = dielectric_f0(ior);
+  return min(max(specular_color * f0, {0, 0, 0}), {1, 1, 1});
 }
 
 }  // namespace radiant

@@ -15,16 +15,49 @@ namespace {
 // Smallest selection weight of a present non-delta lobe: its pdf must never be 0 where it scatters.
 constexpr float min_lobe_weight = 0.05f;
 
-// Fresnel reflectance of the mixed specular lobe at microfacet cosine `cos_h`.
-color3 specular_fresnel(const MetallicRoughnessLobes& l, float cos_h) {
-  float dielectric = l.plastic * l.fade * fresnel_dielectric(cos_h, l.ior) +
-                     l.glass * fresnel_dielectric(cos_h, l.eta);
-  return l.metal * fresnel_schlick(l.base, cos_h) + color3{dielectric, dielectric, dielectric};
+// The plastic's coating reflectance (KHR_materials_specular): the exact Fresnel curve of its ior,
+// rescaled to run from the tinted F0 at normal incidence to 1 at grazing, times its strength.
+// With iridescence, a share of it is the thin film's reflectance over that F0 instead.
+color3 coating_fresnel(const MetallicRoughnessLobes& l, float cos) {
+  float rise = l.ior_f0 < 1 ? (fresnel_dielectric(cos, l.ior) - l.ior_f0) / (1 - l.ior_f0) : 1;
+  color3 f = l.specular_f0 + (color3{1, 1, 1} - l.specular_f0) * std::max(rise, 0.0f);
+  if (l.iridescence > 0) f = lerp(f, thin_film_fresnel(cos, l.film_outside_ior, l.film, l.specular_f0), l.iridescence);
+  return f * l.specular;
 }
 
-// Light crossing the plastic's coating at cosine `cos` (symmetric in wo and wi: reciprocity).
+// The metal's reflectance: Schlick's with F0 = base colour, or in part the thin film's over it.
+color3 metal_fresnel(const MetallicRoughnessLobes& l, float cos) {
+  color3 f = fresnel_schlick(l.base, cos);
+  if (l.iridescence > 0) f = lerp(f, thin_film_fresnel(cos, l.film_outside_ior, l.film, l.base), l.iridescence);
+  return f;
+}
+
+// Fresnel reflectance of the mixed specular lobe at microfacet cosine `cos_h`.
+color3 specular_fresnel(const MetallicRoughnessLobes& l, float cos_h) {
+  float glass = l.glass * fresnel_dielectric(cos_h, l.eta);
+  color3 plastic = l.plastic > 0 ? coating_fresnel(l, cos_h) * l.plastic : color3{0, 0, 0};
+  color3 metal = l.metal > 0 ? metal_fresnel(l, cos_h) * l.metal : color3{0, 0, 0};
+  return metal + plastic + color3{glass, glass, glass};
+}
+
+// Light crossing the plastic's coating at cosine `cos`: what its brightest channel does not
+// reflect (the extension's 1 − specular · max(F)); symmetric in wo and wi: reciprocity.
 float coating_transmittance(const MetallicRoughnessLobes& l, float cos) {
-  return 1 - l.fade * fresnel_dielectric(cos, l.ior);
+  return 1 - max_component(coating_fresnel(l, cos));
+}
+
+// The GGX terms, anisotropic (KHR_materials_anisotropy) only where the material is.
+float microfacet_density(const MetallicRoughnessLobes& l, vec3 h) {
+  return l.anisotropic ? ggx_distribution(h, l.anisotropic_alpha) : ggx_distribution(h, l.alpha);
+}
+float microfacet_masking_shadowing(const MetallicRoughnessLobes& l, vec3 wi) {
+  return l.anisotropic ? ggx_masking_shadowing(l.wo, wi, l.anisotropic_alpha) : ggx_masking_shadowing(l.wo, wi, l.alpha);
+}
+float visible_normal_pdf(const MetallicRoughnessLobes& l, vec3 h) {
+  return l.anisotropic ? ggx_visible_normal_pdf(l.wo, h, l.anisotropic_alpha) : ggx_visible_normal_pdf(l.wo, h, l.alpha);
+}
+vec3 sample_visible_normal(const MetallicRoughnessLobes& l, vec2 u) {
+  return l.anisotropic ? sample_ggx_visible_normal(l.wo, l.anisotropic_alpha, u) : sample_ggx_visible_normal(l.wo, l.alpha, u);
 }
 
 // Delta lobes need no floor: a delta lobe with no reflectance is simply never chosen.
@@ -52,7 +85,7 @@ color3 eval_rough_reflection(const MetallicRoughnessLobes& l, vec3 wi) {
   vec3 h = normalize(l.wo + wi);
   float cos_h = dot(l.wo, h);
   if (cos_h <= 0) return {0, 0, 0};
-  float d = ggx_distribution(h, l.alpha) * ggx_masking_shadowing(l.wo, wi, l.alpha);
+  float d = microfacet_density(l, h) * microfacet_masking_shadowing(l, wi);
   return specular_fresnel(l, cos_h) * (d / (4 * l.wo.z));
 }
 
@@ -60,7 +93,7 @@ float pdf_rough_reflection(const MetallicRoughnessLobes& l, vec3 wi) {
   vec3 h = normalize(l.wo + wi);
   float cos_h = dot(l.wo, h);
   if (cos_h <= 0) return 0;
-  return ggx_visible_normal_pdf(l.wo, h, l.alpha) / (4 * cos_h);
+  return visible_normal_pdf(l, h) / (4 * cos_h);
 }
 
 // The squared denominator of the refraction Jacobian, or 0 when degenerate.
@@ -76,7 +109,7 @@ color3 eval_rough_transmission(const MetallicRoughnessLobes& l, vec3 wi) {
   if (denominator < 1e-12f) return {0, 0, 0};
   float cos_h = dot(l.wo, h);
   float transmittance = l.glass * (1 - fresnel_dielectric(cos_h, l.eta));
-  float f = ggx_distribution(h, l.alpha) * ggx_masking_shadowing(l.wo, wi, l.alpha) * std::abs(dot(wi, h)) *
+  float f = microfacet_density(l, h) * microfacet_masking_shadowing(l, wi) * std::abs(dot(wi, h)) *
             cos_h / (l.wo.z * denominator);
   return l.base * (transmittance * f);
 }
@@ -86,12 +119,12 @@ float pdf_rough_transmission(const MetallicRoughnessLobes& l, vec3 wi) {
   if (!refraction_half_vector(l, wi, h)) return 0;
   float denominator = refraction_denominator(l, wi, h);
   if (denominator < 1e-12f) return 0;
-  return ggx_visible_normal_pdf(l.wo, h, l.alpha) * std::abs(dot(wi, h)) / denominator;
+  return visible_normal_pdf(l, h) * std::abs(dot(wi, h)) / denominator;
 }
 
 std::optional<BsdfSample> sample_specular(const MetallicRoughnessLobes& l, vec2 u) {
   if (l.smooth) return delta_sample(l, reflect_local(l.wo), specular_fresnel(l, l.wo.z), l.p_specular);
-  vec3 h = sample_ggx_visible_normal(l.wo, l.alpha, u);
+  vec3 h = sample_visible_normal(l, u);
   vec3 wi = reflect(l.wo, h);
   if (wi.z <= 0) return std::nullopt;  // the microfacet sends light below the surface: masked
   return mixture_sample(l, wi);
@@ -104,7 +137,7 @@ std::optional<BsdfSample> sample_transmission(const MetallicRoughnessLobes& l, v
     color3 transmittance = l.base * (l.glass * (1 - fresnel_dielectric(l.wo.z, l.eta)));
     return delta_sample(l, wi, transmittance, l.p_transmission);
   }
-  vec3 h = sample_ggx_visible_normal(l.wo, l.alpha, u);
+  vec3 h = sample_visible_normal(l, u);
   if (!refract(l.wo, h, l.eta, wi) || wi.z >= 0) return std::nullopt;
   return mixture_sample(l, normalize(wi));
 }
@@ -114,26 +147,37 @@ std::optional<BsdfSample> sample_transmission(const MetallicRoughnessLobes& l, v
 MetallicRoughnessParams make_metallic_roughness_params(const SurfaceMaterial& m) {
   MetallicRoughnessParams p;
   p.alpha = roughness_to_alpha(m.roughness);
-  p.smooth = p.alpha < smooth_alpha_threshold;
+  // KHR_materials_anisotropy: rougher along the anisotropy direction, alpha_t = lerp(alpha, 1, s^2).
+  float anisotropy = std::clamp(m.anisotropy, 0.0f, 1.0f);
+  p.anisotropic = anisotropy > 0;
+  p.anisotropic_alpha = {p.alpha + (1 - p.alpha) * anisotropy * anisotropy, std::max(p.alpha, smooth_alpha_threshold)};
+  p.smooth = (p.anisotropic ? p.anisotropic_alpha.x : p.alpha) < smooth_alpha_threshold;
   p.ior = std::isfinite(m.ior) && m.ior > 0 ? m.ior : 1.5f;
   p.base = min(max(m.base_color, {0, 0, 0}), {1, 1, 1});
   float metallic = std::clamp(m.metallic, 0.0f, 1.0f), transmission = std::clamp(m.transmission, 0.0f, 1.0f);
   p.metal = metallic;
   p.plastic = (1 - metallic) * (1 - transmission);
   p.glass = (1 - metallic) * transmission;
-  p.fade = dielectric_specular_fade(m.roughness);
+  p.specular = std::clamp(m.specular, 0.0f, 1.0f);
+  p.specular_f0 = tinted_dielectric_f0(p.ior, m.specular_color);
+  p.ior_f0 = dielectric_f0(p.ior);
+  p.iridescence = std::clamp(m.iridescence, 0.0f, 1.0f);
+  p.film = {m.iridescence_ior, std::max(m.iridescence_thickness, 0.0f)};
+  // The clearcoat extension puts its coat (ior 1.5) above the film.
+  p.film_outside_ior = m.clearcoat > 0 ? 1.5f : 1.0f;
   return p;
 }
 
-MetallicRoughnessLobes make_metallic_roughness_lobes(const MetallicRoughnessParams& params, vec3 n, vec3 wo) {
+MetallicRoughnessLobes make_metallic_roughness_lobes(const MetallicRoughnessParams& params, vec3 n, vec3 wo,
+                                                     vec3 tangent) {
   MetallicRoughnessLobes l;
   static_cast<MetallicRoughnessParams&>(l) = params;
-  FacingFrame facing = facing_frame(n, wo, l.ior);
+  FacingFrame facing = facing_frame(n, wo, l.ior, l.anisotropic ? tangent : vec3{});
   l.frame = facing.frame, l.wo = facing.wo, l.eta = facing.eta;
   if (!(l.wo.z > 1e-7f) || !is_finite(l.wo)) return l;
   bool colored = max_component(l.base) > 0;
   float cos_o = l.wo.z;
-  float specular = selection_weight(l.metal > 0 || l.plastic * l.fade > 0 || l.glass > 0,
+  float specular = selection_weight(l.metal > 0 || l.plastic * l.specular > 0 || l.glass > 0,
                                     mean(specular_fresnel(l, cos_o)), l.smooth);
   float diffuse = selection_weight(l.plastic > 0 && colored,
                                    l.plastic * mean(l.base) * coating_transmittance(l, cos_o), false);
@@ -183,7 +227,9 @@ std::optional<BsdfSample> sample_local(const MetallicRoughnessLobes& l, float u_
 
 bool is_metallic_roughness_pure_delta(const SurfaceMaterial& m) {
   bool has_diffuse = m.metallic < 1 && m.transmission < 1 && max_component(m.base_color) > 0;
-  return roughness_to_alpha(m.roughness) < smooth_alpha_threshold && !has_diffuse;
+  float alpha = roughness_to_alpha(m.roughness), anisotropy = std::clamp(m.anisotropy, 0.0f, 1.0f);
+  float widest_alpha = alpha + (1 - alpha) * anisotropy * anisotropy;  // alpha itself when isotropic
+  return widest_alpha < smooth_alpha_threshold && !has_diffuse;
 }
 
 }  // namespace radiant

@@ -38,6 +38,24 @@ void resolve_shared(const SceneDesc& scene, const MaterialDesc& material, const 
   m.unlit = material.unlit;
 }
 
+// KHR_materials_anisotropy: the strength, and the direction (the texture's, or the tangent)
+// rotated by the rotation.
+void resolve_anisotropy(const SceneDesc& scene, const MaterialDesc& material, const SurfaceAttributes& attributes,
+                        SurfaceMaterial& m) {
+  vec2 direction = {1, 0};
+  float strength = material.anisotropy_strength;
+  if (material.anisotropy_texture.valid()) {
+    vec4 texel = sample_texture(scene, material.anisotropy_texture, attributes, false);
+    vec2 d = {2 * texel.x - 1, 2 * texel.y - 1};
+    float length = std::sqrt(d.x * d.x + d.y * d.y);
+    if (length > 1e-6f) direction = {d.x / length, d.y / length};
+    strength *= texel.z;
+  }
+  float c = std::cos(material.anisotropy_rotation), s = std::sin(material.anisotropy_rotation);
+  m.anisotropy = clamp01(strength);
+  m.anisotropy_direction = {c * direction.x - s * direction.y, s * direction.x + c * direction.y};
+}
+
 SurfaceMaterial resolve_metallic_roughness(const SceneDesc& scene, const MaterialDesc& material,
                                            const SurfaceAttributes& attributes) {
   SurfaceMaterial m;
@@ -51,6 +69,28 @@ SurfaceMaterial resolve_metallic_roughness(const SceneDesc& scene, const Materia
   m.transmission = clamp01(material.transmission * sample_texture(scene, material.transmission_texture,
                                                                    attributes, false).x);
   m.ior = material.ior;
+  m.specular = clamp01(material.specular * sample_texture(scene, material.specular_strength_texture, attributes,
+                                                          false).w);
+  m.specular_color = max(material.specular_color * rgb(sample_texture(scene, material.specular_color_texture,
+                                                                      attributes, true)),
+                         {0, 0, 0});
+  m.clearcoat = clamp01(material.clearcoat * sample_texture(scene, material.clearcoat_texture, attributes, false).x);
+  m.clearcoat_roughness = clamp01(material.clearcoat_roughness *
+                                  sample_texture(scene, material.clearcoat_roughness_texture, attributes, false).y);
+  m.sheen_color = max(material.sheen_color * rgb(sample_texture(scene, material.sheen_color_texture, attributes, true)),
+                      {0, 0, 0});
+  m.sheen_roughness = clamp01(material.sheen_roughness *
+                              sample_texture(scene, material.sheen_roughness_texture, attributes, false).w);
+  m.iridescence = clamp01(material.iridescence * sample_texture(scene, material.iridescence_texture, attributes,
+                                                                false).x);
+  m.iridescence_ior = material.iridescence_ior;
+  m.iridescence_thickness = material.iridescence_thickness_max;
+  if (material.iridescence_thickness_texture.valid()) {
+    float t = sample_texture(scene, material.iridescence_thickness_texture, attributes, false).y;
+    m.iridescence_thickness = material.iridescence_thickness_min +
+                              (material.iridescence_thickness_max - material.iridescence_thickness_min) * t;
+  }
+  resolve_anisotropy(scene, material, attributes, m);
   resolve_shared(scene, material, attributes, alpha, m);
   phong_from_metallic_roughness(m);
   return m;

@@ -31,10 +31,17 @@ struct FacingFrame {
   vec3 wo;
   float eta;
 };
-inline FacingFrame facing_frame(vec3 n, vec3 wo, float ior) {
+// A non-zero `tangent` (not parallel to n) sets the frame's x axis: the direction of an
+// anisotropic lobe.
+inline FacingFrame facing_frame(vec3 n, vec3 wo, float ior, vec3 tangent = {}) {
   bool from_inside = dot(n, wo) < 0;
   FacingFrame f;
   f.frame = make_shading_frame(from_inside ? -n : n);
+  vec3 t = tangent - f.frame.n * dot(f.frame.n, tangent);
+  if (length_squared(t) > 1e-12f) {
+    f.frame.t = normalize(t);
+    f.frame.b = cross(f.frame.n, f.frame.t);
+  }
   f.wo = to_local(f.frame, wo);
   f.eta = from_inside ? 1 / ior : ior;
   return f;

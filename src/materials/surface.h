@@ -24,6 +24,14 @@ struct SurfaceMaterial {
   // Metallic-roughness, valid when model == metallic_roughness.
   color3 base_color = {1, 1, 1};
   float metallic = 0, roughness = 1, transmission = 0;
+  float specular = 1;                 // KHR_materials_specular: strength of the dielectric's Fresnel layer
+  color3 specular_color = {1, 1, 1};  // and the tint of its F0
+  float clearcoat = 0, clearcoat_roughness = 0;  // KHR_materials_clearcoat
+  color3 sheen_color = {0, 0, 0};                 // KHR_materials_sheen
+  float sheen_roughness = 0;
+  float iridescence = 0, iridescence_ior = 1.3f, iridescence_thickness = 400;  // KHR_materials_iridescence (nm)
+  float anisotropy = 0;                         // KHR_materials_anisotropy: strength
+  vec2 anisotropy_direction = {1, 0};           // in the tangent frame (x along the tangent)
   // Shared.
   color3 emission;
   float opacity = 1;  // alpha after the alpha mode (1 for opaque; 0 or 1 for mask)

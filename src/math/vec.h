@@ -59,6 +59,7 @@ inline vec3 normalize(vec3 a) {
   return l > 0 ? a * (1 / l) : a;
 }
 inline vec3 abs(vec3 a) { return {std::abs(a.x), std::abs(a.y), std::abs(a.z)}; }
+inline vec3 exp(vec3 a) { return {std::exp(a.x), std::exp(a.y), std::exp(a.z)}; }
 inline vec3 min(vec3 a, vec3 b) { return {std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)}; }
 inline vec3 max(vec3 a, vec3 b) { return {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)}; }
 constexpr float max_component(vec3 a) { return std::max(a.x, std::max(a.y, a.z)); }

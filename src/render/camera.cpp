@@ -4,10 +4,46 @@
 #include <limits>
 #include <stdexcept>
 
+#include "sampling/warp.h"
 #include "scene/coordinate_range.h"
 #include "scene/scene_bounds.h"
 
 namespace radiant {
+
+namespace {
+
+// Equirectangular: longitude from -pi (left edge) to pi, 0 at the image centre, along the
+// view direction; latitude from pi/2 (top row, up) to -pi/2.
+vec3 equirectangular_direction(const CameraFrame& f, float x, float y) {
+  float longitude = (x / float(f.width) - 0.5f) * 2 * pi;
+  float latitude = (0.5f - y / float(f.height)) * pi;
+  float horizontal = std::cos(latitude);
+  return f.forward * (horizontal * std::cos(longitude)) + f.right * (horizontal * std::sin(longitude)) +
+         f.up * std::sin(latitude);
+}
+
+// Equidistant fisheye: the angle from the view direction grows linearly with the distance from
+// the image centre, reaching the half field of view on the circle inscribed in the image.
+std::optional<Ray> fisheye_ray(const CameraFrame& f, float x, float y) {
+  float radius = 0.5f * float(std::min(f.width, f.height));
+  float dx = (x - 0.5f * float(f.width)) / radius, dy = (0.5f * float(f.height) - y) / radius;
+  float r = std::sqrt(dx * dx + dy * dy);
+  if (r > 1) return std::nullopt;
+  float theta = r * f.fisheye_half_angle;
+  vec3 side = r > 0 ? (f.right * dx + f.up * dy) / r : f.right;
+  return Ray{f.position, f.forward * std::cos(theta) + side * std::sin(theta)};
+}
+
+// A thin lens: the ray leaves a point of the aperture towards where the pinhole ray meets the
+// plane in focus, so points on that plane stay sharp and others spread into the aperture's shape.
+Ray through_lens(const CameraFrame& f, const Ray& pinhole, vec2 u) {
+  vec2 aperture = f.aperture_blades >= 3 ? sample_regular_polygon(u, f.aperture_blades) : sample_uniform_disk(u);
+  vec3 in_focus = pinhole.origin + pinhole.direction * (f.focus_distance / dot(pinhole.direction, f.forward));
+  vec3 origin = pinhole.origin + (f.right * aperture.x + f.up * aperture.y) * f.lens_radius;
+  return {origin, normalize(in_focus - origin)};
+}
+
+}  // namespace
 
 CameraFrame make_camera_frame(const CameraDesc& camera, int width, int height) {
   CameraFrame f;
@@ -24,15 +60,21 @@ CameraFrame make_camera_frame(const CameraDesc& camera, int width, int height) {
   else
     f.half_height = camera.ortho_height / 2;
   f.half_width = f.half_height * aspect;
+  f.fisheye_half_angle = camera.fisheye_fov_degrees * pi / 360.0f;
+  f.lens_radius = camera.lens_radius;
+  f.focus_distance = camera.focus_distance;
+  f.aperture_blades = camera.aperture_blades;
   return f;
 }
 
-Ray generate_camera_ray(const CameraFrame& f, float x, float y) {
+std::optional<Ray> generate_camera_ray(const CameraFrame& f, float x, float y, vec2 lens) {
+  if (f.projection == Projection::equirectangular) return Ray{f.position, equirectangular_direction(f, x, y)};
+  if (f.projection == Projection::fisheye) return fisheye_ray(f, x, y);
   float sx = (2 * x / float(f.width) - 1) * f.half_width;
   float sy = (1 - 2 * y / float(f.height)) * f.half_height;
-  if (f.projection == Projection::orthographic)
-    return {f.position + f.right * sx + f.up * sy, f.forward};
-  return {f.position, normalize(f.forward + f.right * sx + f.up * sy)};
+  Ray pinhole = f.projection == Projection::orthographic ? Ray{f.position + f.right * sx + f.up * sy, f.forward}
+                                                         : Ray{f.position, normalize(f.forward + f.right * sx + f.up * sy)};
+  return f.lens_radius > 0 ? through_lens(f, pinhole, lens) : pinhole;
 }
 
 CameraDesc make_framing_camera(const SceneDesc& scene) {
@@ -67,6 +109,38 @@ void check_override_range(const std::optional<vec3>& point, const char* flag) {
                                 max_scene_coordinate_text + ")");
 }
 
+namespace {
+
+// --fov: a fisheye's whole field of view, or the vertical one of a perspective camera (an
+// orthographic camera given a field of view becomes perspective).
+void apply_fov(CameraDesc& camera, float degrees) {
+  if (camera.projection == Projection::equirectangular)
+    throw std::invalid_argument("--fov does not apply to an equirectangular camera (it sees all around)");
+  if (camera.projection == Projection::fisheye) {
+    if (!(degrees > 0 && degrees <= 360)) throw std::invalid_argument("--fov of a fisheye must be in (0, 360] degrees");
+    camera.fisheye_fov_degrees = degrees;
+    return;
+  }
+  if (!(degrees > 0 && degrees < 180)) throw std::invalid_argument("--fov must be in (0, 180) degrees");
+  camera.vertical_fov_degrees = degrees;
+  camera.projection = Projection::perspective;
+}
+
+// --lens-radius, --focus-distance and --blades; with --look-at, focus defaults to the point looked at.
+void apply_lens(CameraDesc& camera, const CameraOverride& o) {
+  if (o.lens_radius) camera.lens_radius = *o.lens_radius;
+  if (o.focus_distance) camera.focus_distance = *o.focus_distance;
+  else if (o.look_at && o.lens_radius) camera.focus_distance = dot(*o.look_at - camera.position, camera.forward);
+  if (o.aperture_blades) camera.aperture_blades = *o.aperture_blades;
+  if (camera.lens_radius <= 0) return;
+  bool panorama = camera.projection == Projection::equirectangular || camera.projection == Projection::fisheye;
+  if (panorama) throw std::invalid_argument("a lens (--lens-radius) needs a perspective or orthographic camera");
+  if (!(camera.focus_distance > 0))
+    throw std::invalid_argument("a lens (--lens-radius) needs a focus distance: --focus-distance D, or --look-at");
+}
+
+}  // namespace
+
 void apply_camera_override(CameraDesc& camera, const CameraOverride& o) {
   check_override_range(o.look_from, "--look-from");
   check_override_range(o.look_at, "--look-at");
@@ -78,11 +152,16 @@ void apply_camera_override(CameraDesc& camera, const CameraOverride& o) {
   }
   if (o.up && !(length(*o.up) > 0 && is_finite(*o.up))) throw std::invalid_argument("--up must be a non-zero vector");
   vec3 up = o.up ? *o.up : camera.up;
-  if (o.fov_degrees) {
-    if (!(*o.fov_degrees > 0 && *o.fov_degrees < 180)) throw std::invalid_argument("--fov must be in (0, 180) degrees");
-    camera.vertical_fov_degrees = *o.fov_degrees;
-    camera.projection = Projection::perspective;
+  if (o.projection && *o.projection != camera.projection) {
+    camera.projection = *o.projection;
+    // The file's image size belongs to its own projection. Default shapes: the whole sphere at
+    // equal angular steps, the fisheye's circle, the file's aspect otherwise.
+    camera.width = camera.height = 0;
+    if (camera.projection == Projection::equirectangular) camera.aspect = 2;
+    if (camera.projection == Projection::fisheye) camera.aspect = 1;
   }
+  if (o.fov_degrees) apply_fov(camera, *o.fov_degrees);
+  apply_lens(camera, o);
   vec3 right = cross(camera.forward, up);
   if (!(length(right) > 1e-6f * length(up))) {
     if (o.up) throw std::invalid_argument("--up is parallel to the view direction");

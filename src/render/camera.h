@@ -1,6 +1,8 @@
 // Camera rays: from a CameraDesc and an image size to one ray per film position.
 #pragma once
 
+#include <optional>
+
 #include "accel/ray.h"
 #include "render/render_options.h"
 #include "scene/scene_desc.h"
@@ -12,17 +14,23 @@ struct CameraFrame {
   vec3 position, forward, right, up;
   float half_width = 1, half_height = 1;  // tan(half fov) for perspective, world units for ortho
   int width = 0, height = 0;
+  float fisheye_half_angle = pi / 2;  // radians at the edge of the inscribed circle
+  float lens_radius = 0, focus_distance = 1;
+  int aperture_blades = 0;
 };
 
 CameraFrame make_camera_frame(const CameraDesc& camera, int width, int height);
 
-// Ray through film position (x, y) in pixels, (0, 0) the top-left corner of the image.
-Ray generate_camera_ray(const CameraFrame& frame, float x, float y);
+// Ray through film position (x, y) in pixels, (0, 0) the top-left corner of the image, leaving
+// the lens at the point `lens` in [0,1)^2 picks (ignored by a pinhole). nullopt where the
+// projection sees nothing (outside a fisheye's circle).
+std::optional<Ray> generate_camera_ray(const CameraFrame& frame, float x, float y, vec2 lens = {0.5f, 0.5f});
 
 // A camera that frames the bounds of everything in the scene (used when the file has none).
 CameraDesc make_framing_camera(const SceneDesc& scene);
 
-// Applies --look-from/--look-at/--up/--fov; throws std::invalid_argument on a degenerate view.
+// Applies --look-from/--look-at/--up/--fov, --camera-type and the lens flags; throws
+// std::invalid_argument on a degenerate view or a lens without a focus distance.
 void apply_camera_override(CameraDesc& camera, const CameraOverride& override_);
 
 // Picks the camera by name or index among `cameras` ("" = the first, or `framing` when there is

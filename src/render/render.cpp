@@ -17,6 +17,7 @@
 #include "integrators/naive.h"
 #include "integrators/path.h"
 #include "integrators/whitted.h"
+#include "materials/volume_absorption.h"
 #include "render/camera.h"
 #include "render/progress_meter.h"
 
@@ -43,6 +44,8 @@ RenderContext make_context(const PreparedScene& prepared, const ResolvedSettings
   for (const MaterialDesc& m : scene.materials) ctx.flat_materials.push_back(resolve_material(scene, m, {}));
   ctx.flat_bsdf_materials.reserve(scene.materials.size());
   for (const SurfaceMaterial& m : ctx.flat_materials) ctx.flat_bsdf_materials.emplace_back(m);
+  ctx.absorption.reserve(scene.materials.size());
+  for (const MaterialDesc& m : scene.materials) ctx.absorption.push_back(volume_absorption(m));
   ctx.effects = s.effects;
   ctx.max_depth = s.max_depth;
   ctx.contribution_cutoff = options.contribution_cutoff;
@@ -51,7 +54,7 @@ RenderContext make_context(const PreparedScene& prepared, const ResolvedSettings
 
 // What make_context's per-material tables take.
 uint64_t shading_materials_bytes(const SceneDesc& scene) {
-  return saturating_multiply(scene.materials.size(), sizeof(SurfaceMaterial) + sizeof(BsdfMaterial));
+  return saturating_multiply(scene.materials.size(), sizeof(SurfaceMaterial) + sizeof(BsdfMaterial) + sizeof(color3));
 }
 
 RadianceFunction select_integrator(const ResolvedSettings& s) {
@@ -108,9 +111,11 @@ struct PassRunner {
     for (uint32_t index = first; index < end; ++index) {
       SampleContext sample{s.sampler, uint32_t(y) * uint32_t(s.width) + uint32_t(x), index, uint32_t(s.spp), seed};
       vec2 offset = sample_pixel(sample);
-      Ray ray = generate_camera_ray(frame, float(x) + offset.x, float(y) + offset.y);
+      vec2 lens = frame.lens_radius > 0 ? sample_2d(sample, lens_dimension) : vec2{0.5f, 0.5f};
+      std::optional<Ray> ray = generate_camera_ray(frame, float(x) + offset.x, float(y) + offset.y, lens);
       FirstHit first_hit;
-      color3 value = radiance(ctx, ray, sample, c, want_aovs ? &first_hit : nullptr);
+      // Where the projection sees nothing (outside a fisheye's circle) the sample is black.
+      color3 value = ray ? radiance(ctx, *ray, sample, c, want_aovs ? &first_hit : nullptr) : color3{};
       if (!is_finite(value) || (want_aovs && !is_finite(first_hit))) {
         c.nonfinite_samples++;  // dropped, AOVs and all: never reaches the film
         continue;

@@ -21,6 +21,9 @@ struct Film;
 struct CameraOverride {
   std::optional<vec3> look_from, look_at, up;
   std::optional<float> fov_degrees;
+  std::optional<Projection> projection;  // --camera-type
+  std::optional<float> lens_radius, focus_distance;
+  std::optional<int> aperture_blades;
 };
 
 struct PixelWindow {

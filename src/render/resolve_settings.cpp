@@ -38,10 +38,10 @@ void resolve_size(const RenderOptions& options, const SceneDesc& scene, Resolved
   r.height = int(*height);
 }
 
-// Camera rays start at the camera (or across an orthographic view): they must lie within the
+// Camera rays start at the camera (across its lens, or across an orthographic view): they must lie within the
 // range the accelerator can trace (scene/coordinate_range.h).
 void check_camera_traceable(const ResolvedSettings& r, const PreparedScene& prepared) {
-  double reach = max_component(abs(r.camera.position));
+  double reach = max_component(abs(r.camera.position)) + r.camera.lens_radius;
   if (r.camera.projection == Projection::orthographic)
     reach += double(r.camera.ortho_height) * std::max(1.0, double(r.width) / r.height);
   if (!(reach <= 0.5 * prepared.accel->max_ray_coordinate))

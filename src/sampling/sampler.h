@@ -23,6 +23,10 @@ struct SampleContext {
 // for grid and jittered.
 vec2 sample_pixel(const SampleContext& context);
 
+// The lens point of a thin-lens camera: a fixed pair far above every path vertex's block
+// (integrators/path.cpp), so that a lens shifts no other random number.
+constexpr uint32_t lens_dimension = 0xF0000000u;
+
 // A 1D / 2D value for `dimension` (>= 2; dimensions 0 and 1 are the pixel position). Sobol
 // pads pairs of dimensions with independently shuffled and scrambled (0, 1) Sobol dimensions;
 // the other samplers use independent random values.

@@ -67,6 +67,20 @@ vec2 sample_uniform_triangle(vec2 u) {
   return {b0, b1};
 }
 
+vec2 sample_uniform_disk(vec2 u) {
+  vec3 d = sample_cosine_hemisphere(u);  // the cosine-weighted hemisphere is the disk, lifted
+  return {d.x, d.y};
+}
+
+vec2 sample_regular_polygon(vec2 u, int corners) {
+  // u.x picks one of the triangles (centre, corner k, corner k+1) and, rescaled, places the point in it.
+  float scaled = u.x * float(corners);
+  int k = std::min(int(scaled), corners - 1);
+  vec2 b = sample_uniform_triangle({scaled - float(k), u.y});
+  float step = 2 * pi / float(corners), a0 = pi / 2 + step * float(k), a1 = a0 + step;
+  return vec2{std::cos(a0), std::sin(a0)} * b.x + vec2{std::cos(a1), std::sin(a1)} * b.y;
+}
+
 vec3 to_world(vec3 n, vec3 d) {
   vec3 t, b;
   orthonormal_basis(n, t, b);

@@ -13,6 +13,10 @@ vec3 sample_uniform_sphere(vec2 u);
 vec3 sample_uniform_cone(vec2 u, float cos_max);
 // Uniform barycentrics (b1, b2) on a triangle.
 vec2 sample_uniform_triangle(vec2 u);
+// Uniform point on the unit disk; pdf = 1 / pi.
+vec2 sample_uniform_disk(vec2 u);
+// Uniform point in the regular polygon with `corners` (>= 3) on the unit circle, one at +y.
+vec2 sample_regular_polygon(vec2 u, int corners);
 // Expresses local direction `d` (z = normal) in the frame of unit normal `n`.
 vec3 to_world(vec3 n, vec3 d);
 

@@ -3,6 +3,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "materials/volume_absorption.h"
+
 namespace radiant {
 
 const std::vector<EffectInfo>& effect_catalog() {
@@ -13,6 +15,7 @@ const std::vector<EffectInfo>& effect_catalog() {
       {effect_emission, "emission"},         {effect_environment, "environment"},
       {effect_textures, "textures"},         {effect_normal_maps, "normal-maps"},
       {effect_alpha, "alpha"},               {effect_indirect, "indirect"},
+      {effect_absorption, "absorption"},
   };
   return catalog;
 }
@@ -24,11 +27,14 @@ bool is_transmissive(const MaterialDesc& m) {
 }
 bool is_reflective(const MaterialDesc& m) {
   if (m.model == MaterialModel::phong) return max_component(m.kr) > 0;
-  return m.metallic > 0 || m.roughness < 1;
+  return m.metallic > 0 || m.roughness < 1 || (m.clearcoat > 0 && m.clearcoat_roughness < 1);
 }
 bool has_texture(const MaterialDesc& m) {
   return m.base_color_texture.valid() || m.metallic_roughness_texture.valid() || m.emission_texture.valid() ||
-         m.transmission_texture.valid() || m.specular_texture.valid() || m.alpha_texture.valid();
+         m.transmission_texture.valid() || m.specular_texture.valid() || m.alpha_texture.valid() ||
+         m.specular_strength_texture.valid() || m.specular_color_texture.valid() || m.clearcoat_texture.valid() ||
+         m.clearcoat_roughness_texture.valid() || m.sheen_color_texture.valid() || m.sheen_roughness_texture.valid() ||
+         m.iridescence_texture.valid() || m.iridescence_thickness_texture.valid() || m.anisotropy_texture.valid();
 }
 
 // Materials actually used by some geometry.
@@ -53,7 +59,7 @@ EffectSet analyze_effects(const SceneDesc& scene) {
     else if (!is_black(l.intensity)) ++delta_lights;
   }
   std::vector<bool> used = used_materials(scene);
-  int transmissive = 0, reflective = 0, emissive = 0, textured = 0, normal_mapped = 0, alpha = 0;
+  int transmissive = 0, reflective = 0, emissive = 0, textured = 0, normal_mapped = 0, alpha = 0, absorbing = 0;
   for (size_t i = 0; i < scene.materials.size(); ++i) {
     if (!used[i]) continue;
     const MaterialDesc& m = scene.materials[i];
@@ -63,6 +69,7 @@ EffectSet analyze_effects(const SceneDesc& scene) {
     textured += has_texture(m);
     normal_mapped += m.normal_texture.valid();
     alpha += m.alpha_mode != AlphaMode::opaque;
+    absorbing += !is_black(volume_absorption(m));
   }
   for (const InstanceDesc& i : scene.instances)
     if (!scene.meshes[i.mesh].colors.empty()) {
@@ -92,6 +99,7 @@ EffectSet analyze_effects(const SceneDesc& scene) {
   if (alpha) add(effect_alpha, count(alpha, "material(s) with alpha mask or blend"));
   if (delta_lights || emissive || environment)
     add(effect_indirect, "light bounces between surfaces (path tracer)");
+  if (absorbing) add(effect_absorption, count(absorbing, "material(s) with an absorbing volume (KHR_materials_volume)"));
   return set;
 }
 

@@ -24,8 +24,9 @@ enum Effect : uint32_t {
   effect_normal_maps = 1u << 9,          // tangent-space normal perturbation
   effect_alpha = 1u << 10,               // alpha cut-outs and blending
   effect_indirect = 1u << 11,            // indirect (global) illumination (path tracer)
+  effect_absorption = 1u << 12,          // Beer-Lambert absorption inside transmissive volumes (path tracer)
 };
-constexpr uint32_t effect_all = (1u << 12) - 1;
+constexpr uint32_t effect_all = (1u << 13) - 1;
 
 struct EffectInfo {
   Effect effect;

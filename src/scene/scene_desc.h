@@ -15,7 +15,9 @@ namespace radiant {
 
 // ---------------------------------------------------------------- cameras
 
-enum class Projection { perspective, orthographic };
+// Equirectangular: longitude across the image (the view direction at its centre), latitude
+// down it. Fisheye: equidistant, the field of view across the circle inscribed in the image.
+enum class Projection { perspective, orthographic, equirectangular, fisheye };
 
 struct CameraDesc {
   std::string name;
@@ -25,6 +27,11 @@ struct CameraDesc {
   vec3 up = {0, 1, 0};        // unit, orthogonal to forward
   float vertical_fov_degrees = 45;  // perspective
   float ortho_height = 2;           // orthographic: full height of the view volume
+  float fisheye_fov_degrees = 180;  // fisheye
+  // Thin lens (perspective and orthographic, as pbrt's lensradius and focaldistance): 0 = pinhole.
+  float lens_radius = 0;
+  float focus_distance = 0;  // along the view direction; 0 = unset
+  int aperture_blades = 0;   // 0 = a round aperture, 3 or more a regular polygon
   float aspect = 0;                 // width / height; 0 = take it from the image size
   int width = 0, height = 0;        // image size the file asks for; 0 = unset
 };
@@ -89,6 +96,37 @@ struct MaterialDesc {
   TextureRef normal_texture;
   float normal_scale = 1;
   TextureRef transmission_texture;  // linear, R channel
+  // KHR_materials_specular: a dielectric's Fresnel layer is specular × F, with F0 tinted by
+  // specular_color; specular 0 leaves an exactly Lambertian base.
+  float specular = 1;
+  color3 specular_color = {1, 1, 1};
+  TextureRef specular_strength_texture;  // linear, A channel (the extension's specularTexture)
+  TextureRef specular_color_texture;     // sRGB, RGB
+  // KHR_materials_clearcoat: a clear GGX layer over the whole material.
+  float clearcoat = 0, clearcoat_roughness = 0;
+  TextureRef clearcoat_texture;            // linear, R channel
+  TextureRef clearcoat_roughness_texture;  // linear, G channel
+  // KHR_materials_sheen: a Charlie sheen (cloth, velvet) between the coat and the base.
+  color3 sheen_color = {0, 0, 0};
+  float sheen_roughness = 0;
+  TextureRef sheen_color_texture;      // sRGB, RGB
+  TextureRef sheen_roughness_texture;  // linear, A channel
+  // KHR_materials_anisotropy: GGX rougher along a direction of the tangent frame (brushed metal).
+  float anisotropy_strength = 0;
+  float anisotropy_rotation = 0;  // radians, counter-clockwise from the tangent
+  TextureRef anisotropy_texture;  // linear: RG the direction in [-1, 1]^2, B the strength
+  // KHR_materials_iridescence: a thin dielectric film over the base (soap bubbles, oil, beetles).
+  float iridescence = 0;
+  TextureRef iridescence_texture;  // linear, R channel
+  float iridescence_ior = 1.3f;
+  float iridescence_thickness_min = 100, iridescence_thickness_max = 400;  // nanometres
+  TextureRef iridescence_thickness_texture;  // linear, G: from min to max (max without it)
+  // KHR_materials_volume: light inside a closed transmissive mesh is absorbed (Beer-Lambert),
+  // keeping attenuation_color after attenuation_distance. Thickness 0 is a thin wall (no volume);
+  // a ray tracer measures the real path length, so only whether it is 0 matters.
+  float thickness = 0;
+  float attenuation_distance = 0;  // 0 = infinite: no absorption
+  color3 attenuation_color = {1, 1, 1};
   TextureRef specular_texture;      // linear RGB weight for ks (OBJ map_Ks)
   TextureRef alpha_texture;         // linear, R channel (OBJ map_d)
 

@@ -65,10 +65,14 @@ struct Checker {
 
   void material(const MaterialDesc& m, const std::string& where) const {
     const std::pair<const char*, vec3> colors[] = {{"ka", m.ka}, {"kd", m.kd}, {"ks", m.ks}, {"kr", m.kr},
-                                                   {"kt", m.kt}, {"base_color", m.base_color}, {"emission", m.emission}};
+                                                   {"kt", m.kt}, {"base_color", m.base_color}, {"emission", m.emission},
+                                                   {"specular_color", m.specular_color}, {"sheen_color", m.sheen_color},
+                                                   {"attenuation_color", m.attenuation_color}};
     for (const auto& [name, color] : colors) non_negative(color, where + "." + name);
     for (float f : {m.shininess, m.ior, m.alpha, m.metallic, m.roughness, m.transmission, m.normal_scale,
-                    m.alpha_cutoff})
+                    m.alpha_cutoff, m.specular, m.clearcoat, m.clearcoat_roughness,
+                    m.sheen_roughness, m.thickness, m.attenuation_distance, m.iridescence, m.iridescence_thickness_min,
+                    m.iridescence_thickness_max, m.anisotropy_strength, m.anisotropy_rotation})
       finite(f, where);
     // Beyond these, refraction's eta^2 overflows float and directions stop being numbers.
     constexpr float min_ior = 1e-3f, max_ior = 1e3f;
@@ -83,6 +87,20 @@ struct Checker {
     texture_ref(m.transmission_texture, where + ".transmission_texture");
     texture_ref(m.specular_texture, where + ".specular_texture");
     texture_ref(m.alpha_texture, where + ".alpha_texture");
+    texture_ref(m.specular_strength_texture, where + ".specular_strength_texture");
+    texture_ref(m.specular_color_texture, where + ".specular_color_texture");
+    texture_ref(m.clearcoat_texture, where + ".clearcoat_texture");
+    texture_ref(m.clearcoat_roughness_texture, where + ".clearcoat_roughness_texture");
+    texture_ref(m.sheen_color_texture, where + ".sheen_color_texture");
+    texture_ref(m.sheen_roughness_texture, where + ".sheen_roughness_texture");
+    texture_ref(m.iridescence_texture, where + ".iridescence_texture");
+    texture_ref(m.anisotropy_texture, where + ".anisotropy_texture");
+    texture_ref(m.iridescence_thickness_texture, where + ".iridescence_thickness_texture");
+    if (!(m.iridescence_ior >= min_ior && m.iridescence_ior <= max_ior)) {
+      char text[64];
+      std::snprintf(text, sizeof text, "%g is out of range (%g to %g)", m.iridescence_ior, min_ior, max_ior);
+      fail(where + ".iridescence_ior", text);
+    }
     texture_ref(m.emission_texture, where + ".emission_texture");
   }
 
@@ -120,6 +138,11 @@ struct Checker {
     if (!(c.ortho_height > 0) || !std::isfinite(c.ortho_height)) fail(where, "orthographic height must be positive");
     in_range(c.ortho_height, where + ".orthographic_height");
     if (!(c.aspect >= 0) || !std::isfinite(c.aspect)) fail(where, "aspect must be positive");
+    if (!(c.fisheye_fov_degrees > 0 && c.fisheye_fov_degrees <= 360)) fail(where, "fisheye field of view out of (0, 360]");
+    if (!(c.lens_radius >= 0)) fail(where + ".lens_radius", "must not be negative");
+    in_range(c.lens_radius, where + ".lens_radius");
+    if (!(c.focus_distance >= 0)) fail(where + ".focus_distance", "must not be negative");
+    in_range(c.focus_distance, where + ".focus_distance");
   }
 
   void light(const LightDesc& l, const std::string& where) const {

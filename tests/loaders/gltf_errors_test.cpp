@@ -230,6 +230,51 @@ TEST_CASE("gltf errors: indices and texCoords in extensions are checked before a
                      "\"texCoord\":-3e9}}}}") ==
         "file.gltf: materials[0].extensions.KHR_materials_transmission.transmissionTexture.texCoord: "
         "TEXCOORD_-3e+09 is not supported (0 or 1)");
+  CHECK(with_texture("{\"extensions\":{\"KHR_materials_specular\":{\"specularColorTexture\":{\"index\":7}}}}") ==
+        "file.gltf: materials[0].extensions.KHR_materials_specular.specularColorTexture.index: texture 7 out "
+        "of range (1 textures)");
+}
+
+TEST_CASE("gltf errors: KHR_materials_specular factors must be non-negative numbers") {
+  auto with_specular = [](const std::string& specular) {
+    GltfBuilder b = quad_builder();
+    return error_of(b.gltf("\"materials\":[{\"extensions\":{\"KHR_materials_specular\":" + specular +
+                           "}}],\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0},\"indices\":1,"
+                           "\"material\":0}]}],\"nodes\":[{\"mesh\":0}],\"scenes\":[{\"nodes\":[0]}]"));
+  };
+  std::string where = "file.gltf: materials[0].extensions.KHR_materials_specular.";
+  CHECK(with_specular("{\"specularFactor\":-0.5}") == where + "specularFactor: must not be negative, got -0.5");
+  CHECK(with_specular("{\"specularColorFactor\":[1,-1,1]}") == where + "specularColorFactor: must not be negative, got -1");
+  CHECK(with_specular("{\"specularColorFactor\":[1,1]}") == where + "specularColorFactor: must be an array of 3 numbers");
+  CHECK(with_specular("{\"specularColorFactor\":[1,\"a\",1]}") ==
+        where + "specularColorFactor: must be an array of 3 numbers");
+  CHECK(with_specular("{\"specularFactor\":0,\"specularColorFactor\":[1,1,1]}") == "no error");
+}
+
+TEST_CASE("gltf errors: clearcoat, sheen and volume factors must be non-negative numbers") {
+  auto with_extension = [](const std::string& extensions) {
+    GltfBuilder b = quad_builder();
+    return error_of(b.gltf("\"materials\":[{\"extensions\":{" + extensions +
+                           "}}],\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0},\"indices\":1,"
+                           "\"material\":0}]}],\"nodes\":[{\"mesh\":0}],\"scenes\":[{\"nodes\":[0]}]"));
+  };
+  std::string where = "file.gltf: materials[0].extensions.";
+  CHECK(with_extension("\"KHR_materials_clearcoat\":{\"clearcoatFactor\":-1}") ==
+        where + "KHR_materials_clearcoat.clearcoatFactor: must not be negative, got -1");
+  CHECK(with_extension("\"KHR_materials_clearcoat\":{\"clearcoatRoughnessFactor\":1e39}") ==
+        where + "KHR_materials_clearcoat.clearcoatRoughnessFactor: 1e+39 does not fit in a float");
+  CHECK(with_extension("\"KHR_materials_sheen\":{\"sheenColorFactor\":[0,0,-2]}") ==
+        where + "KHR_materials_sheen.sheenColorFactor: must not be negative, got -2");
+  CHECK(with_extension("\"KHR_materials_sheen\":{\"sheenRoughnessFactor\":-0.1}") ==
+        where + "KHR_materials_sheen.sheenRoughnessFactor: must not be negative, got -0.1");
+  CHECK(with_extension("\"KHR_materials_volume\":{\"attenuationDistance\":0}") ==
+        where + "KHR_materials_volume.attenuationDistance: must be positive, got 0");
+  CHECK(with_extension("\"KHR_materials_volume\":{\"thicknessFactor\":-2}") ==
+        where + "KHR_materials_volume.thicknessFactor: must not be negative, got -2");
+  CHECK(with_extension("\"KHR_materials_volume\":{\"attenuationColor\":[1,1]}") ==
+        where + "KHR_materials_volume.attenuationColor: must be an array of 3 numbers");
+  CHECK(with_extension("\"KHR_materials_sheen\":{\"sheenColorFactor\":[1,1,1]},\"KHR_materials_clearcoat\":{},"
+                       "\"KHR_materials_volume\":{\"thicknessFactor\":1,\"attenuationDistance\":3}") == "no error");
 }
 
 TEST_CASE("gltf errors: a NUL or line break in a URI is shown escaped, on one line") {

@@ -1,6 +1,7 @@
 // glTF materials, textures and samplers to MaterialDesc.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 
 #include "loaders/gltf_builder.h"
 #include "load_scene.h"
@@ -29,7 +30,16 @@ TEST_CASE("gltf materials: factors, textures, samplers and the supported extensi
       "\"normalTexture\":{\"index\":0,\"scale\":0.5},\"emissiveFactor\":[1,0.5,0],\"alphaMode\":\"MASK\","
       "\"alphaCutoff\":0.25,\"doubleSided\":true,\"extensions\":{\"KHR_materials_emissive_strength\":"
       "{\"emissiveStrength\":4},\"KHR_materials_transmission\":{\"transmissionFactor\":0.9},"
-      "\"KHR_materials_ior\":{\"ior\":1.33},\"KHR_materials_unlit\":{}}}]";
+      "\"KHR_materials_ior\":{\"ior\":1.33},\"KHR_materials_unlit\":{},\"KHR_materials_specular\":"
+      "{\"specularFactor\":0.3,\"specularTexture\":{\"index\":0},\"specularColorFactor\":[2,1,0.5],"
+      "\"specularColorTexture\":{\"index\":0,\"texCoord\":1}},\"KHR_materials_clearcoat\":{\"clearcoatFactor\":0.7,"
+      "\"clearcoatRoughnessFactor\":0.2,\"clearcoatTexture\":{\"index\":0},\"clearcoatRoughnessTexture\":{\"index\":0},"
+      "\"clearcoatNormalTexture\":{\"index\":0}},\"KHR_materials_sheen\":{\"sheenColorFactor\":[0.9,0.1,0.3],"
+      "\"sheenRoughnessFactor\":0.6,\"sheenColorTexture\":{\"index\":0},\"sheenRoughnessTexture\":{\"index\":0}},"
+      "\"KHR_materials_volume\":{\"thicknessFactor\":0.05,\"attenuationDistance\":2.5,\"attenuationColor\":[0.9,0.8,0.7]},"
+      "\"KHR_materials_iridescence\":{\"iridescenceFactor\":0.6,\"iridescenceIor\":1.8,\"iridescenceThicknessMinimum\":200,"
+      "\"iridescenceThicknessMaximum\":700,\"iridescenceThicknessTexture\":{\"index\":0}},"
+      "\"KHR_materials_anisotropy\":{\"anisotropyStrength\":0.7,\"anisotropyRotation\":1.25,\"anisotropyTexture\":{\"index\":0}}}}]";
   SceneDesc scene = load_scene(dir.write("m.gltf", b.gltf(body)).string());
   REQUIRE(scene.materials.size() == 2);
   const MaterialDesc& m = scene.materials[0];
@@ -51,6 +61,40 @@ TEST_CASE("gltf materials: factors, textures, samplers and the supported extensi
   CHECK(m.transmission == doctest::Approx(0.9));
   CHECK(m.ior == doctest::Approx(1.33));
   CHECK(m.unlit);
+  CHECK(m.specular == doctest::Approx(0.3));
+  CHECK(m.specular_color == color3{2, 1, 0.5f});
+  CHECK(m.specular_strength_texture.texture == 0);
+  CHECK(m.specular_color_texture.texcoord == 1);
+  CHECK(m.clearcoat == doctest::Approx(0.7));
+  CHECK(m.clearcoat_roughness == doctest::Approx(0.2));
+  CHECK(m.clearcoat_texture.texture == 0);
+  CHECK(m.clearcoat_roughness_texture.texture == 0);
+  CHECK(std::count_if(scene.warnings.begin(), scene.warnings.end(), [](const std::string& w) {
+          return w.find("materials[0].extensions.KHR_materials_clearcoat.clearcoatNormalTexture: not supported") !=
+                 std::string::npos;
+        }) == 1);
+  CHECK(scene.materials[1].specular == 1);  // the default material has the full Fresnel layer
+  CHECK(m.sheen_color == color3{0.9f, 0.1f, 0.3f});
+  CHECK(m.sheen_roughness == doctest::Approx(0.6));
+  CHECK(m.sheen_color_texture.texture == 0);
+  CHECK(m.sheen_roughness_texture.texture == 0);
+  CHECK(m.thickness == doctest::Approx(0.05));
+  CHECK(m.attenuation_distance == 2.5f);
+  CHECK(m.attenuation_color == color3{0.9f, 0.8f, 0.7f});
+  CHECK(scene.materials[1].attenuation_distance == 0);  // infinite: no absorption
+  CHECK(m.iridescence == doctest::Approx(0.6));
+  CHECK(m.iridescence_ior == doctest::Approx(1.8));
+  CHECK(m.iridescence_thickness_min == 200);
+  CHECK(m.iridescence_thickness_max == 700);
+  CHECK(m.iridescence_thickness_texture.texture == 0);
+  CHECK_FALSE(m.iridescence_texture.valid());
+  CHECK(scene.materials[1].iridescence == 0);
+  CHECK(m.anisotropy_strength == doctest::Approx(0.7));
+  CHECK(m.anisotropy_rotation == doctest::Approx(1.25));
+  CHECK(m.anisotropy_texture.texture == 0);
+  CHECK(scene.materials[1].clearcoat == 0);
+  CHECK(is_black(scene.materials[1].sheen_color));
+  CHECK_FALSE(scene.materials[1].specular_color_texture.valid());
   CHECK(scene.materials[1].name == "glTF default");
   CHECK(scene.meshes[1].material == 1);
   REQUIRE(scene.textures.size() == 1);
@@ -97,4 +141,59 @@ TEST_CASE("gltf: a normal-mapped primitive without NORMAL gets flat normals on u
     CHECK(mesh.normals[i].z == doctest::Approx(1));
     CHECK(mesh.tangents[i].x == doctest::Approx(1));  // generated along +u = +x
   }
+}
+
+TEST_CASE("gltf materials: KHR_materials_variants picks each primitive's material by --variant name") {
+  ScratchDir dir("gltf-variants");
+  GltfBuilder b = quad_builder();
+  std::string body =
+      "\"materials\":[{\"name\":\"plain\"},{\"name\":\"red\"},{\"name\":\"blue\"}],"
+      "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0},\"indices\":1,\"material\":0,"
+      "\"extensions\":{\"KHR_materials_variants\":{\"mappings\":[{\"material\":1,\"variants\":[0]},"
+      "{\"material\":2,\"variants\":[1,2]}]}}}]}],"
+      "\"nodes\":[{\"mesh\":0}],\"scenes\":[{\"nodes\":[0]}],\"extensionsUsed\":[\"KHR_materials_variants\"],"
+      "\"extensions\":{\"KHR_materials_variants\":{\"variants\":[{\"name\":\"red shoe\"},{\"name\":\"blue shoe\"},"
+      "{\"name\":\"night\"}]}}";
+  std::string path = dir.write("v.gltf", b.gltf(body)).string();
+  auto material_name = [&](const std::string& variant) {
+    LoadOptions options;
+    options.material_variant = variant;
+    SceneDesc scene = load_scene(path, options);
+    CHECK(scene.warnings.empty());
+    return scene.materials.at(size_t(scene.meshes.at(0).material)).name;
+  };
+  CHECK(material_name("") == "plain");
+  CHECK(material_name("red shoe") == "red");
+  CHECK(material_name("blue shoe") == "blue");
+  CHECK(material_name("night") == "blue");
+  LoadOptions unknown;
+  unknown.material_variant = "green";
+  CHECK_THROWS_WITH_AS(load_scene(path, unknown),
+                       (path + ": no material variant 'green' (variants: red shoe, blue shoe, night)").c_str(), LoadError);
+  std::string plain = dir.write("plain.gltf", quad_builder().gltf(std::string(quad_mesh) + ",\"nodes\":[{\"mesh\":0}],"
+                                                                  "\"scenes\":[{\"nodes\":[0]}]")).string();
+  CHECK_THROWS_WITH_AS(load_scene(plain, unknown),
+                       (plain + ": no material variant 'green' (the file has no KHR_materials_variants)").c_str(),
+                       LoadError);
+  std::string obj = dir.write("t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").string();
+  CHECK_THROWS_WITH_AS(load_scene(obj, unknown),
+                       (obj + ": material variants (--variant) are a glTF extension (KHR_materials_variants)").c_str(),
+                       LoadError);
+}
+
+TEST_CASE("gltf materials: a variant mapping to a material out of range names its place") {
+  ScratchDir dir("gltf-variant-range");
+  GltfBuilder b = quad_builder();
+  std::string body =
+      "\"materials\":[{}],\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0},\"indices\":1,"
+      "\"extensions\":{\"KHR_materials_variants\":{\"mappings\":[{\"material\":5,\"variants\":[0]}]}}}]}],"
+      "\"nodes\":[{\"mesh\":0}],\"scenes\":[{\"nodes\":[0]}],"
+      "\"extensions\":{\"KHR_materials_variants\":{\"variants\":[{\"name\":\"a\"}]}}";
+  std::string path = dir.write("v.gltf", b.gltf(body)).string();
+  LoadOptions options;
+  options.material_variant = "a";
+  CHECK_THROWS_WITH_AS(load_scene(path, options),
+                       (path + ": meshes[0].primitives[0].extensions.KHR_materials_variants.mappings[0].material: "
+                               "material 5 out of range (1 materials)").c_str(),
+                       LoadError);
 }

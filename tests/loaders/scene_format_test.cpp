@@ -1,6 +1,7 @@
 // The .scene loader: the older format, the syntax shared by every block, and the assets.
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <fstream>
 #include <streambuf>
 
@@ -250,6 +251,26 @@ TEST_CASE("asset showcase.scene: ten or more bodies of four or more kinds, four 
   for (const MeshDesc& mesh : scene.meshes)
     transparent += !is_black(scene.materials.at(size_t(mesh.material)).kt);
   CHECK(transparent == 2);
+}
+
+TEST_CASE("asset depth-of-field.scene: a six-bladed lens focused on the middle of five balls") {
+  SceneDesc scene = load_asset("depth-of-field.scene");
+  REQUIRE(scene.cameras.size() == 1);
+  const CameraDesc& camera = scene.cameras[0];
+  CHECK(camera.lens_radius == 12);
+  CHECK(camera.aperture_blades == 6);
+  // The distance along the view from (0, 60, 400) to the look-at point (0, 40, 0).
+  CHECK(camera.focus_distance == Approx(std::sqrt(400.0 * 400 + 20 * 20)));
+  CHECK(scene.shapes.size() == 6);
+}
+
+TEST_CASE("asset panorama.scene: an equirectangular camera inside a ring of bodies") {
+  SceneDesc scene = load_asset("panorama.scene");
+  REQUIRE(scene.cameras.size() == 1);
+  CHECK(scene.cameras[0].projection == Projection::equirectangular);
+  CHECK(scene.cameras[0].aspect == 2);
+  CHECK(scene.cameras[0].width == 512);
+  CHECK(scene.shapes.size() == 7);
 }
 
 TEST_CASE("asset room-older-format.scene: six walls, an emitting sphere, a mirror sphere") {

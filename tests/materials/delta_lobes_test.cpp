@@ -100,8 +100,8 @@ TEST_CASE("metallic-roughness smooth glass: Fresnel splits reflection and refrac
   }
 }
 
-TEST_CASE("metallic-roughness: a Lambertian surface is exactly base color over pi") {
-  SurfaceMaterial lambert = metallic_roughness({0.8f, 0.5f, 0.2f}, 0, 1);
+TEST_CASE("metallic-roughness: specularFactor 0 is exactly base color over pi") {
+  SurfaceMaterial lambert = gltf_lambert({0.8f, 0.5f, 0.2f});
   vec3 wi = normalize(vec3{0.2f, 0.3f, 0.9f});
   color3 f = Bsdf(lambert, up, normalize(vec3{-0.5f, 0, 0.5f})).eval(wi);
   CHECK(f.x == doctest::Approx(0.8f / pi * wi.z));

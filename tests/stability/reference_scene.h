@@ -161,7 +161,7 @@ inline ReferenceCheck check_against_reference(const Film& film, const CameraDesc
   ReferenceCheck check;
   for (int y = 0; y < film.height; ++y)
     for (int x = 0; x < film.width; ++x) {
-      ReferencePixel expected = reference_pixel(reference, generate_camera_ray(frame, x + 0.5f, y + 0.5f), margin);
+      ReferencePixel expected = reference_pixel(reference, *generate_camera_ray(frame, x + 0.5f, y + 0.5f), margin);
       float got = pixel_mean(film.at(x, y)).x;
       if (expected.kind == ReferenceKind::lit) {
         ++check.lit;
