@@ -7,6 +7,7 @@ find_package(tinyobjloader REQUIRED)
 find_package(TBB REQUIRED)
 find_package(CLI11 REQUIRED)
 find_package(doctest REQUIRED)
+find_package(draco REQUIRED)  # KHR_draco_mesh_compression
 
 # Debian's OpenImageIO config lists /usr/include/opencv4, which exists only with libopencv-dev;
 # CMake refuses a missing include path, so drop it rather than install OpenCV.
