@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "file_access.h"
+#include "gltf/gltf_animation.h"
 #include "gltf/gltf_context.h"
 #include "gltf/gltf_declarations.h"
 #include "gltf/gltf_draco.h"
@@ -101,6 +102,11 @@ SceneDesc load_gltf(const std::string& path, const LoadOptions& given) {
     if (!is_supported(name)) context.warn("extension " + name + " is not supported and is ignored");
   convert_textures(context);
   convert_materials(context);
+  if (options.animation_time) {
+    int animation = find_animation(context, options.animation);
+    if (animation < 0) context.warn("--time: the file has no animations; its static state is shown");
+    else apply_animation(model, context, animation, *options.animation_time);
+  }
   decode_draco_primitives(model, context);
   convert_meshes(context);
   convert_nodes(context);
