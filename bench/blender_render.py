@@ -15,11 +15,15 @@ uniform radiance (radiant's --env-color; default black). OUT ending in
 .exr is written linear, anything else as 8-bit sRGB. Prints "render seconds: S" (scene sync, BVH
 and sampling, measured around the render call) for the bench script to read.
 """
+import os
 import sys
 import time
 
 import bpy
 import numpy
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from cycles_like_radiant import configure_cycles  # noqa: E402
 
 # Debian 12's Blender 3.4 glTF importer still uses numpy.bool, which its numpy (1.24) removed.
 if not hasattr(numpy, "bool"):
@@ -69,32 +73,10 @@ for material in bpy.data.materials:
     if material.node_tree and not keep_principled:
         as_lambert(material)
 
-scene.render.engine = "CYCLES"
-cycles = scene.cycles
-cycles.device = "CPU"
-cycles.samples = spp
-cycles.use_adaptive_sampling = False
-cycles.use_denoising = False
-cycles.seed = seed
-cycles.sample_clamp_direct = 0.0
-cycles.sample_clamp_indirect = 0.0
-cycles.light_sampling_threshold = 0.0
-cycles.max_bounces = max_depth - 1
-cycles.diffuse_bounces = max_depth - 1
-cycles.glossy_bounces = max_depth - 1
-cycles.transmission_bounces = max_depth - 1
-cycles.pixel_filter_type = "BOX"
-cycles.filter_width = 1.0
+configure_cycles(scene, size, spp, max_depth, seed)
 scene.render.threads_mode = "FIXED"
 scene.render.threads = threads
-scene.render.resolution_x = size
-scene.render.resolution_y = size
-scene.render.resolution_percentage = 100
 scene.render.use_persistent_data = False
-scene.view_settings.view_transform = "Standard"
-scene.view_settings.look = "None"
-scene.view_settings.exposure = 0.0
-scene.view_settings.gamma = 1.0
 scene.world = bpy.data.worlds.new("background") if scene.world is None else scene.world
 scene.world.use_nodes = False
 scene.world.color = environment

@@ -5,6 +5,7 @@
 #include <iostream>
 #include <new>
 
+#include "animation_flags.h"
 #include "commands.h"
 #include "load_scene.h"
 #include "option_parsing.h"
@@ -34,11 +35,14 @@ int render_main(int argc, char** argv) {
   CLI::App app{"Render a scene (.scene, .gltf, .glb, .obj; - reads a .scene from stdin) to an image."};
   app.footer(render_examples);
   std::string scene_path, output, stats_path;
+  LoadOptions load_options;
   RenderFlags flags;
+  AnimationFlags animation;
   app.add_option("SCENE", scene_path, "Scene file, or - for a .scene on standard input")->required();
   app.add_option("-o,--output", output, "Output image (.png is 8-bit sRGB, .exr linear float; - for standard output)")
       ->required();
   flags.bind(app, true);
+  animation.bind(app);
   app.add_option("--time-limit", flags.options.time_limit_seconds, "Stop after this many seconds (loading included)")
       ->check(time_limit_range());
   app.add_option("--noise-threshold", flags.options.noise_threshold, "Adaptive sampling: stop pixels under this relative error")
@@ -52,6 +56,7 @@ int render_main(int argc, char** argv) {
   try {
     parse_arguments(app, argc, argv);
     flags.finish();
+    animation.finish(load_options);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);
     std::cerr << "radiant render: " << e.what() << "\n";
@@ -96,7 +101,6 @@ int render_main(int argc, char** argv) {
     return exit_failure;
   }
   try {
-    LoadOptions load_options;
     load_options.allow_external_files = flags.allow_external_files;
     load_options.budget = &budget;
     load_options.gltf_scene = flags.gltf_scene;

@@ -87,6 +87,9 @@ SceneDesc load_scene(const std::string& path, const LoadOptions& given) {
   try {
     scene = load_by_extension(path, options);
     scene.source_path = path == "-" ? "<stdin>" : path;
+    std::string ext = lowercase_extension(path);
+    if (options.animation_time && ext != ".gltf" && ext != ".glb")
+      scene.warnings.push_back(scene.source_path + ": --time/--frame/--animation apply to glTF animations only");
     scene.input_files = std::move(files_read);
     validate_scene(scene);
   } catch (...) {

@@ -27,6 +27,10 @@ struct LoadOptions {
   size_t max_memory_bytes = 0;  // the limit of that own budget; 0 = default_memory_limit()
   int gltf_scene = -1;          // glTF scene index; -1 = the file's default scene
   std::string material_variant;  // KHR_materials_variants: the variant to use; "" = the default materials
+  // glTF: sample `animation` (a name or index; "" = the first) at this time in seconds; unset =
+  // the file's static state (docs/gltf-obj.md, "Animation").
+  std::optional<double> animation_time;
+  std::string animation;
   // Every file the load reads is appended here (load_scene sets it; SceneDesc::input_files).
   std::vector<std::string>* files_read = nullptr;
 };

@@ -155,6 +155,13 @@ std::vector<float> read_elements(const GltfContext& context, const tinygltf::Acc
 
 }  // namespace
 
+const unsigned char* buffer_view_bytes(const GltfContext& context, int view_index, const std::string& where,
+                                       size_t& length) {
+  check_index(context, view_index, context.model.bufferViews.size(), where, "bufferView");
+  length = context.model.bufferViews[size_t(view_index)].byteLength;
+  return checked_view_data(context, view_index, 0, 1, length, 0, where, "the data");
+}
+
 size_t accessor_count(const GltfContext& context, int index, const std::string& where) {
   return checked_accessor(context, index, where).count;
 }

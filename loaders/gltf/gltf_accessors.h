@@ -19,6 +19,10 @@ std::vector<float> read_accessor_floats(const GltfContext& context, int index, c
 // An index accessor: SCALAR of unsigned byte, short or int.
 std::vector<uint32_t> read_accessor_indices(const GltfContext& context, int index, const std::string& where);
 
+// The bytes of bufferView `view_index` (its byteLength in `length`), checked against its buffer.
+const unsigned char* buffer_view_bytes(const GltfContext& context, int view_index, const std::string& where,
+                                       size_t& length);
+
 // Number of elements accessor `index` declares (after checking the index).
 size_t accessor_count(const GltfContext& context, int index, const std::string& where);
 

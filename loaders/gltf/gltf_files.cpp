@@ -163,10 +163,25 @@ bool jpeg_is_complete(const unsigned char* bytes, size_t size) {
   return false;
 }
 
+// The MIME type of a WebP or KTX2 image (which stb_image cannot decode), else "".
+static std::string image_format_beyond_stb(const unsigned char* bytes, size_t size) {
+  static const unsigned char ktx2[12] = {0xAB, 'K', 'T', 'X', ' ', '2', '0', 0xBB, '\r', '\n', 0x1A, '\n'};
+  if (size >= 12 && std::equal(bytes, bytes + 4, "RIFF") && std::equal(bytes + 8, bytes + 12, "WEBP")) return "image/webp";
+  if (size >= 12 && std::equal(ktx2, ktx2 + 12, bytes)) return "image/ktx2";
+  return "";
+}
+
 // Charges the decoding against the memory budget, then decodes with tinygltf's stb_image.
+// WebP and KTX2 images are left undecoded, marked by their MIME type: the textures decide
+// whether they are read or a PNG/JPEG fallback is (gltf_materials.cpp).
 static bool decode_image(GltfFileAccess& access, tinygltf::Image* image, int index, std::string* err,
                          std::string* warn, const unsigned char* bytes, size_t size) {
   std::string where = access.file + ": " + element("images", size_t(index));
+  std::string deferred = image_format_beyond_stb(bytes, size);
+  if (!deferred.empty()) {
+    image->mimeType = deferred;
+    return true;
+  }
   int width = 0, height = 0, bytes_per_channel = 1;
   if (size == 0 || size > 0x7fffffff || !read_image_header(bytes, size, width, height, bytes_per_channel)) {
     refuse(access, where + ": not a PNG or JPEG image");

@@ -5,8 +5,10 @@
 #include <sstream>
 
 #include "file_access.h"
+#include "gltf/gltf_animation.h"
 #include "gltf/gltf_context.h"
 #include "gltf/gltf_declarations.h"
+#include "gltf/gltf_draco.h"
 #include "gltf/gltf_files.h"
 #include "gltf/gltf_materials.h"
 #include "gltf/gltf_variants.h"
@@ -23,7 +25,8 @@ const std::vector<std::string> supported_extensions = {
     "KHR_materials_transmission", "KHR_materials_ior",              "KHR_materials_unlit",
     "KHR_materials_specular",     "KHR_materials_clearcoat",        "KHR_materials_sheen",
     "KHR_materials_volume",       "KHR_materials_variants",         "KHR_materials_iridescence",
-    "KHR_materials_anisotropy",   "KHR_mesh_quantization"};
+    "KHR_materials_anisotropy",   "KHR_mesh_quantization",          "KHR_draco_mesh_compression",
+    "EXT_texture_webp"};
 
 bool is_supported(const std::string& name) {
   return std::find(supported_extensions.begin(), supported_extensions.end(), name) != supported_extensions.end();
@@ -72,9 +75,16 @@ tinygltf::Model parse(const std::string& path, const std::string& bytes, const L
   install_file_access(gltf, access);
   tinygltf::Model model;
   std::string error, warning;
-  const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
-  bool ok = binary ? gltf.LoadBinaryFromMemory(&model, &error, &warning, data, unsigned(bytes.size()), "")
-                   : gltf.LoadASCIIFromString(&model, &error, &warning, bytes.data(), unsigned(bytes.size()), "");
+  // Draco files are rewritten through a second JSON tree first, charged like tinygltf's, with
+  // the copy of the file it makes.
+  if (json.find("KHR_draco_mesh_compression") != std::string::npos)
+    charge_load(options, saturating_add(gltf_model_bytes(counts, json.size()), bytes.size()),
+                path + ": the JSON document, rewritten for Draco");
+  std::string rewritten;
+  const std::string& document = with_draco_index_views(bytes, binary, rewritten) ? rewritten : bytes;
+  const auto* data = reinterpret_cast<const unsigned char*>(document.data());
+  bool ok = binary ? gltf.LoadBinaryFromMemory(&model, &error, &warning, data, unsigned(document.size()), "")
+                   : gltf.LoadASCIIFromString(&model, &error, &warning, document.data(), unsigned(document.size()), "");
   if (!access.error.empty()) throw LoadError(access.error);
   if (!ok) throw LoadError(path + ": " + (error.empty() ? "invalid glTF" : one_line(error)));
   if (!warning.empty()) scene.warnings.push_back(path + ": " + one_line(warning));
@@ -95,9 +105,14 @@ SceneDesc load_gltf(const std::string& path, const LoadOptions& given) {
   context.variant = selected_variant(context);
   for (const std::string& name : model.extensionsUsed)
     if (!is_supported(name)) context.warn("extension " + name + " is not supported and is ignored");
-  convert_images(context);
   convert_textures(context);
   convert_materials(context);
+  if (options.animation_time) {
+    int animation = find_animation(context, options.animation);
+    if (animation < 0) context.warn("--time: the file has no animations; its static state is shown");
+    else apply_animation(model, context, animation, *options.animation_time);
+  }
+  decode_draco_primitives(model, context);
   convert_meshes(context);
   convert_nodes(context);
   if (scene.degenerate_triangles_dropped > 0)

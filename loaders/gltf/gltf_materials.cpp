@@ -1,31 +1,66 @@
 #include "gltf/gltf_materials.h"
 
 #include <cmath>
+#include <filesystem>
+#include <map>
+
+#include "file_access.h"
+#include "texture_file.h"
 
 namespace radiant {
 
 // ---------------------------------------------------------------- images and textures
 
-void convert_images(GltfContext& context) {
-  for (size_t i = 0; i < context.model.images.size(); ++i) {
-    const tinygltf::Image& source = context.model.images[i];
-    ImageDesc image;
-    image.name = source.name.empty() ? (source.uri.rfind("data:", 0) == 0 ? element("images", i) : source.uri)
-                                     : source.name;
-    image.width = source.width;
-    image.height = source.height;
-    image.channels = source.component;
-    size_t texels = size_t(std::max(0, source.width)) * size_t(std::max(0, source.height)) *
-                    size_t(std::max(0, source.component));
-    size_t bytes_per_channel = source.bits == 16 ? 2 : 1;
-    if (texels == 0 || source.image.size() != texels * bytes_per_channel)
-      context.fail(element("images", i), "the image could not be decoded");
-    image.texels8.resize(texels);
-    // 16-bit PNGs keep their high byte: textures are 8-bit in radiant.
-    for (size_t t = 0; t < texels; ++t)
-      image.texels8[t] = bytes_per_channel == 2 ? source.image[t * 2 + 1] : source.image[t];
-    context.scene.images.push_back(std::move(image));
+// A glTF image as an ImageDesc: as stb_image decoded it, or, for a WebP file beside the glTF
+// (EXT_texture_webp), through OpenImageIO.
+static ImageDesc convert_image(const GltfContext& context, size_t i) {
+  const tinygltf::Image& source = context.model.images[i];
+  std::string where = element("images", i);
+  if (source.mimeType == "image/webp" && source.image.empty()) {
+    if (source.uri.empty() || source.uri.rfind("data:", 0) == 0)
+      context.fail(where, "a WebP image inside the file (bufferView or data URI) is not supported; a .webp file beside "
+                          "it is");
+    std::filesystem::path path = resolve_inside(std::filesystem::absolute(context.file).parent_path(), source.uri,
+                                                context.options.allow_external_files, context.file + ": " + where);
+    ImageDesc image = read_texture_file(path, context.file + ": " + where, source.uri, context.options);
+    image.name = source.name.empty() ? source.uri : source.name;
+    return image;
   }
+  if (source.mimeType == "image/ktx2" && source.image.empty())
+    context.fail(where, "KTX2 images (KHR_texture_basisu) are not supported");
+  ImageDesc image;
+  image.name = source.name.empty() ? (source.uri.rfind("data:", 0) == 0 ? where : source.uri) : source.name;
+  image.width = source.width;
+  image.height = source.height;
+  image.channels = source.component;
+  size_t texels = size_t(std::max(0, source.width)) * size_t(std::max(0, source.height)) *
+                  size_t(std::max(0, source.component));
+  size_t bytes_per_channel = source.bits == 16 ? 2 : 1;
+  if (texels == 0 || source.image.size() != texels * bytes_per_channel)
+    context.fail(where, "the image could not be decoded");
+  image.texels8.resize(texels);
+  // 16-bit PNGs keep their high byte: textures are 8-bit in radiant.
+  for (size_t t = 0; t < texels; ++t)
+    image.texels8[t] = bytes_per_channel == 2 ? source.image[t * 2 + 1] : source.image[t];
+  return image;
+}
+
+// The glTF image a texture shows: EXT_texture_webp's source, else the texture's own `source`,
+// which is the PNG/JPEG fallback of the image extensions radiant lacks (KHR_texture_basisu...).
+static int chosen_image(const GltfContext& context, const tinygltf::Texture& source, const std::string& where) {
+  const auto& images = context.model.images;
+  auto webp = source.extensions.find("EXT_texture_webp");
+  if (webp != source.extensions.end() && webp->second.IsObject() && webp->second.Has("source"))
+    return index_value(context, webp->second.Get("source"), images.size(),
+                       where + ".extensions.EXT_texture_webp.source", "image");
+  if (source.source >= 0) {
+    check_index(context, source.source, images.size(), where + ".source", "image");
+    return source.source;
+  }
+  for (const auto& [name, value] : source.extensions)
+    if (value.IsObject() && value.Has("source"))
+      context.fail(where, name + " images are not supported and the texture has no PNG or JPEG fallback source");
+  context.fail(where, "texture has no image source");
 }
 
 static TextureWrap wrap_mode(int mode) {
@@ -38,13 +73,15 @@ static TextureWrap wrap_mode(int mode) {
 
 void convert_textures(GltfContext& context) {
   const auto& model = context.model;
+  std::map<int, int> scene_image_of;  // glTF image -> SceneDesc image; only the images shown are kept
   for (size_t i = 0; i < model.textures.size(); ++i) {
     const tinygltf::Texture& source = model.textures[i];
     std::string where = element("textures", i);
     TextureDesc texture;
-    if (source.source < 0) context.fail(where, "texture has no image source");
-    check_index(context, source.source, model.images.size(), where + ".source", "image");
-    texture.image = source.source;
+    int image = chosen_image(context, source, where);
+    auto [found, inserted] = scene_image_of.try_emplace(image, int(context.scene.images.size()));
+    if (inserted) context.scene.images.push_back(convert_image(context, size_t(image)));
+    texture.image = found->second;
     if (source.sampler >= 0) {
       check_index(context, source.sampler, model.samplers.size(), where + ".sampler", "sampler");
       const tinygltf::Sampler& sampler = model.samplers[source.sampler];

@@ -5,9 +5,9 @@
 
 namespace radiant {
 
-// Appends every glTF image, texture and material, keeping glTF indices (offset by what the scene
-// already held; for glTF files that is zero).
-void convert_images(GltfContext& context);
+// Appends every glTF texture and material, keeping glTF indices (offset by what the scene
+// already held; for glTF files that is zero), and the images the textures show
+// (docs/gltf-obj.md, "Texture extensions").
 void convert_textures(GltfContext& context);
 void convert_materials(GltfContext& context);
 

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "gltf/gltf_accessors.h"
+#include "gltf/gltf_deform.h"
 #include "gltf/gltf_materials.h"
 #include "gltf/gltf_variants.h"
 #include "scene/mesh_ops.h"
@@ -100,9 +101,10 @@ void fill_shading_frames(GltfContext& context, MeshDesc& mesh, bool has_normals,
   }
 }
 
-// The primitive as a MeshDesc; false when it holds no triangles (skipped with a warning).
+// The primitive as a MeshDesc, deformed by `pose`; false when it holds no triangles (skipped
+// with a warning).
 bool convert_primitive(GltfContext& context, const tinygltf::Primitive& primitive, const std::string& where,
-                       MeshDesc& mesh) {
+                       const MeshPose& pose, MeshDesc& mesh) {
   if (primitive.mode >= TINYGLTF_MODE_POINTS && primitive.mode <= TINYGLTF_MODE_LINE_STRIP) {
     context.warn(where + ": points and lines are not rendered; primitive skipped");
     return false;
@@ -125,6 +127,9 @@ bool convert_primitive(GltfContext& context, const tinygltf::Primitive& primitiv
   mesh.texcoords1 = attribute<vec2, 2>(context, primitive, "TEXCOORD_1", T{TINYGLTF_TYPE_VEC2}, count, where);
   mesh.colors = attribute<vec4, 4>(context, primitive, "COLOR_0", T{TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4}, count,
                                    where);
+  // Deformed before anything is derived from the vertices (triangles dropped, flat shading, tangents).
+  apply_morph_targets(context, primitive, pose.weights, mesh, where);
+  if (!pose.joint_matrices.empty()) apply_skin(context, primitive, pose.joint_matrices, mesh, where);
   std::vector<uint32_t> order = vertex_order(context, primitive, count, where);
   // A strip or a fan lists each triangle's three corners again.
   context.charge(saturating_multiply(order.size(), primitive.mode == TINYGLTF_MODE_TRIANGLES ? 4 : 12), where);
@@ -142,20 +147,29 @@ bool convert_primitive(GltfContext& context, const tinygltf::Primitive& primitiv
 
 }  // namespace
 
+std::vector<int> convert_mesh(GltfContext& context, size_t m, const MeshPose& pose, const std::string& suffix) {
+  const tinygltf::Mesh& source = context.model.meshes[m];
+  std::vector<int> parts;
+  for (size_t p = 0; p < source.primitives.size(); ++p) {
+    MeshDesc mesh;
+    mesh.name = source.name.empty() ? element("meshes", m) : source.name;
+    if (source.primitives.size() > 1) mesh.name += std::string("/").append(std::to_string(p));
+    mesh.name += suffix;
+    std::string where = element("meshes", m) + "." + element("primitives", p);
+    if (!convert_primitive(context, source.primitives[p], where, pose, mesh)) continue;
+    parts.push_back(int(context.scene.meshes.size()));
+    context.scene.meshes.push_back(std::move(mesh));
+  }
+  return parts;
+}
+
 void convert_meshes(GltfContext& context) {
   const auto& model = context.model;
   context.mesh_parts.assign(model.meshes.size(), {});
   for (size_t m = 0; m < model.meshes.size(); ++m) {
-    const tinygltf::Mesh& source = model.meshes[m];
-    for (size_t p = 0; p < source.primitives.size(); ++p) {
-      MeshDesc mesh;
-      mesh.name = source.name.empty() ? element("meshes", m) : source.name;
-      if (source.primitives.size() > 1) mesh.name += std::string("/").append(std::to_string(p));
-      std::string where = element("meshes", m) + "." + element("primitives", p);
-      if (!convert_primitive(context, source.primitives[p], where, mesh)) continue;
-      context.mesh_parts[m].push_back(int(context.scene.meshes.size()));
-      context.scene.meshes.push_back(std::move(mesh));
-    }
+    MeshPose pose;
+    pose.weights = model.meshes[m].weights;
+    context.mesh_parts[m] = convert_mesh(context, m, pose, "");
   }
 }
 

@@ -1,7 +1,10 @@
 #include "gltf/gltf_nodes.h"
 
 #include <cmath>
+#include <map>
+#include <set>
 
+#include "gltf/gltf_accessors.h"
 #include "gltf/gltf_lights_cameras.h"
 #include "gltf/gltf_meshes.h"
 
@@ -33,23 +36,43 @@ mat4 local_transform(const GltfContext& context, const tinygltf::Node& node, con
 
 namespace {
 
+// What the walk has learned for the skins: the joints' world transforms, and the skinned nodes,
+// placed once every joint's transform is known.
+struct PlacedNodes {
+  std::set<int> joints;             // every node a skin names
+  std::map<int, mat4> joint_world;  // those the walk has placed
+  std::vector<std::pair<int, std::string>> skinned;  // node, its JSON path
+};
+
+void add_instances(GltfContext& context, const std::vector<int>& parts, const mat4& world, const std::string& name) {
+  bool mirrors = determinant3(world) < 0;
+  for (int part : parts) {
+    InstanceDesc instance;
+    instance.mesh = mirrors ? mirrored_mesh(context, part) : part;
+    instance.transform = world;
+    instance.name = name;
+    context.scene.instances.push_back(instance);
+  }
+}
+
 // What one node contributes, once its world transform is known.
-void place_node(GltfContext& context, const tinygltf::Node& node, const mat4& world, const std::string& where) {
+void place_node(GltfContext& context, PlacedNodes& placed, int index, const mat4& world, const std::string& where) {
+  const tinygltf::Node& node = context.model.nodes[size_t(index)];
+  if (placed.joints.count(index)) placed.joint_world[index] = world;
   if (node.mesh >= 0) {
     check_index(context, node.mesh, context.model.meshes.size(), where + ".mesh", "mesh");
     mat4 inverse;
-    if (!inverse_affine(world, inverse)) {
+    if (node.skin >= 0) {
+      placed.skinned.push_back({index, where});  // its joints may come later in the walk
+    } else if (!inverse_affine(world, inverse)) {
       // glTF allows a zero scale (it hides a node); a flattened mesh has no area to render.
       context.warn(where + ": singular transform (a zero scale): the mesh is not rendered");
+    } else if (!node.weights.empty() && node.weights != context.model.meshes[size_t(node.mesh)].weights) {
+      MeshPose pose;
+      pose.weights = node.weights;
+      add_instances(context, convert_mesh(context, size_t(node.mesh), pose, " (" + where + " weights)"), world, node.name);
     } else {
-      bool mirrors = determinant3(world) < 0;
-      for (int part : context.mesh_parts[node.mesh]) {
-        InstanceDesc instance;
-        instance.mesh = mirrors ? mirrored_mesh(context, part) : part;
-        instance.transform = world;
-        instance.name = node.name;
-        context.scene.instances.push_back(instance);
-      }
+      add_instances(context, context.mesh_parts[node.mesh], world, node.name);
     }
   }
   if (node.camera >= 0) add_camera(context, node.camera, world, node.name, where + ".camera");
@@ -58,6 +81,51 @@ void place_node(GltfContext& context, const tinygltf::Node& node, const mat4& wo
     std::string light_where = where + ".extensions.KHR_lights_punctual.light";
     add_light(context, index_value(context, light->second.Get("light"), context.model.lights.size(), light_where, "light"),
               world, light_where);
+  }
+}
+
+// Each joint's world transform times its inverse bind matrix (identity when the skin has none).
+std::vector<mat4> joint_matrices(const GltfContext& context, const PlacedNodes& placed, int skin_index,
+                                 const std::string& where) {
+  check_index(context, skin_index, context.model.skins.size(), where, "skin");
+  const tinygltf::Skin& skin = context.model.skins[size_t(skin_index)];
+  std::string skin_where = element("skins", size_t(skin_index));
+  std::vector<float> inverse_binds;
+  if (skin.inverseBindMatrices >= 0) {
+    int components = 0;
+    inverse_binds = read_accessor_floats(context, skin.inverseBindMatrices, skin_where + ".inverseBindMatrices",
+                                         {TINYGLTF_TYPE_MAT4}, components);
+    if (inverse_binds.size() / 16 < skin.joints.size())
+      context.fail(skin_where + ".inverseBindMatrices", std::to_string(inverse_binds.size() / 16) + " matrices for " +
+                                                            std::to_string(skin.joints.size()) + " joints");
+  }
+  std::vector<mat4> matrices;
+  for (size_t j = 0; j < skin.joints.size(); ++j) {
+    std::string joint_where = skin_where + "." + element("joints", j);
+    int joint = skin.joints[j];
+    check_index(context, joint, context.model.nodes.size(), joint_where, "node");
+    auto joint_world = placed.joint_world.find(joint);
+    if (joint_world == placed.joint_world.end())
+      context.fail(joint_where, "node " + std::to_string(joint) + " is not in the rendered scene");
+    mat4 inverse_bind;
+    if (!inverse_binds.empty())
+      for (int row = 0; row < 4; ++row)
+        for (int column = 0; column < 4; ++column) inverse_bind.m[row][column] = inverse_binds[j * 16 + column * 4 + row];
+    if (!is_finite(inverse_bind)) context.fail(skin_where + ".inverseBindMatrices", "non-finite value");
+    matrices.push_back(joint_world->second * inverse_bind);
+  }
+  return matrices;
+}
+
+// Skinned meshes are posed in world space from their joints (glTF ignores the node's own
+// transform for them), placed by an identity instance.
+void place_skinned_nodes(GltfContext& context, const PlacedNodes& placed) {
+  for (const auto& [index, where] : placed.skinned) {
+    const tinygltf::Node& node = context.model.nodes[size_t(index)];
+    MeshPose pose;
+    pose.weights = node.weights.empty() ? context.model.meshes[size_t(node.mesh)].weights : node.weights;
+    pose.joint_matrices = joint_matrices(context, placed, node.skin, where + ".skin");
+    add_instances(context, convert_mesh(context, size_t(node.mesh), pose, " (" + where + " skinned)"), mat4{}, node.name);
   }
 }
 
@@ -70,7 +138,8 @@ struct Frame {
 };
 
 // Depth first with an explicit stack: deep hierarchies cannot overflow, cycles are reported.
-void walk(GltfContext& context, int root, std::vector<Visit>& visits, const std::string& root_where) {
+void walk(GltfContext& context, PlacedNodes& placed, int root, std::vector<Visit>& visits,
+          const std::string& root_where) {
   const auto& nodes = context.model.nodes;
   auto enter = [&](std::vector<Frame>& stack, int node, const mat4& parent, const std::string& where) {
     check_index(context, node, nodes.size(), where, "node");
@@ -82,7 +151,7 @@ void walk(GltfContext& context, int root, std::vector<Visit>& visits, const std:
     std::string node_where = element("nodes", size_t(node));
     mat4 world = parent * local_transform(context, nodes[node], node_where);
     if (!is_finite(world)) context.fail(node_where, "non-finite world transform");
-    place_node(context, nodes[node], world, node_where);
+    place_node(context, placed, node, world, node_where);
     stack.push_back({node, world});
   };
   std::vector<Frame> stack;
@@ -115,9 +184,16 @@ void convert_nodes(GltfContext& context) {
     throw LoadError(context.file + ": scene " + std::to_string(scene) + " out of range (" +
                     std::to_string(model.scenes.size()) + " scenes)");
   std::vector<Visit> visits(model.nodes.size(), Visit::not_yet);
+  PlacedNodes placed;
+  for (size_t i = 0; i < model.skins.size(); ++i) {
+    // Two tree nodes and a matrix a joint (the JSON charge covers the skin's own arrays).
+    context.charge(model.skins[i].joints.size() * (2 * 48 + sizeof(mat4)), element("skins", i) + ".joints");
+    placed.joints.insert(model.skins[i].joints.begin(), model.skins[i].joints.end());
+  }
   const std::vector<int>& roots = model.scenes[scene].nodes;
   for (size_t i = 0; i < roots.size(); ++i)
-    walk(context, roots[i], visits, element("scenes", size_t(scene)) + "." + element("nodes", i));
+    walk(context, placed, roots[i], visits, element("scenes", size_t(scene)) + "." + element("nodes", i));
+  place_skinned_nodes(context, placed);
 }
 
 }  // namespace radiant

@@ -8,8 +8,11 @@
 
 #include "file_access.h"
 #include "obj/obj_materials.h"
-#include "obj/obj_numbers.h"
 #include "obj/obj_memory.h"
+#include "obj/obj_numbers.h"
+#include "obj/obj_paths.h"
+#include "memory/input_file.h"
+#include "scene/polygon_triangulation.h"
 #include "scene/mesh_ops.h"
 #include "scene/scene_memory.h"
 
@@ -17,20 +20,32 @@ namespace radiant {
 
 namespace {
 
-// `mtllib` files resolve inside the OBJ's folder like every other file.
+// `mtllib` files resolve inside the OBJ's folder like every other file. A missing one is a
+// warning (its materials fall back to the default one, as Blender's and assimp's importers do);
+// any other refusal stays an error.
 struct MtlReader : tinyobj::MaterialReader {
   std::filesystem::path base_dir;
   const std::string& file;
   const LoadOptions& options;
+  std::map<std::string, std::string> written_names;  // tinyobjloader's name -> as written
+  std::vector<std::string>& warnings;
   std::string refusal;
-  MtlReader(std::filesystem::path base, const std::string& f, const LoadOptions& o)
-      : base_dir(std::move(base)), file(f), options(o) {}
-  bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
+  MtlReader(std::filesystem::path base, const std::string& f, const LoadOptions& o,
+            std::map<std::string, std::string> names, std::vector<std::string>& w)
+      : base_dir(std::move(base)), file(f), options(o), written_names(std::move(names)), warnings(w) {}
+  bool operator()(const std::string& asked, std::vector<tinyobj::material_t>* materials,
                   std::map<std::string, int>* names, std::string* warn, std::string* err) override {
+    auto written = written_names.find(asked);
+    std::string name = portable_path(written == written_names.end() ? asked : written->second);
     try {
       auto path = resolve_inside(base_dir, name, options.allow_external_files, file + ": mtllib");
-      std::string label = file + ": mtllib '" + name + "'";
-      uint64_t size = check_input_file(path, label, options);
+      std::string label = file + ": mtllib '" + escaped(name) + "'";
+      uint64_t size = 0;
+      if (input_file_problem(path, size) == no_such_file) {
+        warnings.push_back(label + ": " + no_such_file + "; its materials are replaced by the default material");
+        return false;
+      }
+      size = check_input_file(path, label, options);
       std::ifstream in(path);
       if (!in) throw LoadError(label + ": cannot open");
       check_mtl_numbers(in, (std::filesystem::path(file).parent_path() / name).string());
@@ -56,21 +71,38 @@ struct ObjData {
   std::vector<tinyobj::material_t> materials;
 };
 
+// tinyobjloader reads bytes: UTF-16 text would parse as nothing at all.
+void check_not_utf16(std::istream& in, const std::string& path) {
+  std::string start(2, '\0');
+  in.read(start.data(), 2);
+  start.resize(size_t(in.gcount()));
+  std::string encoding = utf16_byte_order(start);
+  if (!encoding.empty())
+    throw LoadError(path + ": the file is " + encoding + " text; radiant reads OBJ files as ASCII or UTF-8 "
+                    "(convert it, e.g. iconv -f UTF-16 -t UTF-8)");
+}
+
 ObjData parse_obj(const std::string& path, const LoadOptions& options, std::vector<std::string>& warnings) {
   check_input_file(path, path, options);
-  std::ifstream in(path);
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw LoadError(path + ": cannot open");
+  check_not_utf16(in, path);
+  auto rewind = [&] {
+    in.clear();
+    in.seekg(0);
+  };
+  rewind();
   check_obj_numbers(in, path);
-  in.clear();
-  in.seekg(0);
+  rewind();
   // What tinyobjloader builds (about 170 bytes for an eight-byte face line) is charged from the
   // counted lines before it parses any.
   ObjLineCounts counts = count_obj_lines(in);
   charge_load(options, obj_parse_bytes(counts), path + ": " + describe_obj_lines(counts));
-  in.clear();
-  in.seekg(0);
+  rewind();
+  std::map<std::string, std::string> libraries = mtllib_names(in);
+  rewind();
   ObjData data;
-  MtlReader reader(std::filesystem::absolute(path).parent_path(), path, options);
+  MtlReader reader(std::filesystem::absolute(path).parent_path(), path, options, std::move(libraries), warnings);
   std::string warning, error;
   bool ok = tinyobj::LoadObj(&data.attrib, &data.shapes, &data.materials, &warning, &error, &in, &reader, false, false);
   if (!reader.refusal.empty()) throw LoadError(reader.refusal);
@@ -154,16 +186,26 @@ uint32_t add_corner(MeshBuilder& builder, const tinyobj::attrib_t& a, const tiny
   builder.all_normals = builder.all_normals && i.normal_index >= 0;
   mesh.normals.push_back(i.normal_index >= 0 ? vec3{n[i.normal_index * 3], n[i.normal_index * 3 + 1], n[i.normal_index * 3 + 2]}
                                              : vec3{0, 0, 0});
+  // `v x y z r g b`: tinyobjloader keeps the colors only when every vertex has them.
+  const auto& c = a.colors;
+  if (c.size() == v.size())
+    mesh.colors.push_back({c[i.vertex_index * 3], c[i.vertex_index * 3 + 1], c[i.vertex_index * 3 + 2], 1});
   return it->second;
 }
 
-// Charges the indices build_meshes is about to make from the parsed faces.
+// Charges the indices build_meshes is about to make from the parsed faces, and the work space of
+// triangulating the largest polygon.
 void charge_mesh_indices(const std::string& path, const ObjData& data, const LoadOptions& options) {
-  uint64_t triangles = 0;
+  uint64_t triangles = 0, largest = 0;
   for (const tinyobj::shape_t& shape : data.shapes)
-    for (unsigned count : shape.mesh.num_face_vertices) triangles += count > 2 ? count - 2 : 0;
+    for (unsigned count : shape.mesh.num_face_vertices) {
+      triangles += count > 2 ? count - 2 : 0;
+      largest = std::max<uint64_t>(largest, count);
+    }
   charge_load(options, saturating_multiply(triangles, obj_built_triangle_bytes),
               path + ": " + std::to_string(triangles) + " triangles");
+  charge_load(options, saturating_multiply(largest, polygon_triangulation_bytes_per_corner),
+              path + ": triangulating a polygon of " + std::to_string(largest) + " corners");
 }
 
 // How many corners repeat a vertex is known only while building: a mesh's vertices are charged
@@ -176,11 +218,24 @@ void charge_vertices(MeshBuilder& builder, size_t more, const std::string& path,
   builder.vertices_charged += chunk;
 }
 
-// Polygons become fans around their first corner (convex polygons, as OBJ exporters write them).
-std::map<int, MeshBuilder> build_meshes(const std::string& path, const ObjData& data, const LoadOptions& options) {
-  std::map<int, MeshBuilder> builders;  // by MTL material index (-1 = none)
-  std::vector<FaceLine> lines;          // read only when an error needs a location
+// The meshes by MTL material index (-1 = none), and the polygons that cross themselves.
+struct BuiltMeshes {
+  std::map<int, MeshBuilder> builders;
+  size_t crossing_polygons = 0;
+  std::string first_crossing;  // file:line:col of the first
+};
+
+// Polygons are triangulated by ear clipping (concave ones too; triangles stay triangles).
+BuiltMeshes build_meshes(const std::string& path, const ObjData& data, const LoadOptions& options) {
+  BuiltMeshes built;
+  std::vector<FaceLine> lines;  // read only when a message needs a location
+  auto location = [&](size_t face, size_t corner) {
+    if (lines.empty()) lines = face_lines(path);
+    return corner_location(path, lines, face, corner);
+  };
   size_t face_in_file = 0;
+  std::vector<uint32_t> corners;
+  std::vector<vec3> corner_positions;
   for (const tinyobj::shape_t& shape : data.shapes) {
     const auto& faces = shape.mesh;
     size_t first = 0;
@@ -188,25 +243,29 @@ std::map<int, MeshBuilder> build_meshes(const std::string& path, const ObjData& 
       size_t count = faces.num_face_vertices[f];
       int material = f < faces.material_ids.size() ? faces.material_ids[f] : -1;
       if (material >= int(data.materials.size())) material = -1;
-      MeshBuilder& builder = builders[material];
+      MeshBuilder& builder = built.builders[material];
       if (f < faces.smoothing_group_ids.size() && faces.smoothing_group_ids[f] != 0) builder.smoothed = true;
       for (size_t k = 0; k < count; ++k) {
         try {
           check_corner(path, data.attrib, faces.indices[first + k]);
         } catch (const LoadError&) {
-          if (lines.empty()) lines = face_lines(path);
-          check_corner(corner_location(path, lines, face_in_file, k), data.attrib, faces.indices[first + k]);
+          check_corner(location(face_in_file, k), data.attrib, faces.indices[first + k]);
         }
       }
       charge_vertices(builder, count, path, options);
-      std::vector<uint32_t> corners(count);
-      for (size_t k = 0; k < count; ++k) corners[k] = add_corner(builder, data.attrib, faces.indices[first + k]);
-      for (size_t k = 1; k + 1 < count; ++k)
-        builder.mesh.indices.insert(builder.mesh.indices.end(), {corners[0], corners[k], corners[k + 1]});
+      corners.resize(count);
+      corner_positions.resize(count);
+      for (size_t k = 0; k < count; ++k) {
+        corners[k] = add_corner(builder, data.attrib, faces.indices[first + k]);
+        corner_positions[k] = builder.mesh.positions[corners[k]];
+      }
+      PolygonTriangles triangles = triangulate_polygon(corner_positions);
+      for (uint32_t corner : triangles.corners) builder.mesh.indices.push_back(corners[corner]);
+      if (!triangles.simple && built.crossing_polygons++ == 0) built.first_crossing = location(face_in_file, 0);
       first += count;
     }
   }
-  return builders;
+  return built;
 }
 
 bool has_texcoords(const ObjData& data) { return !data.attrib.texcoords.empty(); }
@@ -228,7 +287,11 @@ void append_obj(SceneDesc& scene, const std::string& path, const mat4& transform
   }
   size_t dropped = 0;
   charge_mesh_indices(path, data, options);
-  for (auto& [material, builder] : build_meshes(path, data, options)) {
+  BuiltMeshes built = build_meshes(path, data, options);
+  if (built.crossing_polygons > 0)
+    scene.warnings.push_back(built.first_crossing + ": " + std::to_string(built.crossing_polygons) +
+                             " polygons cross themselves (this one first); their triangles may overlap");
+  for (auto& [material, builder] : built.builders) {
     MeshDesc& mesh = builder.mesh;
     if (material >= 0) {
       mesh.material = materials[material];

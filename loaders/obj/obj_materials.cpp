@@ -1,36 +1,28 @@
 #include "obj/obj_materials.h"
 
 #include "file_access.h"
-#include "image/image_io.h"
+#include "memory/input_file.h"
+#include "obj/obj_paths.h"
+#include "texture_file.h"
 
 namespace radiant {
 
-int load_obj_texture(ObjTextureLoader& textures, const std::string& name, const tinyobj::texture_option_t& option,
+int load_obj_texture(ObjTextureLoader& textures, const std::string& written_name, const tinyobj::texture_option_t& option,
                      const std::string& where) {
+  std::string name = portable_path(written_name);
   std::filesystem::path path =
       resolve_inside(textures.base_dir, name, textures.options.allow_external_files, where);
   std::string key = path.string() + (option.clamp ? "#clamp" : "");
   auto found = textures.textures_by_path.find(key);
   if (found != textures.textures_by_path.end()) return found->second;
-  check_input_file(path, where + " '" + name + "'", textures.options);
-  std::string error;
-  auto input = open_image_file(path.string(), error);
-  if (!input) throw LoadError(where + ": cannot read image '" + name + "'");
-  const ImageHeader& spec = input->header();
-  int channels = std::min(spec.channels, 4);
-  std::string image_label = where + ": image '" + name + "' (" + std::to_string(spec.width) + "x" +
-                            std::to_string(spec.height) + ")";
-  uint64_t texels = uint64_t(std::max(spec.width, 0)) * uint64_t(std::max(spec.height, 0));
-  if (texels == 0 || channels <= 0) throw LoadError(image_label + ": the image is empty");
-  // OpenImageIO may hold the whole file's pixels (up to four bytes a channel) while it converts.
-  charge_load(textures.options, saturating_multiply(texels, uint64_t(std::max(spec.channels, 0)) * 4 + channels),
-              image_label);
-  ImageDesc image;
-  image.name = path.string();
-  image.width = spec.width, image.height = spec.height, image.channels = channels;
-  image.texels8.resize(texels * channels);
-  if (!input->read(channels, PixelType::uint8, image.texels8.data()))
-    throw LoadError(where + ": cannot decode image '" + name + "': " + input->error());
+  std::string label = where + " '" + escaped(name) + "'";
+  uint64_t size = 0;
+  if (input_file_problem(path, size) == no_such_file) {
+    textures.scene.warnings.push_back(label + ": " + no_such_file + "; the material is rendered without it");
+    textures.textures_by_path[key] = -1;
+    return -1;
+  }
+  ImageDesc image = read_texture_file(path, where, name, textures.options);
   TextureDesc texture;
   texture.image = int(textures.scene.images.size());
   if (option.clamp) texture.wrap_s = texture.wrap_t = TextureWrap::clamp_to_edge;
@@ -77,9 +69,9 @@ MaterialDesc convert_mtl_material(ObjTextureLoader& textures, const tinyobj::mat
   material.emission_texture = texture(source.emissive_texname, source.emissive_texopt, "map_Ke");
   material.alpha_texture = texture(source.alpha_texname, source.alpha_texopt, "map_d");
   if (material.alpha_texture.valid()) material.alpha_mode = AlphaMode::mask;
-  material.normal_texture = !source.normal_texname.empty()
-                                ? texture(source.normal_texname, source.normal_texopt, "norm")
-                                : texture(source.bump_texname, source.bump_texopt, "map_bump");
+  material.normal_texture = texture(source.normal_texname, source.normal_texopt, "norm");
+  material.bump_texture = texture(source.bump_texname, source.bump_texopt, "bump");
+  material.bump_scale = float(source.bump_texopt.bump_multiplier);
   return material;
 }
 

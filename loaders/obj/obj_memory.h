@@ -33,9 +33,9 @@ uint64_t count_mtl_materials(std::istream& in);
 uint64_t mtl_parse_bytes(uint64_t materials, uint64_t file_bytes);
 
 // Bytes of radiant's meshes built from the parsed faces, before shading frames: each distinct
-// vertex (its entry in the vertex map, its position, texcoord and normal) and the three indices
-// of each triangle of the fans, twice for the growth of the vectors holding them.
-constexpr uint64_t obj_built_vertex_bytes = 48 + 2 * (12 + 8 + 12);
+// vertex (its entry in the vertex map, its position, texcoord, normal and color) and the three
+// indices of each triangle, twice for the growth of the vectors holding them.
+constexpr uint64_t obj_built_vertex_bytes = 48 + 2 * (12 + 8 + 12 + 16);
 constexpr uint64_t obj_built_triangle_bytes = 2 * 3 * sizeof(uint32_t);
 
 }  // namespace radiant

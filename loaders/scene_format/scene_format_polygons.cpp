@@ -1,15 +1,15 @@
 #include "scene_format/scene_format_polygons.h"
 
 #include <cmath>
-#include <numbers>
 #include <sstream>
 
 #include "scene_format/scene_format_materials.h"
 #include "scene_format/scene_format_shapes.h"
+#include "scene/polygon_triangulation.h"
 
 namespace radiant::scene_format {
 
-// ---------------------------------------------------------------- planarity and convexity
+// ---------------------------------------------------------------- planarity
 
 // Double precision: the checks compare small differences of coordinates that may be large.
 struct Point {
@@ -21,9 +21,7 @@ static Point cross(Point a, Point b) { return {a.y * b.z - a.z * b.y, a.z * b.x 
 static double length(Point a) { return std::sqrt(dot(a, a)); }
 
 // Relative tolerances, as fractions of the polygon's size (largest distance from its centroid).
-constexpr double coincident_tolerance = 1e-6;
 constexpr double planar_tolerance = 1e-4;
-constexpr double turn_tolerance = 1e-6;  // sine of the smallest backward turn that counts
 
 static std::string number_text(double value) {
   std::ostringstream text;
@@ -44,22 +42,6 @@ static Point newell_normal(const std::vector<Point>& points) {
   return normal;
 }
 
-// Turns at each vertex, seen along the unit normal: none backwards, one full turn in total.
-static std::string convexity_defect(const std::vector<Point>& points, Point normal) {
-  size_t n = points.size();
-  double turning = 0;
-  for (size_t i = 0; i < n; ++i) {
-    Point incoming = points[i] - points[(i + n - 1) % n], outgoing = points[(i + 1) % n] - points[i];
-    double lengths = length(incoming) * length(outgoing);
-    double sine = dot(cross(incoming, outgoing), normal) / lengths, cosine = dot(incoming, outgoing) / lengths;
-    if (sine < -turn_tolerance) return "is not convex (it turns the other way at " + vertex_text(i) + ")";
-    if (sine <= turn_tolerance && cosine < 0) return "is not convex (it folds back on itself at " + vertex_text(i) + ")";
-    turning += std::atan2(sine, cosine);
-  }
-  if (turning > 3 * std::numbers::pi) return "is not convex (its edges wind around more than once)";
-  return "";
-}
-
 std::string polygon_defect(const std::vector<vec3>& vertices) {
   size_t n = vertices.size();
   Point centroid = {0, 0, 0};
@@ -71,9 +53,6 @@ std::string polygon_defect(const std::vector<vec3>& vertices) {
     size = std::max(size, length(points.back()));
   }
   if (size == 0) return "has all its vertices at one point";
-  for (size_t i = 0; i < n; ++i)
-    if (length(points[(i + 1) % n] - points[i]) <= coincident_tolerance * size)
-      return "repeats a vertex (" + vertex_text(i) + " and " + vertex_text((i + 1) % n) + " coincide)";
   Point normal = newell_normal(points);
   double normal_length = length(normal);
   if (normal_length <= 1e-10 * size * size) return "has zero area (its vertices are collinear)";
@@ -83,7 +62,7 @@ std::string polygon_defect(const std::vector<vec3>& vertices) {
     if (distance > planar_tolerance * size)
       return "is not planar (" + vertex_text(i) + " is " + number_text(distance) + " away from the mean plane)";
   }
-  return convexity_defect(points, normal);
+  return "";
 }
 
 // ---------------------------------------------------------------- blocks
@@ -99,8 +78,9 @@ static std::vector<vec3> read_vertices(const BuildContext& context, const Attrib
   return vertices;
 }
 
-// Appends a fan from the first vertex to the mesh that holds the faces of `material`.
-static void add_fan(BuildContext& context, int material, const std::vector<vec3>& vertices) {
+// Appends the triangles of the polygon to the mesh that holds the faces of `material`.
+static void add_triangles(BuildContext& context, int material, const std::vector<vec3>& vertices,
+                          const std::vector<uint32_t>& corners) {
   SceneDesc& scene = context.scene;
   auto [found, inserted] = context.polygon_mesh_by_material.emplace(material, int(scene.meshes.size()));
   if (inserted) {
@@ -113,7 +93,7 @@ static void add_fan(BuildContext& context, int material, const std::vector<vec3>
   MeshDesc& mesh = scene.meshes[size_t(found->second)];
   uint32_t first = uint32_t(mesh.positions.size());
   mesh.positions.insert(mesh.positions.end(), vertices.begin(), vertices.end());
-  for (uint32_t i = 1; i + 1 < vertices.size(); ++i) mesh.indices.insert(mesh.indices.end(), {first, first + i, first + i + 1});
+  for (uint32_t corner : corners) mesh.indices.push_back(first + corner);
 }
 
 static void build_face_block(BuildContext& context, const Block& block, bool is_triangle) {
@@ -125,7 +105,9 @@ static void build_face_block(BuildContext& context, const Block& block, bool is_
     fail(context, attribute.name, "'vertices' of @triangle expects 9 numbers, got " + std::to_string(vertices.size() * 3));
   std::string defect = polygon_defect(vertices);
   if (!defect.empty()) fail(context, attribute.name, (is_triangle ? "triangle " : "polygon ") + defect);
-  add_fan(context, surface_material(context, attributes), vertices);
+  PolygonTriangles triangles = triangulate_polygon(vertices);
+  if (!triangles.simple) fail(context, attribute.name, "polygon crosses itself (its edges cross or it winds around twice)");
+  add_triangles(context, surface_material(context, attributes), vertices, triangles.corners);
 }
 
 void build_triangle_block(BuildContext& context, const Block& block) { build_face_block(context, block, true); }

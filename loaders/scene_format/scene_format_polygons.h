@@ -1,5 +1,5 @@
-// Flat faces of the .scene format: @triangle and @polygon, fan-triangulated into one mesh per
-// material with an identity instance.
+// Flat faces of the .scene format: @triangle and @polygon, triangulated (ear clipping, concave
+// polygons too) into one mesh per material with an identity instance.
 #pragma once
 
 #include <string>
@@ -9,8 +9,8 @@
 
 namespace radiant::scene_format {
 
-// Why `vertices` (in order, at least 3) is not a planar convex polygon that a fan from its first
-// vertex triangulates; empty when it is. Tolerances scale with the polygon's size.
+// Why `vertices` (in order, at least 3) is not a planar polygon with an area; empty when it is.
+// Tolerances scale with the polygon's size. (Whether it crosses itself is the triangulation's.)
 std::string polygon_defect(const std::vector<vec3>& vertices);
 
 // `@triangle` with `vertices` (9 numbers).

@@ -73,6 +73,7 @@ struct SurfaceHit {
   vec3 geometric_normal;  // unit; the authored front side
   vec3 shading_normal;    // unit; interpolated (and later normal-mapped) on the same side
   vec4 tangent = {0, 0, 0, 0};  // xyz world tangent, w handedness; zero when absent
+  vec3 dpdu, dpdv;  // world position per unit of texcoords0 u and v; only for bump-mapped materials
   SurfaceAttributes attributes;
   int material = -1;
   bool front_face = true;  // the ray arrived on the geometric normal's side

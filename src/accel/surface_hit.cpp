@@ -25,6 +25,16 @@ vec3 abs_transform_vector(const mat4& m, vec3 v) {
   return transform_vector(a, v);
 }
 
+// dP/du and dP/dv of the triangle (object space) from its edges and their texcoord differences.
+void triangle_uv_derivatives(const MeshDesc& mesh, const uint32_t* tri, vec3 e1, vec3 e2, SurfaceHit& hit) {
+  vec2 uv0 = mesh.texcoords0[tri[0]], d1 = mesh.texcoords0[tri[1]] - uv0, d2 = mesh.texcoords0[tri[2]] - uv0;
+  float determinant = d1.x * d2.y - d1.y * d2.x;
+  if (!(std::abs(determinant) > 1e-20f)) return;  // no uv area: no slope to follow
+  float inverse = 1 / determinant;
+  hit.dpdu = (e1 * d2.y - e2 * d1.y) * inverse;
+  hit.dpdv = (e2 * d1.x - e1 * d2.x) * inverse;
+}
+
 void fill_triangle_hit(const SceneAccel& accel, const HitId& id, SurfaceHit& hit) {
   const SceneDesc& scene = *accel.scene;
   const InstanceDesc& instance = scene.instances[id.instance];
@@ -87,6 +97,12 @@ void fill_triangle_hit(const SceneAccel& accel, const HitId& id, SurfaceHit& hit
   if (!mesh.texcoords1.empty()) hit.attributes.uv[1] = interpolate(mesh.texcoords1, tri, b0, b1, b2);
   if (!mesh.colors.empty()) hit.attributes.vertex_color = interpolate4(mesh.colors, tri, b0, b1, b2);
   hit.material = mesh.material;
+  if (scene.materials[size_t(mesh.material)].bump_texture.valid()) {
+    // Zero (no bump) without texcoords or where they have no area; never a previous hit's.
+    hit.dpdu = hit.dpdv = {0, 0, 0};
+    if (!mesh.texcoords0.empty()) triangle_uv_derivatives(mesh, tri, e1, e2, hit);
+    if (!identity) hit.dpdu = transform_vector(to_world, hit.dpdu), hit.dpdv = transform_vector(to_world, hit.dpdv);
+  }
 }
 
 void fill_shape_hit(const SceneAccel& accel, const Ray& ray, const HitId& id, SurfaceHit& hit) {

@@ -30,6 +30,7 @@ HitShading make_hit_shading(uint32_t effects, const SurfaceHit& hit, const Surfa
   if (enabled<E>(effects, effect_normal_maps)) {
     if (m.has_normal_map && (hit.tangent.x != 0 || hit.tangent.y != 0 || hit.tangent.z != 0))
       n = apply_normal_map(n, hit.tangent, m.normal_map_sample);
+    if (m.has_bump_map) n = apply_bump_map(n, hit.dpdu, hit.dpdv, m.height_slope);
   }
   f.authored_normal = n;
   f.entering = hit.front_face;

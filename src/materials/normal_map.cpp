@@ -1,4 +1,4 @@
-// Tangent-space normal mapping.
+// Tangent-space normal mapping, and bump mapping from a height map.
 #include "materials/surface.h"
 
 namespace radiant {
@@ -18,6 +18,14 @@ vec3 apply_normal_map(vec3 n, vec4 tangent, vec3 tangent_space_normal) {
   vec3 local = tangent_space_normal;
   vec3 mapped = normalize(t * local.x + b * local.y + n * local.z);
   return is_finite(mapped) && length_squared(mapped) > 0.5f ? mapped : n;
+}
+
+vec3 apply_bump_map(vec3 n, vec3 dpdu, vec3 dpdv, vec2 height_slope) {
+  vec3 bumped = cross(dpdu + n * height_slope.x, dpdv + n * height_slope.y);
+  // The uv frame may be mirrored: the perturbed normal stays on the side of n.
+  if (dot(cross(dpdu, dpdv), n) < 0) bumped = -bumped;
+  bumped = normalize(bumped);
+  return is_finite(bumped) && length_squared(bumped) > 0.5f ? bumped : n;
 }
 
 }  // namespace radiant

@@ -34,6 +34,10 @@ void resolve_shared(const SceneDesc& scene, const MaterialDesc& material, const 
     m.normal_map_sample = is_finite(unit) && length_squared(unit) > 0.5f ? unit : vec3{0, 0, 1};
     m.has_normal_map = true;
   }
+  if (material.bump_texture.valid()) {
+    m.height_slope = sample_texture_slope(scene, material.bump_texture, attributes) * material.bump_scale;
+    m.has_bump_map = true;
+  }
   m.opacity = opacity_from_alpha(material, alpha);
   m.unlit = material.unlit;
 }

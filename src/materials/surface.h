@@ -38,6 +38,9 @@ struct SurfaceMaterial {
   bool unlit = false;
   vec3 normal_map_sample = {0, 0, 1};  // tangent-space normal (scaled), when the material has one
   bool has_normal_map = false;
+  // Height map: the displacement's change per unit of u and of v (world units), when it has one.
+  vec2 height_slope = {0, 0};
+  bool has_bump_map = false;
 };
 
 // Texel fetch with wrap, filter and KHR_texture_transform; `srgb` decodes color textures.
@@ -55,6 +58,15 @@ void phong_from_metallic_roughness(SurfaceMaterial& m);
 
 // Perturbs shading normal `n` by a tangent-space normal-map sample, given the tangent (xyz, w sign).
 vec3 apply_normal_map(vec3 n, vec4 tangent, vec3 tangent_space_normal);
+
+// The slope (dh/du, dh/dv) of texture `ref`'s first channel at the hit, by central differences
+// half a texel apart in u and in v.
+vec2 sample_texture_slope(const SceneDesc& scene, const TextureRef& ref, const SurfaceAttributes& attributes);
+
+// Shading normal `n` of a surface with position derivatives dpdu, dpdv (world units per unit of
+// u and v) displaced along n by a height whose slope is `height_slope` (pbrt's bump mapping,
+// without the term of the normal's own change).
+vec3 apply_bump_map(vec3 n, vec3 dpdu, vec3 dpdv, vec2 height_slope);
 
 // A direction chosen by the path tracer's BSDF (materials/bsdf.h).
 struct BsdfSample {

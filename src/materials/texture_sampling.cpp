@@ -122,4 +122,18 @@ vec4 sample_texture(const SceneDesc& scene, const TextureRef& ref, const Surface
   return mix(top, bottom, ty);
 }
 
+vec2 sample_texture_slope(const SceneDesc& scene, const TextureRef& ref, const SurfaceAttributes& attributes) {
+  const ImageDesc* image = texture_image(scene, ref);
+  if (!image || ref.texcoord < 0 || ref.texcoord > 1) return {0, 0};
+  vec2 step = {0.5f / float(image->width), 0.5f / float(image->height)};
+  auto height_at = [&](vec2 offset) {
+    SurfaceAttributes moved = attributes;
+    moved.uv[ref.texcoord] = attributes.uv[ref.texcoord] + offset;
+    return sample_texture(scene, ref, moved, false).x;
+  };
+  float du = height_at({step.x, 0}) - height_at({-step.x, 0});
+  float dv = height_at({0, step.y}) - height_at({0, -step.y});
+  return {du / (2 * step.x), dv / (2 * step.y)};
+}
+
 }  // namespace radiant

@@ -77,8 +77,7 @@ std::optional<Ray> generate_camera_ray(const CameraFrame& f, float x, float y, v
   return f.lens_radius > 0 ? through_lens(f, pinhole, lens) : pinhole;
 }
 
-CameraDesc make_framing_camera(const SceneDesc& scene) {
-  vec3 lower, upper;
+bool framing_box(const SceneDesc& scene, vec3& lower, vec3& upper) {
   bool finite = scene_bounds(scene, lower, upper);
   // Infinite planes and tubes: frame a point on each, so a scene of only planes is seen.
   for (const ShapeDesc& s : scene.shapes)
@@ -87,18 +86,41 @@ CameraDesc make_framing_camera(const SceneDesc& scene) {
       upper = finite ? max(upper, s.center) : s.center;
       finite = true;
     }
+  return finite;
+}
+
+// The area of the box's silhouette seen along unit direction `d` (the faces it sees, projected).
+static float projected_box_area(vec3 extent, vec3 d) {
+  return std::abs(d.x) * extent.y * extent.z + std::abs(d.y) * extent.x * extent.z + std::abs(d.z) * extent.x * extent.y;
+}
+
+CameraDesc frame_box(vec3 lower, vec3 upper, float aspect) {
   CameraDesc camera;
   camera.name = "framing";
-  if (!finite) return camera;
-  vec3 center = (lower + upper) * 0.5f;
-  float radius = std::max(length(upper - lower) * 0.5f, 1e-6f);
   camera.vertical_fov_degrees = 40;
-  float distance = radius / std::sin(camera.vertical_fov_degrees * pi / 360.0f);
-  // Slightly above and in front (+z, the glTF front), looking at the centre.
-  vec3 direction = normalize(vec3{0, 0.25f, 1});
-  camera.position = center + direction * distance;
-  camera.forward = -direction;
+  vec3 center = (lower + upper) * 0.5f, extent = upper - lower;
+  // From the front (+z, the glTF front) a little above, so that depth shows, unless the side (+x)
+  // or the view from above shows more than twice the box's area there: a flat model is seen face
+  // on, never edge on, and a long low one keeps its front view.
+  vec3 toward_camera = normalize(vec3{0, 0.25f, 1});
+  float front_area = projected_box_area(extent, toward_camera), best_area = 2 * front_area;
+  for (vec3 view : {normalize(vec3{1, 0.25f, 0}), normalize(vec3{0, 1, 0.25f})})
+    if (float area = projected_box_area(extent, view); area > best_area) toward_camera = view, best_area = area;
+  camera.forward = -toward_camera;
   camera.up = normalize(cross(cross(camera.forward, vec3{0, 1, 0}), camera.forward));
+  vec3 right = cross(camera.forward, camera.up);
+  // Every corner inside the view, with a margin of 5%: a corner at depth `along` before the
+  // centre needs the camera `offset / tan(half angle)` farther than that.
+  float tan_vertical = std::tan(camera.vertical_fov_degrees * pi / 360.0f);
+  float tan_horizontal = tan_vertical * std::max(aspect, 1e-3f);
+  float distance = 1e-6f * std::max(1.0f, max_component(abs(center)));
+  for (int corner = 0; corner < 8; ++corner) {
+    vec3 p = {corner & 1 ? upper.x : lower.x, corner & 2 ? upper.y : lower.y, corner & 4 ? upper.z : lower.z};
+    vec3 d = p - center;
+    float needed = std::max(std::abs(dot(d, camera.up)) / tan_vertical, std::abs(dot(d, right)) / tan_horizontal);
+    distance = std::max(distance, dot(d, toward_camera) + 1.05f * needed);
+  }
+  camera.position = center + toward_camera * distance;
   return camera;
 }
 

@@ -26,8 +26,13 @@ CameraFrame make_camera_frame(const CameraDesc& camera, int width, int height);
 // projection sees nothing (outside a fisheye's circle).
 std::optional<Ray> generate_camera_ray(const CameraFrame& frame, float x, float y, vec2 lens = {0.5f, 0.5f});
 
-// A camera that frames the bounds of everything in the scene (used when the file has none).
-CameraDesc make_framing_camera(const SceneDesc& scene);
+// The box a framing camera (used when the file has no camera) must show: everything finite, and a
+// point on each infinite plane and tube. False when there is nothing to frame.
+bool framing_box(const SceneDesc& scene, vec3& lower, vec3& upper);
+
+// A camera that sees all of the box [lower, upper] in an image of width / height `aspect`,
+// looking across its two largest extents (docs/cli.md, "The framing camera").
+CameraDesc frame_box(vec3 lower, vec3 upper, float aspect);
 
 // Applies --look-from/--look-at/--up/--fov, --camera-type and the lens flags; throws
 // std::invalid_argument on a degenerate view or a lens without a focus distance.

@@ -146,6 +146,14 @@ struct PassRunner {
   }
 };
 
+// The image's width / height as a camera without an aspect of its own will see it (1 when the
+// size comes from the default).
+float image_aspect(const PreparedScene& prepared, const RenderOptions& options) {
+  std::optional<int> width = options.width ? options.width : prepared.scene->settings.width;
+  std::optional<int> height = options.height ? options.height : prepared.scene->settings.height;
+  return width && height && *width > 0 && *height > 0 ? float(*width) / float(*height) : 1.0f;
+}
+
 // Builds (or rebuilds) the accelerator, charging its estimated size first.
 void build_accel(PreparedScene& prepared) {
   prepared.accel.reset();
@@ -160,7 +168,11 @@ void build_accel(PreparedScene& prepared) {
 }  // namespace
 
 CameraDesc world_view_camera(const PreparedScene& prepared, const RenderOptions& options, bool& framed) {
-  CameraDesc camera = select_camera(prepared.world.cameras, prepared.world.framing_camera, options.camera, framed);
+  const WorldPlacement& world = prepared.world;
+  CameraDesc framing;
+  framing.name = "framing";
+  if (world.has_framing_box) framing = frame_box(world.framing_lower, world.framing_upper, image_aspect(prepared, options));
+  CameraDesc camera = select_camera(world.cameras, framing, options.camera, framed);
   apply_camera_override(camera, options.camera_override);
   // A camera placed entirely by the flags is not a framing camera.
   if (options.camera_override.look_from && options.camera_override.look_at) framed = false;

@@ -10,7 +10,7 @@ namespace radiant {
 WorldPlacement record_world_placement(const SceneDesc& world) {
   WorldPlacement placement;
   placement.cameras = world.cameras;
-  placement.framing_camera = make_framing_camera(world);
+  placement.has_framing_box = framing_box(world, placement.framing_lower, placement.framing_upper);
   placement.instance_transforms.reserve(world.instances.size());
   for (const InstanceDesc& instance : world.instances) placement.instance_transforms.push_back(instance.transform);
   placement.shape_centers.reserve(world.shapes.size());

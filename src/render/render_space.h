@@ -19,7 +19,8 @@ namespace radiant {
 // World-space values of everything the render origin moves, as loaded.
 struct WorldPlacement {
   std::vector<CameraDesc> cameras;
-  CameraDesc framing_camera;  // frames the whole scene; used when the file has no camera
+  bool has_framing_box = false;  // what a framing camera frames (render/camera.h framing_box)
+  vec3 framing_lower, framing_upper;
   std::vector<mat4> instance_transforms;
   std::vector<vec3> shape_centers;
   std::vector<vec3> light_positions;

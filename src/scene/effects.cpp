@@ -67,7 +67,7 @@ EffectSet analyze_effects(const SceneDesc& scene) {
     reflective += is_reflective(m);
     emissive += !is_black(m.emission);
     textured += has_texture(m);
-    normal_mapped += m.normal_texture.valid();
+    normal_mapped += m.normal_texture.valid() || m.bump_texture.valid();
     alpha += m.alpha_mode != AlphaMode::opaque;
     absorbing += !is_black(volume_absorption(m));
   }
@@ -95,7 +95,7 @@ EffectSet analyze_effects(const SceneDesc& scene) {
   if (environment)
     add(effect_environment, scene.environment.map_path.empty() ? "a uniform background color" : "an environment map");
   if (textured) add(effect_textures, count(textured, "textured material(s) or vertex-colored mesh(es)"));
-  if (normal_mapped) add(effect_normal_maps, count(normal_mapped, "normal-mapped material(s)"));
+  if (normal_mapped) add(effect_normal_maps, count(normal_mapped, "normal- or bump-mapped material(s)"));
   if (alpha) add(effect_alpha, count(alpha, "material(s) with alpha mask or blend"));
   if (delta_lights || emissive || environment)
     add(effect_indirect, "light bounces between surfaces (path tracer)");

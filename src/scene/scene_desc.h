@@ -95,6 +95,10 @@ struct MaterialDesc {
   TextureRef metallic_roughness_texture;  // linear: G roughness, B metallic
   TextureRef normal_texture;
   float normal_scale = 1;
+  // Height map (OBJ bump/map_bump): the surface seen as displaced along its normal by
+  // bump_scale x the texel's first channel (linear), in world units; the shading normal follows.
+  TextureRef bump_texture;
+  float bump_scale = 1;
   TextureRef transmission_texture;  // linear, R channel
   // KHR_materials_specular: a dielectric's Fresnel layer is specular × F, with F0 tinted by
   // specular_color; specular 0 leaves an exactly Lambertian base.

@@ -72,7 +72,7 @@ struct Checker {
     for (float f : {m.shininess, m.ior, m.alpha, m.metallic, m.roughness, m.transmission, m.normal_scale,
                     m.alpha_cutoff, m.specular, m.clearcoat, m.clearcoat_roughness,
                     m.sheen_roughness, m.thickness, m.attenuation_distance, m.iridescence, m.iridescence_thickness_min,
-                    m.iridescence_thickness_max, m.anisotropy_strength, m.anisotropy_rotation})
+                    m.iridescence_thickness_max, m.anisotropy_strength, m.anisotropy_rotation, m.bump_scale})
       finite(f, where);
     // Beyond these, refraction's eta^2 overflows float and directions stop being numbers.
     constexpr float min_ior = 1e-3f, max_ior = 1e3f;
@@ -84,6 +84,7 @@ struct Checker {
     texture_ref(m.base_color_texture, where + ".base_color_texture");
     texture_ref(m.metallic_roughness_texture, where + ".metallic_roughness_texture");
     texture_ref(m.normal_texture, where + ".normal_texture");
+    texture_ref(m.bump_texture, where + ".bump_texture");
     texture_ref(m.transmission_texture, where + ".transmission_texture");
     texture_ref(m.specular_texture, where + ".specular_texture");
     texture_ref(m.alpha_texture, where + ".alpha_texture");

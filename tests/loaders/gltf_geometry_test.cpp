@@ -73,6 +73,13 @@ TEST_CASE("gltf: points and lines are skipped with a warning") {
   CHECK(scene.meshes.size() == 1);
   REQUIRE(!scene.warnings.empty());
   CHECK(scene.warnings[0].find("meshes[0].primitives[0]: points and lines are not rendered") != std::string::npos);
+  // `radiant info` says so too.
+  ScratchDir dir("gltf-points-info");
+  std::string path = dir.write("points.gltf", b.gltf(one_primitive(prims))).string();
+  CommandResult info = run_radiant("info " + path);
+  CHECK(info.exit_code == 0);
+  CHECK(info.out.find("warning: " + path + ": meshes[0].primitives[0]: points and lines are not rendered") !=
+        std::string::npos);
 }
 
 TEST_CASE("gltf: normalized and plain integer components of every type") {

@@ -21,7 +21,8 @@ static const char* two_material_obj =
 
 static const char* materials_mtl =
     "newmtl glass\nKd 0.1 0.2 0.3\nKs 0.5 0.5 0.5\nNs 64\nNi 1.45\nd 0.25\nillum 7\n"
-    "newmtl mirror\nKd 0 0 0\nKs 0.9 0.8 0.7\nillum 3\nKe 2 2 2\nmap_Kd tex.png\nmap_bump tex.png\nmap_d tex.png\n";
+    "newmtl mirror\nKd 0 0 0\nKs 0.9 0.8 0.7\nillum 3\nKe 2 2 2\nmap_Kd tex.png\nmap_bump -bm 0.5 tex.png\nnorm tex.png\n"
+    "map_d tex.png\n";
 
 static void write_texture(const std::filesystem::path& path) { write_texel_bytes(path, 2, 2, 1, {10, 20, 30, 40}); }
 
@@ -53,6 +54,8 @@ TEST_CASE("obj: polygons are triangulated into one mesh per material with the MT
   CHECK(mirror.emission.x == 2);
   CHECK(mirror.base_color_texture.valid());
   CHECK(mirror.normal_texture.texture == mirror.base_color_texture.texture);  // one texture per file
+  CHECK(mirror.bump_texture.texture == mirror.base_color_texture.texture);    // a height map, not a normal map
+  CHECK(mirror.bump_scale == 0.5f);
   CHECK(mirror.alpha_texture.valid());
   CHECK(mirror.alpha_mode == AlphaMode::mask);
   REQUIRE(scene.images.size() == 1);

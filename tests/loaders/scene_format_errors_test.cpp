@@ -153,7 +153,7 @@ TEST_CASE("cylinder errors: mixed forms, equal end points") {
   });
 }
 
-TEST_CASE("polygon errors: vertex counts, non-planar, non-convex, degenerate") {
+TEST_CASE("polygon errors: vertex counts, non-planar, self-crossing, degenerate") {
   check_errors({
       {"@triangle\nvertices 0 0 0 1 0 0\n", "t.scene:2:1: 'vertices' expects at least 3 vertices, got 2"},
       {"@triangle\nvertices 0 0 0 1 0 0 0 1\n", "t.scene:2:1: 'vertices' expects 3 numbers per vertex, got 8 numbers"},
@@ -161,8 +161,8 @@ TEST_CASE("polygon errors: vertex counts, non-planar, non-convex, degenerate") {
       {"@triangle\nvertices 0 0 0 1 1 1 2 2 2\n", "t.scene:2:1: triangle has zero area (its vertices are collinear)"},
       {"@polygon\n  vertices 0 0 0  1 0 0  1 1 0.5  0 1 0\n",
        "t.scene:2:3: polygon is not planar (vertex 1 is 0.118 away from the mean plane)"},
-      {"@polygon\nvertices 0 0 0  2 0 0  1 0.5 0  2 2 0  0 2 0\n",
-       "t.scene:2:1: polygon is not convex (it turns the other way at vertex 3)"},
+      {"@polygon\nvertices 0 0 0  3 3 0  3 0 0  0 1 0\n",
+       "t.scene:2:1: polygon crosses itself (its edges cross or it winds around twice)"},
   });
 }
 

@@ -1,0 +1,32 @@
+#include "texture_file.h"
+
+#include "file_access.h"
+#include "image/image_io.h"
+#include "memory/memory_budget.h"
+
+namespace radiant {
+
+ImageDesc read_texture_file(const std::filesystem::path& path, const std::string& where, const std::string& name,
+                            const LoadOptions& options) {
+  check_input_file(path, where + " '" + escaped(name) + "'", options);
+  std::string error;
+  auto input = open_image_file(path.string(), error);
+  if (!input) throw LoadError(where + ": cannot read image '" + name + "'");
+  const ImageHeader& spec = input->header();
+  int channels = std::min(spec.channels, 4);
+  std::string image_label = where + ": image '" + name + "' (" + std::to_string(spec.width) + "x" +
+                            std::to_string(spec.height) + ")";
+  uint64_t texels = uint64_t(std::max(spec.width, 0)) * uint64_t(std::max(spec.height, 0));
+  if (texels == 0 || channels <= 0) throw LoadError(image_label + ": the image is empty");
+  // OpenImageIO may hold the whole file's pixels (up to four bytes a channel) while it converts.
+  charge_load(options, saturating_multiply(texels, uint64_t(std::max(spec.channels, 0)) * 4 + channels), image_label);
+  ImageDesc image;
+  image.name = path.string();
+  image.width = spec.width, image.height = spec.height, image.channels = channels;
+  image.texels8.resize(texels * channels);
+  if (!input->read(channels, PixelType::uint8, image.texels8.data()))
+    throw LoadError(where + ": cannot decode image '" + name + "': " + input->error());
+  return image;
+}
+
+}  // namespace radiant
