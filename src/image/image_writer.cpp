@@ -23,6 +23,10 @@ ImageWriteSpec output_spec(const std::string& path, const OutputImage& image) {
   spec.type = as_float ? PixelType::float32 : PixelType::uint8;
   spec.color_space = as_float ? "Linear" : "sRGB";
   spec.zip = as_float;
+  if (as_float) {
+    spec.x = image.x, spec.y = image.y;
+    spec.full_width = image.full_width, spec.full_height = image.full_height;
+  }
   spec.metadata = image.metadata;
   return spec;
 }

@@ -81,9 +81,9 @@ struct RenderResult {
 RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions& options);
 
 // What a render of `width` x `height` pixels with `channels` output channels allocates per
-// image: the film, the sample counts and activity masks, the output image and its 8-bit
-// conversion for PNG.
-uint64_t render_image_bytes(int width, int height, size_t channels);
+// image: the film (with AOV sums when `with_aovs`), the sample counts and activity masks, the
+// output image and its 8-bit conversion for PNG.
+uint64_t render_image_bytes(int width, int height, size_t channels, bool with_aovs);
 
 // The channels film_to_image makes: R, G, B, then those of each AOV ("albedo.R", "N.X", "Z", ...).
 std::vector<std::string> output_channel_names(const std::vector<std::string>& aovs);
