@@ -24,6 +24,10 @@ vec3 parse_vec3(const std::string& flag, const std::string& text);
 RenderMode parse_mode(const std::string& flag, const std::string& text);
 SamplerKind parse_sampler(const std::string& flag, const std::string& text);
 PixelWindow parse_window(const std::string& flag, const std::string& text);
+// "I/K" with 0 <= I < K <= 65536, and "A:B" sample indices.
+ShardSpec parse_shard(const std::string& flag, const std::string& text);
+ShardSplit parse_split(const std::string& flag, const std::string& text);
+SampleRange parse_sample_range(const std::string& flag, const std::string& text);
 std::vector<std::string> parse_aovs(const std::string& flag, const std::string& text);
 // --time-limit's check: seconds in (0, max_time_limit_seconds] (CLI::PositiveNumber lets NaN
 // through, and 1e308 seconds overflows the deadline).
@@ -38,7 +42,7 @@ const char* sampler_name(SamplerKind kind);
 // parsing to convert the string flags.
 struct RenderFlags {
   RenderOptions options;
-  std::string mode, sampler, env_color, crop, aovs, look_from, look_at, up;
+  std::string mode, sampler, env_color, crop, aovs, look_from, look_at, up, shard, split, sample_range;
   int width = 0, height = 0, spp = 0, max_depth = 0, gltf_scene = -1;
   float fov = 0;
   bool allow_external_files = false;

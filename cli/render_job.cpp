@@ -7,6 +7,7 @@
 #include "interrupts.h"
 #include "option_parsing.h"
 #include "output/output_set.h"
+#include "shard_output.h"
 
 namespace radiant::cli {
 
@@ -50,6 +51,11 @@ void run_render_job(const std::string& scene_path, PreparedScene& prepared, cons
   check_outputs_spare_scene_files(prepared.scene->input_files, render_job_outputs(job));
   prepare_view(prepared, job.options);
   times.build = prepared.build_seconds;
+  if (job.skip_existing &&
+      shard_already_rendered(job.output, make_shard_info(prepared, resolve_settings(prepared, options), options))) {
+    if (!job.options.quiet) std::cerr << "radiant: " << job.output << " already holds this shard, complete; skipped\n";
+    return;
+  }
   RenderResult result = render_prepared(prepared, options);
   if (result.stats.interrupted && result.stats.samples == 0) throw_if_interrupted();  // nothing to save
   times.render = result.stats.render_seconds;
@@ -60,7 +66,13 @@ void run_render_job(const std::string& scene_path, PreparedScene& prepared, cons
   }
   auto write_start = Clock::now();
   OutputSet outputs;
-  write_image(outputs.create(job.output), output_image(job, result));
+  if (writes_shard(options)) {
+    ShardInfo info = make_shard_info(prepared, s, options);
+    if (result.stats.interrupted) info.partial = std::string("interrupted by ") + signal_name(interrupt_signal());
+    write_shard(outputs.create(job.output), result.film, info, options.memory);
+  } else {
+    write_image(outputs.create(job.output), output_image(job, result));
+  }
   times.write = std::chrono::duration<double>(Clock::now() - write_start).count();
   if (!job.stats_path.empty())
     outputs.create(job.stats_path).write(render_stats_json(scene_path, job.output, result, times));

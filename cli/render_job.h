@@ -17,6 +17,7 @@ struct RenderJob {
   std::string output;
   std::string stats_path;
   std::optional<uint64_t> max_memory_bytes;  // a batch render line's own --max-memory
+  bool skip_existing = false;  // a shard already complete at `output` is not rendered again
 };
 
 // The job's outputs, named by their flags.
@@ -31,7 +32,7 @@ std::string out_of_memory_message(const std::string& scene_path, const std::stri
 // goes (std::runtime_error).
 void check_render_job_outputs(const RenderJob& job);
 
-// Renders, writes the image and the stats and commits them together (neither replaces an
+// Renders, writes the image (a shard file for --shard and --sample-range) and the stats and commits them together (neither replaces an
 // existing file unless both were written), prints notes and the summary unless quiet. `times`
 // carries the load time in and gets the rest filled. Throws on failure; std::invalid_argument
 // means a bad setting (usage error). Moves `prepared` to the render origin of this view first

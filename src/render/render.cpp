@@ -230,9 +230,9 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
   int cores = tbb::this_task_arena::max_concurrency();
   tbb::task_arena arena(options.threads > 0 ? std::min(options.threads, cores) : cores);
   std::vector<uint8_t> active;
-  uint32_t done = 0, total = uint32_t(s.spp);
+  uint32_t done = s.samples.begin, total = s.samples.end;
   // One pass for a plain render; growing passes when a budget or a noise target may stop early.
-  uint32_t pass = (adaptive || timed) ? std::min<uint32_t>(total, adaptive ? 8u : 1u) : total;
+  uint32_t pass = (adaptive || timed) ? std::min<uint32_t>(total, adaptive ? 8u : 1u) : total - done;
   if (options.progress && !options.quiet) print_progress(0, 0);
   while (done < total) {
     uint32_t end = std::min(total, done + pass);
@@ -244,7 +244,7 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
       result.stats.stopped_by_time_limit = !result.stats.interrupted;
       break;
     }
-    if (options.progress && !options.quiet) print_progress(double(done) / total, seconds_since(start));
+    if (options.progress && !options.quiet) print_progress(double(done - s.samples.begin) / (total - s.samples.begin), seconds_since(start));
     if (adaptive) {
       active.assign(result.film.pixels.size(), 0);
       size_t remaining = 0;

@@ -48,6 +48,7 @@ struct ResolvedSettings {
   uint32_t effects = 0;          // what runs: the scene's effects after --effects
   uint32_t compiled_variant = 0; // the compiled effect set that runs them
   PixelWindow window;
+  SampleRange samples;  // the sample indices of each pixel this render takes, of [0, spp)
 };
 
 // Throws std::invalid_argument for settings that make no sense (names the flag). The camera is
