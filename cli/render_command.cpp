@@ -86,8 +86,7 @@ int render_main(int argc, char** argv) {
 
   MemoryBudget budget = flags.memory_budget();
   options.memory = &budget;
-  RenderJob job{options, output, stats_path};
-  job.skip_existing = skip_existing;
+  RenderJob job{options, output, stats_path, std::nullopt, skip_existing};
   PhaseTimes times;
   const char* doing = "loading";
   try {

@@ -53,7 +53,7 @@ TEST_CASE("exact sum: every order and grouping of adversarial terms gives the sa
   }
 }
 
-TEST_CASE("exact sum: float samples in [2^-20, 1) sum exactly, rounded once to a double") {
+TEST_CASE("exact sum: float samples from 2^-20 to 1 sum exactly, rounded once to a double") {
   std::mt19937 random(3);
   std::uniform_real_distribution<float> unit(std::ldexp(1.0f, -20), 1.0f);
   ExactSum sum;
