@@ -191,6 +191,21 @@ void run_script(const std::vector<BatchStep>& steps, const std::string& script_n
   }
 }
 
+std::vector<BatchStep> shard_steps(const std::vector<BatchStep>& steps, const ShardSpec& shard) {
+  std::vector<BatchStep> share;
+  const BatchStep* scene = nullptr;  // the scene step not yet kept
+  int render = 0;
+  for (const BatchStep& step : steps) {
+    if (!step.scene.empty()) {
+      scene = &step;
+    } else if (render++ % shard.count == shard.index) {
+      if (scene) share.push_back(*scene), scene = nullptr;
+      share.push_back(step);
+    }
+  }
+  return share;
+}
+
 int batch_main(int argc, char** argv) {
   CLI::App app{"Run a command script: load a scene once, render many views (docs/cli.md)."};
   app.footer(
@@ -207,10 +222,14 @@ int batch_main(int argc, char** argv) {
   std::string max_memory;
   app.add_option("--max-memory", max_memory,
                  "Memory cap in GiB for the scenes loaded and every render (default 1/4 of RAM)");
+  std::string shard_text;
+  app.add_option("--shard", shard_text, "Render only render lines I, I+K, I+2K, ... (from 0) of the script: I/K");
   std::optional<uint64_t> max_memory_bytes;
+  std::optional<ShardSpec> shard;
   try {
     parse_arguments(app, argc, argv);
     if (!max_memory.empty()) max_memory_bytes = parse_memory_limit("--max-memory", max_memory);
+    if (!shard_text.empty()) shard = parse_shard("--shard", shard_text);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);
     std::cerr << "radiant batch: " << e.what() << "\n";
@@ -232,6 +251,7 @@ int batch_main(int argc, char** argv) {
     return exit_failure;
   }
 
+  if (shard) steps = shard_steps(steps, *shard);
   try {
     run_script(steps, script_path, {quiet, allow_external, max_memory_bytes, {}});
   } catch (const std::exception& e) {

@@ -24,6 +24,10 @@ struct BatchStep {
 // std::invalid_argument naming `name:line`.
 std::vector<BatchStep> parse_script(std::istream& in, const std::string& name, const std::filesystem::path& base);
 
+// `radiant batch --shard I/K`: the render steps numbered I, I+K, I+2K, ... (from 0, in script
+// order) with the scene steps they render; scenes none of them renders are not loaded.
+std::vector<BatchStep> shard_steps(const std::vector<BatchStep>& steps, const ShardSpec& shard);
+
 // How a script runs: the command's flags, and (for the fuzzer) a change applied to every view.
 struct BatchSettings {
   bool quiet = false;

@@ -17,6 +17,7 @@ int compare_main(int argc, char** argv);
 int converge_main(int argc, char** argv);
 int batch_main(int argc, char** argv);
 int session_main(int argc, char** argv);
+int merge_main(int argc, char** argv);
 
 struct Command {
   const char* name;
@@ -25,7 +26,7 @@ struct Command {
 inline const std::vector<Command>& commands() {
   static const std::vector<Command> list = {{"render", render_main},     {"info", info_main},
                                             {"compare", compare_main},   {"converge", converge_main},
-                                            {"batch", batch_main},
+                                            {"batch", batch_main},       {"merge", merge_main},
                                             {"session", session_main}};
   return list;
 }

@@ -18,6 +18,7 @@ void print_usage(std::ostream& out) {
          "  radiant compare A B [options]           compare images for CI (exit 0 pass, 1 fail)\n"
          "  radiant converge SCENE [--out DIR]      accuracy-versus-time report\n"
          "  radiant batch FILE|-                    render many views of one loaded scene\n"
+         "  radiant merge SHARD... -o OUT           combine shards (render --shard) into one image\n"
          "  radiant session [SCENE] -o OUT          render while taking commands (move, turn, set, ...)\n"
          "  radiant --version\n";
 }

@@ -122,6 +122,46 @@ PixelWindow parse_window(const std::string& flag, const std::string& text) {
   return {v[0], v[1], v[2], v[3]};
 }
 
+namespace {
+
+// A whole number in [low, high] written as one.
+int64_t parse_index(const std::string& flag, const std::string& text, int64_t low, int64_t high, const char* what) {
+  double d = 0;
+  size_t used = 0;
+  if (!read_float_number(text, d, used) || d != std::floor(d) || d < double(low) || d > double(high) ||
+      text.find_first_not_of("0123456789") != std::string::npos)
+    throw CLI::ValidationError(flag, "'" + text + "' is not " + what);
+  return int64_t(d);
+}
+
+}  // namespace
+
+ShardSpec parse_shard(const std::string& flag, const std::string& text) {
+  auto parts = split(text, '/');
+  if (parts.size() != 2) throw CLI::ValidationError(flag, "expected I/K (shard I of K, from 0), got '" + text + "'");
+  ShardSpec shard;
+  shard.count = int(parse_index(flag, parts[1], 1, 65536, "a shard count from 1 to 65536"));
+  shard.index = int(parse_index(flag, parts[0], 0, shard.count - 1, "a shard index from 0 to K-1"));
+  return shard;
+}
+
+ShardSplit parse_split(const std::string& flag, const std::string& text) {
+  if (text == "tiles") return ShardSplit::tiles;
+  if (text == "samples") return ShardSplit::samples;
+  if (text == "both") return ShardSplit::both;
+  throw CLI::ValidationError(flag, "unknown split '" + text + "' (expected tiles, samples or both)");
+}
+
+SampleRange parse_sample_range(const std::string& flag, const std::string& text) {
+  auto parts = split(text, ':');
+  if (parts.size() != 2) throw CLI::ValidationError(flag, "expected A:B (samples A to B-1 of each pixel), got '" + text + "'");
+  SampleRange range;
+  range.begin = uint32_t(parse_index(flag, parts[0], 0, 1 << 24, "a sample index"));
+  range.end = uint32_t(parse_index(flag, parts[1], 0, 1 << 24, "a sample index"));
+  if (range.begin >= range.end) throw CLI::ValidationError(flag, "'" + text + "' is empty: A must be less than B");
+  return range;
+}
+
 std::vector<std::string> parse_aovs(const std::string& flag, const std::string& text) {
   std::vector<std::string> aovs;
   for (const std::string& name : split(text, ',')) {
@@ -313,6 +353,15 @@ void RenderFlags::finish() {
     options.env_color = c;
   }
   if (!crop.empty()) options.crop = parse_window("--crop", crop);
+  if (!shard.empty()) {
+    if (!crop.empty() || !sample_range.empty())
+      throw CLI::ValidationError("--shard", "takes its region and samples itself: not with --crop or --sample-range");
+    options.shard = parse_shard("--shard", shard);
+    if (!split.empty()) options.shard->split = parse_split("--split", split);
+  } else if (!split.empty()) {
+    throw CLI::ValidationError("--split", "needs --shard I/K");
+  }
+  if (!sample_range.empty()) options.sample_range = parse_sample_range("--sample-range", sample_range);
   if (!aovs.empty()) options.aovs = parse_aovs("--aov", aovs);
   if (!look_from.empty()) options.camera_override.look_from = parse_vec3("--look-from", look_from);
   if (!look_at.empty()) options.camera_override.look_at = parse_vec3("--look-at", look_at);

@@ -35,6 +35,10 @@ SamplerKind parse_sampler(const std::string& flag, const std::string& text);
 LightSampler parse_light_sampler(const std::string& flag, const std::string& text);
 Projection parse_camera_type(const std::string& flag, const std::string& text);
 PixelWindow parse_window(const std::string& flag, const std::string& text);
+// "I/K" with 0 <= I < K <= 65536, and "A:B" sample indices.
+ShardSpec parse_shard(const std::string& flag, const std::string& text);
+ShardSplit parse_split(const std::string& flag, const std::string& text);
+SampleRange parse_sample_range(const std::string& flag, const std::string& text);
 std::vector<std::string> parse_aovs(const std::string& flag, const std::string& text);
 // --time-limit's check: seconds in (0, max_time_limit_seconds] (CLI::PositiveNumber lets NaN
 // through, and 1e308 seconds overflows the deadline).
@@ -50,6 +54,7 @@ const char* sampler_name(SamplerKind kind);
 struct RenderFlags {
   RenderOptions options;
   std::string mode, sampler, light_sampler, env_color, crop, aovs, look_from, look_at, up, view, camera_type, variant;
+  std::string shard, split, sample_range;
   int width = 0, height = 0, spp = 0, max_depth = 0, gltf_scene = -1;
   float fov = 0;
   float lens_radius = -1, focus_distance = 0;  // unset: -1, 0

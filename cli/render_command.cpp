@@ -10,6 +10,8 @@
 #include "load_scene.h"
 #include "option_parsing.h"
 #include "render_job.h"
+#include "shard_output.h"
+#include "image/image_io.h"
 
 namespace radiant::cli {
 
@@ -26,7 +28,18 @@ const char* render_examples =
     "  radiant render model.obj -o model.exr --env-color 1,1,1 --aov albedo,normal,variance\n"
     "  radiant render scene.gltf -o preview.png --effects=-shadows,-indirect --width 320\n"
     "  cat room.scene | radiant render - -o room.png --mode path --spp 256 --threads 2\n"
-    "  radiant render scene.gltf -o - --format exr --stats stats.json | oiiotool - -o out.tif\n";
+    "  radiant render scene.gltf -o - --format exr --stats stats.json | oiiotool - -o out.tif\n"
+    "  radiant render scene.gltf -o shard-3.exr --shard 3/8 --split both   # then: radiant merge shard-*.exr -o out.exr\n";
+
+// What is wrong with the shard flags, or "".
+std::string shard_usage_problem(const std::string& scene_path, const std::string& output, const RenderOptions& options,
+                                bool skip_existing) {
+  if (!writes_shard(options)) return skip_existing ? "--skip-existing needs --shard or --sample-range" : "";
+  if (lowercase_extension(output) != ".exr")
+    return "--shard and --sample-range write a shard EXR for `radiant merge`: -o must end in .exr (got '" + output + "')";
+  if (scene_path == "-") return "--shard and --sample-range need a scene file (merge checks its hash), not standard input";
+  return "";
+}
 
 }  // namespace
 
@@ -52,6 +65,11 @@ int render_main(int argc, char** argv) {
   app.add_option("--stats", stats_path, "Write render statistics as JSON (- for standard output)");
   std::string format;
   app.add_option("--format", format, "The image format of -o - (png, exr, tif, jpg, ...; default png)");
+  bool skip_existing = false;
+  app.add_option("--shard", flags.shard, "Render shard I of K (from 0) to a shard EXR for `radiant merge`");
+  app.add_option("--split", flags.split, "How --shard cuts the work: tiles (default), samples or both");
+  app.add_option("--sample-range", flags.sample_range, "Render samples A:B of each pixel (of --spp) to a shard EXR");
+  app.add_flag("--skip-existing", skip_existing, "Exit at once when -o already holds this shard, complete");
   app.set_version_flag("--version", "radiant " RADIANT_VERSION);
   try {
     parse_arguments(app, argc, argv);
@@ -81,10 +99,15 @@ int render_main(int argc, char** argv) {
     std::cerr << "radiant render: --aov needs an EXR output (got '" << image_format_name(job) << "')\n";
     return exit_usage;
   }
+  if (std::string problem = shard_usage_problem(scene_path, output, options, skip_existing); !problem.empty()) {
+    std::cerr << "radiant render: " << problem << "\n";
+    return exit_usage;
+  }
 
   MemoryBudget budget = flags.memory_budget();
   options.memory = &budget;
   job.options.memory = &budget;
+  job.skip_existing = skip_existing;
   PhaseTimes times;
   const char* doing = "loading";
   try {

@@ -9,6 +9,7 @@
 #include "option_parsing.h"
 #include "output/output_set.h"
 #include "scene/scene_summary.h"
+#include "shard_output.h"
 
 namespace radiant::cli {
 
@@ -76,13 +77,24 @@ void run_render_job(const std::string& scene_path, PreparedScene& prepared, cons
   check_outputs_spare_scene_files(prepared.scene->input_files, render_job_outputs(job));
   prepare_view(prepared, job.options);
   times.build = prepared.build_seconds;
+  if (job.skip_existing &&
+      shard_already_rendered(job.output, make_shard_info(prepared, resolve_settings(prepared, options), options))) {
+    if (!job.options.quiet) std::cerr << "radiant: " << job.output << " already holds this shard, complete; skipped\n";
+    return;
+  }
   if (!job.options.quiet) print_render_notes(scene_path, prepared, resolve_settings(prepared, job.options));
   RenderResult result = render_prepared(prepared, options);
   if (result.stats.interrupted && result.stats.samples == 0) throw_if_interrupted();  // nothing to save
   times.render = result.stats.render_seconds;
   auto write_start = Clock::now();
   OutputSet outputs;
-  write_image(output_file(outputs, job.output, job.format), output_image(job, result));
+  if (writes_shard(options)) {
+    ShardInfo info = make_shard_info(prepared, result.settings, options);
+    if (result.stats.interrupted) info.partial = std::string("interrupted by ") + signal_name(interrupt_signal());
+    write_shard(outputs.create(job.output), result.film, info, options.memory);
+  } else {
+    write_image(output_file(outputs, job.output, job.format), output_image(job, result));
+  }
   times.write = std::chrono::duration<double>(Clock::now() - write_start).count();
   if (!job.stats_path.empty())
     output_file(outputs, job.stats_path, "json").write(render_stats_json(scene_path, job.output, result, times));

@@ -18,6 +18,7 @@ struct RenderJob {
   std::string stats_path;  // "-": standard output
   std::string format = "png";  // the extension that names the format of `-o -`
   std::optional<uint64_t> max_memory_bytes;  // a batch render line's own --max-memory
+  bool skip_existing = false;  // a shard already complete at `output` is not rendered again
 };
 
 // A name whose extension names the image format: the output, or for `-o -` "-.FORMAT".
@@ -39,7 +40,7 @@ void check_render_job_outputs(const RenderJob& job);
 // and reason, and a scene that nothing lights (no light, emission or environment, flags included).
 void print_render_notes(const std::string& scene_path, const PreparedScene& prepared, const ResolvedSettings& settings);
 
-// Renders, writes the image and the stats and commits them together (neither replaces an
+// Renders, writes the image (a shard file for --shard and --sample-range) and the stats and commits them together (neither replaces an
 // existing file unless both were written), prints notes and the summary unless quiet. `times`
 // carries the load time in and gets the rest filled. Throws on failure; std::invalid_argument
 // means a bad setting (usage error). Moves `prepared` to the render origin of this view first

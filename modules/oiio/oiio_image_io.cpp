@@ -28,8 +28,18 @@ OIIO::TypeDesc type_desc(PixelType type) {
     case PixelType::half: return OIIO::TypeDesc::HALF;
     case PixelType::float32: return OIIO::TypeDesc::FLOAT;
     case PixelType::uint16: return OIIO::TypeDesc::UINT16;
+    case PixelType::uint32: return OIIO::TypeDesc::UINT32;
+    case PixelType::other: break;
   }
   return OIIO::TypeDesc::FLOAT;
+}
+
+PixelType pixel_type(OIIO::TypeDesc type) {
+  if (type == OIIO::TypeDesc::UINT8) return PixelType::uint8;
+  if (type == OIIO::TypeDesc::HALF) return PixelType::half;
+  if (type == OIIO::TypeDesc::FLOAT) return PixelType::float32;
+  if (type == OIIO::TypeDesc::UINT32) return PixelType::uint32;
+  return PixelType::other;
 }
 
 class OiioImageSource final : public ImageSource {
@@ -43,14 +53,19 @@ class OiioImageSource final : public ImageSource {
     header_.alpha_channel = spec.alpha_channel;
     header_.deep = spec.deep;
     header_.channel_names = spec.channelnames;
+    header_.x = spec.x, header_.y = spec.y;
+    header_.full_x = spec.full_x, header_.full_y = spec.full_y;
+    header_.full_width = spec.full_width, header_.full_height = spec.full_height;
+    for (int c = 0; c < spec.nchannels; ++c) header_.channel_types.push_back(pixel_type(spec.channelformat(c)));
     header_.color_space = spec.get_string_attribute("oiio:ColorSpace");
     for (const OIIO::ParamValue& attribute : spec.extra_attribs)
       if (attribute.type() == OIIO::TypeDesc::STRING)
         header_.metadata.emplace_back(attribute.name().string(), attribute.get_string());
   }
   const ImageHeader& header() const override { return header_; }
-  bool read(int channels, PixelType type, void* out) override {
-    bool read = input_->read_image(0, 0, 0, channels, type_desc(type), out);
+  bool read(int channels, PixelType type, void* out) override { return read_channels(0, channels, type, out); }
+  bool read_channels(int begin, int end, PixelType type, void* out) override {
+    bool read = input_->read_image(0, 0, begin, end, type_desc(type), out);
     // libjpeg only warns about a file that ends early and fills the rest with gray; OpenImageIO
     // passes the warning on as an error message of a successful read. A partial read fails.
     std::string message = input_->geterror();
@@ -132,11 +147,23 @@ bool can_write(const std::string& path) {
   return false;
 }
 
-std::string write_image(int descriptor, const std::string& path, const ImageWriteSpec& spec, const float* pixels) {
+std::string write_image(int descriptor, const std::string& path, const ImageWriteSpec& spec, const void* pixels) {
   auto output = OIIO::ImageOutput::create(path);
   if (!output) return first_line(OIIO::geterror());
   OIIO::ImageSpec file_spec(spec.width, spec.height, int(spec.channel_names.size()), type_desc(spec.type));
   file_spec.channelnames = spec.channel_names;
+  // The pixels as given: floats, or 4-byte values of each channel's own type.
+  OIIO::TypeDesc given = OIIO::TypeDesc::FLOAT;
+  if (!spec.channel_types.empty()) {
+    file_spec.channelformats.clear();
+    for (PixelType type : spec.channel_types) file_spec.channelformats.push_back(type_desc(type));
+    file_spec.format = OIIO::TypeDesc::FLOAT;
+    given = OIIO::TypeDesc::UNKNOWN;
+  }
+  file_spec.x = spec.x, file_spec.y = spec.y;
+  file_spec.full_x = 0, file_spec.full_y = 0;
+  file_spec.full_width = spec.full_width > 0 ? spec.full_width : spec.width;
+  file_spec.full_height = spec.full_height > 0 ? spec.full_height : spec.height;
   // Alpha by name only (the constructor guesses channel 3 of four, which may be an AOV).
   auto alpha = std::find(spec.channel_names.begin(), spec.channel_names.end(), "A");
   file_spec.alpha_channel = alpha == spec.channel_names.end() ? -1 : int(alpha - spec.channel_names.begin());
@@ -150,7 +177,7 @@ std::string write_image(int descriptor, const std::string& path, const ImageWrit
   // it rewrites the Exif directory: TIFF goes by name.
   bool by_name = !output->supports("ioproxy") || std::string(output->format_name()) == "tiff";
   if (!by_name && !output->set_ioproxy(&proxy)) return first_line(output->geterror());
-  bool written = output->open(path, file_spec) && output->write_image(OIIO::TypeDesc::FLOAT, pixels) && output->close();
+  bool written = output->open(path, file_spec) && output->write_image(given, pixels) && output->close();
   if (proxy.error_number()) return std::strerror(proxy.error_number());
   return written ? "" : first_line(output->geterror());
 }

@@ -5,18 +5,37 @@
 
 namespace radiant {
 
-Film make_film(int width, int height) {
+Film make_film(int width, int height, bool with_aovs) {
   Film film;
   film.width = width;
   film.height = height;
+  film.full_width = width;
+  film.full_height = height;
   film.pixels.resize(size_t(width) * height);
+  if (with_aovs) film.aovs.resize(film.pixels.size());
   return film;
+}
+
+void add_pixel(FilmPixel& to, const FilmPixel& from) {
+  for (int c = 0; c < 3; ++c) {
+    to.sum[c].add(from.sum[c]);
+    to.sum_squares[c].add(from.sum_squares[c]);
+  }
+  to.samples += from.samples;
+}
+
+void add_aovs(FilmAovs& to, const FilmAovs& from) {
+  for (int c = 0; c < 3; ++c) {
+    to.albedo[c].add(from.albedo[c]);
+    to.normal[c].add(from.normal[c]);
+  }
+  to.depth.add(from.depth);
 }
 
 color3 pixel_mean(const FilmPixel& p) {
   if (p.samples == 0) return {0, 0, 0};
   double n = p.samples;
-  return {float(p.sum[0] / n), float(p.sum[1] / n), float(p.sum[2] / n)};
+  return {float(p.sum[0].value() / n), float(p.sum[1].value() / n), float(p.sum[2].value() / n)};
 }
 
 color3 pixel_mean_variance(const FilmPixel& p) {
@@ -24,8 +43,8 @@ color3 pixel_mean_variance(const FilmPixel& p) {
   double n = p.samples;
   color3 v;
   for (int c = 0; c < 3; ++c) {
-    double mean = p.sum[c] / n;
-    double sample_variance = std::max(0.0, (p.sum_squares[c] - n * mean * mean) / (n - 1));
+    double mean = p.sum[c].value() / n;
+    double sample_variance = std::max(0.0, (p.sum_squares[c].value() - n * mean * mean) / (n - 1));
     v[c] = float(std::min(sample_variance / n, double(std::numeric_limits<float>::max())));
   }
   return v;

@@ -79,10 +79,10 @@ std::unique_ptr<ImageSource> open_image_file(const std::string& path, std::strin
   return image_io_module().open(path, error);
 }
 
-void write_image_file(TemporaryFile& file, const ImageWriteSpec& spec, const float* pixels) {
+void write_image_file(TemporaryFile& file, const ImageWriteSpec& spec, const void* pixels) {
   std::string error;
   if (writes_as_png(file.target(), spec)) {
-    std::vector<unsigned char> bytes = encode_png(spec, pixels, error);
+    std::vector<unsigned char> bytes = encode_png(spec, static_cast<const float*>(pixels), error);
     if (error.empty()) file.write(bytes.data(), bytes.size());
   } else {
     // The temporary's name keeps the target's extension, which names the format.

@@ -14,7 +14,9 @@
 
 namespace radiant {
 
-enum class PixelType { uint8, half, float32, uint16 };
+// uint32 stores exact integers (a shard's accumulators); `other` is a type read from a file that
+// radiant never writes; uint16 is a 16-bit display image (--bit-depth 16).
+enum class PixelType { uint8, half, float32, uint32, other, uint16 };
 
 // A file's text attributes as name and value: PNG tEXt chunks, EXR string header attributes.
 using ImageMetadata = std::vector<std::pair<std::string, std::string>>;
@@ -22,6 +24,10 @@ using ImageMetadata = std::vector<std::pair<std::string, std::string>>;
 // What a file says about subimage 0.
 struct ImageHeader {
   int width = 0, height = 0, depth = 1, channels = 0;
+  // The data window's origin and the display window (the full image) it lies in: a cropped
+  // render or a shard is a window of a larger image.
+  int x = 0, y = 0, full_x = 0, full_y = 0, full_width = 0, full_height = 0;
+  std::vector<PixelType> channel_types;  // as stored
   int alpha_channel = -1;  // as the file marks it, or -1
   bool deep = false;
   std::vector<std::string> channel_names;
@@ -39,14 +45,22 @@ class ImageSource {
   // (uint8 and float32 only) into `out`. False on failure, a partial read included (a file that
   // ends early), with the reason in error().
   virtual bool read(int channels, PixelType type, void* out) = 0;
+  // Channels [begin, end) the same way, in any of the types (uint32 too: exact integers).
+  virtual bool read_channels(int begin, int end, PixelType type, void* out) = 0;
   virtual std::string error() = 0;
 };
 
 // How a float image is stored.
 struct ImageWriteSpec {
   int width = 0, height = 0;
+  // Where the pixels lie in the full image (EXR data and display windows); a full size of 0 is
+  // the image itself.
+  int x = 0, y = 0, full_width = 0, full_height = 0;
   std::vector<std::string> channel_names;  // one per channel of the pixels given
   PixelType type = PixelType::uint8;       // what the file stores (values quantized as given)
+  // When set, one per channel, float32 or uint32: the pixels are 4-byte values of these types,
+  // stored as they are (a shard's exact accumulators beside its float color), and `type` is unused.
+  std::vector<PixelType> channel_types;
   std::string color_space;                 // recorded in the file when not empty
   bool zip = false;                        // lossless zip compression (EXR)
   ImageMetadata metadata;                  // recorded in the file (EXR: header attributes)
@@ -66,17 +80,18 @@ struct ImageIoModule {
   std::unique_ptr<ImageSource> (*open)(const std::string& path, std::string& error);
   // Whether OpenImageIO has a writer for `path`'s extension.
   bool (*can_write)(const std::string& path);
-  // Writes `pixels` (spec.channel_names.size() floats per pixel) in the format `path`'s extension
-  // names to the open file `descriptor`, whose name is `path`. Formats that cannot write through
+  // Writes `pixels` (spec.channel_names.size() floats per pixel, or 4-byte values of
+  // spec.channel_types) in the format `path`'s extension names to the open file `descriptor`,
+  // whose name is `path`. Formats that cannot write through
   // a descriptor (OpenImageIO's SGI, ICO, FITS, HEIF, RLA, zfile, and TIFF) open `path` by name. Returns ""
   // or the reason.
-  std::string (*write)(int descriptor, const std::string& path, const ImageWriteSpec& spec, const float* pixels);
+  std::string (*write)(int descriptor, const std::string& path, const ImageWriteSpec& spec, const void* pixels);
   PixelDifference (*compare)(const float* a, const float* b, int width, int height, int channels,
                              float fail_threshold, float warn_threshold);
 };
 
 // Raised whenever the struct above changes, so that a stale module is refused, not misread.
-constexpr uint32_t image_io_interface_version = 3;
+constexpr uint32_t image_io_interface_version = 4;
 
 }  // namespace radiant
 

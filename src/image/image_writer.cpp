@@ -24,6 +24,10 @@ ImageWriteSpec output_spec(const std::string& path, const OutputImage& image) {
   else spec.type = image.bit_depth == 16 ? PixelType::uint16 : PixelType::uint8;
   spec.color_space = as_float ? "Linear" : "sRGB";
   spec.zip = as_float;
+  if (as_float) {
+    spec.x = image.x, spec.y = image.y;
+    spec.full_width = image.full_width, spec.full_height = image.full_height;
+  }
   spec.metadata = image.metadata;
   return spec;
 }

@@ -13,6 +13,9 @@ namespace radiant {
 // A float image with named channels ("R", "G", "B", then AOVs such as "albedo.R").
 struct OutputImage {
   int width = 0, height = 0;
+  // Its place in the full image, kept by float formats (EXR data and display windows); a full
+  // size of 0 is the image itself.
+  int x = 0, y = 0, full_width = 0, full_height = 0;
   std::vector<std::string> channels;
   std::vector<float> pixels;  // interleaved, top row first
   ImageMetadata metadata;     // text attributes recorded in the file (PNG tEXt, EXR header)

@@ -82,6 +82,8 @@ class PngSource final : public ImageSource {
       case 3: header_.channel_names = {"R", "G", "B"}; break;
       default: header_.channel_names = {"R", "G", "B", "A"}, header_.alpha_channel = 3; break;
     }
+    header_.full_width = header_.width, header_.full_height = header_.height;
+    header_.channel_types.assign(size_t(header_.channels), PixelType::uint8);
     header_.color_space = color_space_of(png, info);
     // Text chunks before the pixels (radiant writes its own there: radiant:partial, ...).
     png_textp text = nullptr;
@@ -95,7 +97,7 @@ class PngSource final : public ImageSource {
 
   // Decodes the whole image; libpng reads the file once, so a second call fails.
   bool read(int channels, PixelType type, void* out) override {
-    if (channels < 1 || channels > header_.channels || type == PixelType::half || done_) {
+    if (channels < 1 || channels > header_.channels || (type != PixelType::float32 && type != PixelType::uint8) || done_) {
       error_ = done_ ? "the pixels were already read" : "unsupported channel count or pixel type";
       return false;
     }
@@ -123,6 +125,12 @@ class PngSource final : public ImageSource {
         else static_cast<uint8_t*>(out)[to] = uint8_t(sixteen_bits_ ? (value * 255 + 32767) / 65535 : value);
       }
     return true;
+  }
+
+  bool read_channels(int begin, int end, PixelType type, void* out) override {
+    if (begin == 0) return read(end, type, out);
+    error_ = "channels after the first cannot be read alone from a PNG";
+    return false;
   }
 
   std::string error() override { return error_.empty() ? "unknown error" : error_; }

@@ -40,7 +40,8 @@ constexpr size_t after_header = 33;
 
 bool writes_as_png(const std::string& path, const ImageWriteSpec& spec) {
   size_t channels = spec.channel_names.size();
-  return spec.type == PixelType::uint8 && (channels == 1 || channels == 3) && lowercase_extension(path) == ".png";
+  return spec.type == PixelType::uint8 && spec.channel_types.empty() && (channels == 1 || channels == 3) &&
+         lowercase_extension(path) == ".png";
 }
 
 std::vector<unsigned char> encode_png(const ImageWriteSpec& spec, const float* pixels, std::string& error) {

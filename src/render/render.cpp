@@ -122,11 +122,12 @@ struct PassRunner {
       }
       add_sample(p, value);
       if (want_aovs) {
+        FilmAovs& a = film.aovs[size_t(y - s.window.y0) * film.width + (x - s.window.x0)];
         for (int k = 0; k < 3; ++k) {
-          p.albedo[k] += first_hit.albedo[k];
-          p.normal[k] += first_hit.normal[k];
+          a.albedo[k].add(first_hit.albedo[k]);
+          a.normal[k].add(first_hit.normal[k]);
         }
-        p.depth += first_hit.depth;
+        a.depth.add(first_hit.depth);
       }
     }
   }
@@ -208,7 +209,8 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
   s = resolve_settings(prepared, options);
   int width = s.window.x1 - s.window.x0, height = s.window.y1 - s.window.y0;
   size_t channels = output_channel_names(options.aovs).size();
-  result.image_memory = MemoryCharge(options.memory, render_image_bytes(width, height, channels),
+  bool want_aovs = !options.aovs.empty();
+  result.image_memory = MemoryCharge(options.memory, render_image_bytes(width, height, channels, want_aovs),
                                      prepared.scene->source_path + ": a " + std::to_string(width) + "x" +
                                          std::to_string(height) + " render with " + std::to_string(channels) +
                                          " channels (film, AOVs and output image)");
@@ -222,7 +224,9 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
                                 prepared.scene->source_path + ": the materials prepared for shading");
   RenderContext ctx = make_context(prepared, s, lights, options);
 
-  result.film = make_film(width, height);
+  result.film = make_film(width, height, want_aovs);
+  result.film.x = s.window.x0, result.film.y = s.window.y0;
+  result.film.full_width = s.width, result.film.full_height = s.height;
   tbb::enumerable_thread_specific<RayCounts> counts;
   auto start = Clock::now();
   bool adaptive = options.noise_threshold > 0, timed = options.time_limit_seconds > 0;
@@ -234,19 +238,20 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
         start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limit)));
   }
   uint64_t pixels = uint64_t(width) * uint64_t(height);
-  ProgressMeter progress(options.progress && !options.quiet, pixels * uint64_t(s.spp), stop.deadline);
+  ProgressMeter progress(options.progress && !options.quiet, pixels * uint64_t(s.samples.end - s.samples.begin),
+                         stop.deadline);
   PassRunner runner{ctx, s, select_integrator(s), make_camera_frame(s.camera, s.width, s.height),
-                    !options.aovs.empty(), options.seed, result.film, counts, stop, progress};
+                    want_aovs, options.seed, result.film, counts, stop, progress};
 
   // More threads than TBB's limit (the cores) are not started anyway, and asking prints a warning.
   int cores = tbb::this_task_arena::max_concurrency();
   tbb::task_arena arena(options.threads > 0 ? std::min(options.threads, cores) : cores);
   std::vector<uint8_t> active;
-  uint32_t done = 0, total = uint32_t(s.spp);
+  uint32_t done = s.samples.begin, total = s.samples.end;
   // One pass for a plain render; growing passes when a budget or a noise target may stop early,
   // or when someone watches the image sharpen.
   bool progressive = bool(options.on_pass);
-  uint32_t pass = (adaptive || timed || progressive) ? std::min<uint32_t>(total, adaptive ? 8u : 1u) : total;
+  uint32_t pass = (adaptive || timed || progressive) ? std::min<uint32_t>(total - done, adaptive ? 8u : 1u) : total - done;
   while (done < total) {
     uint32_t end = std::min(total, done + pass);
     arena.execute([&] { runner.run(done, end, active); });
@@ -282,7 +287,7 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
     } else if (adaptive) {
       pass = std::min<uint32_t>(pass * 2, 64);
     } else if (progressive) {
-      pass = done;  // doubles the samples each pass
+      pass = done - s.samples.begin;  // doubles the samples each pass
     }
   }
   result.stats.render_seconds = seconds_since(start);
@@ -315,10 +320,11 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
   return result;
 }
 
-uint64_t render_image_bytes(int width, int height, size_t channels) {
-  // A FilmPixel, a sample count and an activity byte; the output image's floats; for 8-bit
-  // formats three more floats and three bytes a pixel.
-  uint64_t per_pixel = sizeof(FilmPixel) + sizeof(uint32_t) + 1 + channels * sizeof(float) + 3 * sizeof(float) + 3;
+uint64_t render_image_bytes(int width, int height, size_t channels, bool with_aovs) {
+  // A film pixel (with its AOV sums when kept), a sample count and an activity byte; the output
+  // image's floats; for 8-bit formats three more floats and three bytes a pixel.
+  uint64_t per_pixel =
+      film_pixel_bytes(with_aovs) + sizeof(uint32_t) + 1 + channels * sizeof(float) + 3 * sizeof(float) + 3;
   return saturating_multiply(uint64_t(std::max(width, 0)) * uint64_t(std::max(height, 0)), per_pixel);
 }
 
@@ -344,6 +350,8 @@ OutputImage film_to_image(const Film& film, const std::vector<std::string>& aovs
   OutputImage image;
   image.width = film.width;
   image.height = film.height;
+  image.x = film.x, image.y = film.y;
+  image.full_width = film.full_width, image.full_height = film.full_height;
   image.channels = output_channel_names(aovs);
   size_t stride = image.channels.size();
   image.pixels.resize(size_t(film.width) * film.height * stride);
@@ -353,12 +361,14 @@ OutputImage film_to_image(const Film& film, const std::vector<std::string>& aovs
     color3 mean = pixel_mean(p);
     *out++ = mean.x, *out++ = mean.y, *out++ = mean.z;
     double n = p.samples ? double(p.samples) : 1.0;
+    static const FilmAovs no_aovs;  // a film made without AOV sums gives black AOVs
+    const FilmAovs& a = film.aovs.empty() ? no_aovs : film.aovs[i];
     for (const std::string& aov : aovs) {
-      if (aov == "albedo") for (int k = 0; k < 3; ++k) *out++ = float(p.albedo[k] / n);
+      if (aov == "albedo") for (int k = 0; k < 3; ++k) *out++ = float(a.albedo[k].value() / n);
       else if (aov == "normal") {
-        vec3 normal = normalize(vec3{float(p.normal[0]), float(p.normal[1]), float(p.normal[2])});
+        vec3 normal = normalize(vec3{float(a.normal[0].value()), float(a.normal[1].value()), float(a.normal[2].value())});
         *out++ = normal.x, *out++ = normal.y, *out++ = normal.z;
-      } else if (aov == "depth") *out++ = float(p.depth / n);
+      } else if (aov == "depth") *out++ = float(a.depth.value() / n);
       else if (aov == "variance") {
         color3 v = pixel_mean_variance(p);
         *out++ = v.x, *out++ = v.y, *out++ = v.z;

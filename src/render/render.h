@@ -50,6 +50,7 @@ struct ResolvedSettings {
   uint32_t effects = 0;          // what runs: the scene's effects after --effects
   uint32_t compiled_variant = 0; // the compiled effect set that runs them
   PixelWindow window;
+  SampleRange samples;  // the sample indices of each pixel this render takes, of [0, spp)
 };
 
 // Throws std::invalid_argument for settings that make no sense (names the flag). The camera is
@@ -83,9 +84,9 @@ struct RenderResult {
 RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions& options);
 
 // What a render of `width` x `height` pixels with `channels` output channels allocates per
-// image: the film, the sample counts and activity masks, the output image and its 8-bit
-// conversion for PNG.
-uint64_t render_image_bytes(int width, int height, size_t channels);
+// image: the film (with AOV sums when `with_aovs`), the sample counts and activity masks, the
+// output image and its 8-bit conversion for PNG.
+uint64_t render_image_bytes(int width, int height, size_t channels, bool with_aovs);
 
 // The channels film_to_image makes: R, G, B, then those of each AOV ("albedo.R", "N.X", "Z", ...).
 std::vector<std::string> output_channel_names(const std::vector<std::string>& aovs);

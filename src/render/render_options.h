@@ -28,6 +28,23 @@ struct CameraOverride {
 
 struct PixelWindow {
   int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // half-open [x0, x1) x [y0, y1)
+  bool operator==(const PixelWindow&) const = default;
+};
+
+// Sample indices [begin, end) of every pixel, out of the render's total spp.
+struct SampleRange {
+  uint32_t begin = 0, end = 0;
+  bool operator==(const SampleRange&) const = default;
+};
+
+// How `--shard I/K` cuts the work: the image into K regions, [0, spp) into K ranges, or both.
+enum class ShardSplit { tiles, samples, both };
+
+// Shard `index` of `count` (0 <= index < count), resolved into a window and a sample range once
+// the image size and spp are known (render/shard_plan.h).
+struct ShardSpec {
+  int index = 0, count = 1;
+  ShardSplit split = ShardSplit::tiles;
 };
 
 struct RenderOptions {
@@ -42,6 +59,8 @@ struct RenderOptions {
   std::optional<color3> env_color;
   std::string env_map;
   std::optional<PixelWindow> crop;
+  std::optional<SampleRange> sample_range;  // --sample-range: only these samples of each pixel
+  std::optional<ShardSpec> shard;           // --shard: sets the window and sample range
   std::string effects;          // --effects list, applied to the scene's effect set
   std::vector<std::string> aovs;  // albedo, normal, depth, variance, spp
   double time_limit_seconds = 0;  // 0 = none; at most max_time_limit_seconds

@@ -5,6 +5,7 @@
 
 #include "render/camera.h"
 #include "render/render.h"
+#include "render/shard_plan.h"
 
 namespace radiant {
 
@@ -50,6 +51,37 @@ void check_camera_traceable(const ResolvedSettings& r, const PreparedScene& prep
                              std::to_string(0.5 * prepared.accel->max_ray_coordinate) + ")");
 }
 
+// The pixels and samples this render takes: a shard's piece, or --crop and --sample-range.
+void resolve_piece(const RenderOptions& options, ResolvedSettings& r) {
+  r.window = {0, 0, r.width, r.height};
+  r.samples = {0, uint32_t(r.spp)};
+  if (options.shard) {
+    ShardPiece piece = plan_shard(*options.shard, r.width, r.height, uint32_t(r.spp));
+    r.window = piece.window, r.samples = piece.samples;
+  }
+  if (options.crop) {
+    const PixelWindow& c = *options.crop;
+    if (c.x0 < 0 || c.y0 < 0 || c.x1 > r.width || c.y1 > r.height || c.x0 >= c.x1 || c.y0 >= c.y1)
+      throw std::invalid_argument("--crop must lie inside the " + std::to_string(r.width) + "x" +
+                                  std::to_string(r.height) + " image with x0 < x1 and y0 < y1");
+    r.window = c;
+  }
+  if (options.sample_range) {
+    const SampleRange& range = *options.sample_range;
+    if (range.begin >= range.end || range.end > uint32_t(r.spp))
+      throw std::invalid_argument("--sample-range " + std::to_string(range.begin) + ":" + std::to_string(range.end) +
+                                  " must be A:B with A < B <= the total spp (" + std::to_string(r.spp) + ")");
+    r.samples = range;
+  }
+  bool split_samples = r.samples.begin != 0 || r.samples.end != uint32_t(r.spp);
+  // A pixel's adaptive stop depends on all its earlier samples, which another shard takes.
+  if (split_samples && options.noise_threshold > 0)
+    throw std::invalid_argument("--noise-threshold cannot be split into sample ranges (tiles and --crop can)");
+  // A time limit stops each shard at a different sample: the pieces would not add up to the image.
+  if ((options.shard || options.sample_range) && options.time_limit_seconds > 0)
+    throw std::invalid_argument("--time-limit cannot be used with --shard or --sample-range: shards must be complete");
+}
+
 }  // namespace
 
 ResolvedSettings resolve_settings(const PreparedScene& prepared, const RenderOptions& options) {
@@ -82,14 +114,7 @@ ResolvedSettings resolve_settings(const PreparedScene& prepared, const RenderOpt
   r.effects = options.effects.empty() ? needed : apply_effects_override(needed, options.effects);
   r.compiled_variant = options.effects.find("all") != std::string::npos ? effect_all : smallest_variant(r.effects);
 
-  r.window = {0, 0, r.width, r.height};
-  if (options.crop) {
-    const PixelWindow& c = *options.crop;
-    if (c.x0 < 0 || c.y0 < 0 || c.x1 > r.width || c.y1 > r.height || c.x0 >= c.x1 || c.y0 >= c.y1)
-      throw std::invalid_argument("--crop must lie inside the " + std::to_string(r.width) + "x" +
-                                  std::to_string(r.height) + " image with x0 < x1 and y0 < y1");
-    r.window = c;
-  }
+  resolve_piece(options, r);
   return r;
 }
 

@@ -1,0 +1,92 @@
+// `radiant merge SHARD... -o OUT`: the shards of one render, checked to belong together and to
+// cover the image x [0, spp) exactly once, added exactly and written like `render` writes.
+#include <iostream>
+
+#include "commands.h"
+#include "film/shard_merge.h"
+#include "image/image_io.h"
+#include "option_parsing.h"
+#include "output/output_paths.h"
+#include "output/output_set.h"
+#include "render/render.h"
+
+namespace radiant::cli {
+
+namespace {
+
+const char* merge_examples =
+    "\nExamples:\n"
+    "  radiant merge shard-*.exr -o image.exr\n"
+    "  radiant merge shard-*.exr -o image.png\n"
+    "  radiant merge s0.exr s1.exr -o s01.exr --keep-accum   # one shard again, for a later merge\n";
+
+// Reads, checks and adds the shards; writes `output` (and nothing when anything fails).
+void merge_shards(const std::vector<std::string>& paths, const std::string& output, bool keep_accum, bool quiet,
+                  MemoryBudget& budget) {
+  std::vector<NamedShard> shards;
+  for (const std::string& path : paths) shards.push_back({path, read_shard_info(path)});
+  ShardInfo merged = check_shards(shards, !keep_accum);
+  bool with_aovs = !merged.aovs.empty();
+  int width = merged.x1 - merged.x0, height = merged.y1 - merged.y0;
+  MemoryCharge image_memory(&budget, render_image_bytes(width, height, output_channel_names(merged.aovs).size(), with_aovs),
+                            output + ": the merged " + std::to_string(width) + "x" + std::to_string(height) + " film and image");
+  Film film = make_film(width, height, with_aovs);
+  film.x = merged.x0, film.y = merged.y0, film.full_width = merged.full_width, film.full_height = merged.full_height;
+  for (const NamedShard& shard : shards) add_shard(film, read_shard_film(shard.path, shard.info, &budget).film);
+  OutputSet outputs;
+  if (keep_accum) write_shard(outputs.create(output), film, merged, &budget);
+  else write_image(outputs.create(output), film_to_image(film, merged.aovs));
+  outputs.commit();
+  if (!quiet)
+    std::cerr << "radiant: merged " << shards.size() << " shards into " << output << " (" << width << "x" << height
+              << ", " << merged.spp << " spp)\n";
+}
+
+}  // namespace
+
+int merge_main(int argc, char** argv) {
+  CLI::App app{"Merge shards (radiant render --shard/--sample-range) into the image one render makes."};
+  app.footer(merge_examples);
+  std::vector<std::string> paths;
+  std::string output, max_memory;
+  bool keep_accum = false, quiet = false;
+  app.add_option("SHARD", paths, "Shard EXR files of one render")->required();
+  app.add_option("-o,--output", output, "Output image (.png, .exr, ...), or a shard EXR with --keep-accum")->required();
+  app.add_flag("--keep-accum", keep_accum,
+               "Write the exact accumulators as one shard for a later merge: the shards then need cover only their "
+               "bounding region and sample range, exactly once");
+  app.add_option("--max-memory", max_memory, "Memory cap in GiB (default 1/4 of RAM)");
+  app.add_flag("--quiet,-q", quiet, "Print nothing but errors");
+  std::optional<uint64_t> max_memory_bytes;
+  try {
+    app.parse(argc, argv);
+    if (!max_memory.empty()) max_memory_bytes = parse_memory_limit("--max-memory", max_memory);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);
+    std::cerr << "radiant merge: " << e.what() << "\n";
+    return exit_usage;
+  }
+  MemoryBudget budget = max_memory_bytes ? MemoryBudget(*max_memory_bytes, "--max-memory")
+                                         : MemoryBudget(default_memory_limit(), default_memory_limit_source);
+  try {
+    if (keep_accum && lowercase_extension(output) != ".exr")
+      throw std::invalid_argument("--keep-accum writes a shard EXR: -o must end in .exr (got '" + output + "')");
+    DistinctFiles files;
+    for (const std::string& path : paths) files.add_input({"a shard", path});
+    files.add_output({"-o", output});
+    check_image_output(output);
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "radiant merge: " << e.what() << "\n";
+    return exit_usage;
+  }
+  try {
+    check_output_place(output);
+    merge_shards(paths, output, keep_accum, quiet, budget);
+  } catch (const std::exception& e) {
+    std::cerr << "radiant: " << e.what() << "\n";
+    return exit_failure;
+  }
+  return exit_ok;
+}
+
+}  // namespace radiant::cli

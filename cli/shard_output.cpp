@@ -1,0 +1,49 @@
+#include "shard_output.h"
+
+#include <algorithm>
+#include <filesystem>
+
+#include "accel/embree_isa.h"
+#include "option_parsing.h"
+#include "render/settings_hash.h"
+#include "render/shard_plan.h"
+
+namespace radiant::cli {
+
+bool writes_shard(const RenderOptions& options) { return options.shard || options.sample_range; }
+
+ShardInfo make_shard_info(const PreparedScene& prepared, const ResolvedSettings& s, const RenderOptions& options) {
+  std::vector<std::string> files = prepared.scene->input_files;
+  // An environment map is read when rendering, not loading: it belongs to the scene all the same.
+  if (!s.environment_map.empty() && std::find(files.begin(), files.end(), s.environment_map) == files.end())
+    files.push_back(s.environment_map);
+  ShardInfo info;
+  info.version = RADIANT_VERSION;
+  info.scene_hash = files_hash(files);
+  info.settings_hash = settings_hash(s, options);
+  info.isa = embree_isa_name();
+  info.sampler = sampler_name(s.sampler);
+  info.seed = options.seed;
+  info.spp = uint32_t(s.spp);
+  info.sample_begin = s.samples.begin, info.sample_end = s.samples.end;
+  info.x0 = s.window.x0, info.y0 = s.window.y0, info.x1 = s.window.x1, info.y1 = s.window.y1;
+  info.full_width = s.width, info.full_height = s.height;
+  info.aovs = options.aovs;
+  if (options.shard) {
+    info.shard_index = options.shard->index, info.shard_count = options.shard->count;
+    info.split = split_name(options.shard->split);
+  }
+  return info;
+}
+
+bool shard_already_rendered(const std::string& path, const ShardInfo& expected) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) return false;
+  try {
+    return read_shard_info(path) == expected;
+  } catch (const std::runtime_error&) {
+    return false;  // not a shard of ours (or damaged): rendering it again replaces it
+  }
+}
+
+}  // namespace radiant::cli

@@ -1,0 +1,23 @@
+// What `render --shard`/`--sample-range` write instead of an image: a shard file
+// (film/shard_file.h) whose metadata `radiant merge` and `--skip-existing` check.
+#pragma once
+
+#include <string>
+
+#include "film/shard_file.h"
+#include "render/render.h"
+
+namespace radiant::cli {
+
+// Whether the render writes a shard: --shard or --sample-range was given.
+bool writes_shard(const RenderOptions& options);
+
+// The metadata of the shard that rendering `settings` of `prepared` makes. Hashes the scene's
+// files (throws std::runtime_error naming one that cannot be read).
+ShardInfo make_shard_info(const PreparedScene& prepared, const ResolvedSettings& settings, const RenderOptions& options);
+
+// Whether `path` already holds exactly this shard, complete (--skip-existing). A missing,
+// unreadable, partial or different file is not: the shard is rendered again.
+bool shard_already_rendered(const std::string& path, const ShardInfo& expected);
+
+}  // namespace radiant::cli

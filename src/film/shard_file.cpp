@@ -1,0 +1,271 @@
+#include "film/shard_file.h"
+
+#include <array>
+#include <bit>
+#include <charconv>
+#include <memory>
+#include <utility>
+#include <stdexcept>
+
+#include "image/image_io.h"
+
+namespace radiant {
+
+namespace {
+
+constexpr const char* shard_format = "radiant shard 1";
+constexpr int words_per_sum = 5;  // top bin, high bin in two halves, low bin in two halves
+constexpr int color_channels = 3, count_channels = 1;
+constexpr int max_sums = 13;
+
+// The exact sums of one pixel in channel order: color sums, squares, then the AOV sums.
+struct PixelSums {
+  std::array<ExactSum*, max_sums> sums{};
+  int count = 0;
+};
+
+PixelSums pixel_sums(FilmPixel& p, FilmAovs* a) {
+  PixelSums s;
+  for (ExactSum& sum : p.sum) s.sums[s.count++] = &sum;
+  for (ExactSum& sum : p.sum_squares) s.sums[s.count++] = &sum;
+  if (a) {
+    for (ExactSum& sum : a->albedo) s.sums[s.count++] = &sum;
+    for (ExactSum& sum : a->normal) s.sums[s.count++] = &sum;
+    s.sums[s.count++] = &a->depth;
+  }
+  return s;
+}
+
+std::vector<std::string> channel_names(bool with_aovs) {
+  std::vector<std::string> sums = {"sum.R", "sum.G", "sum.B", "sum2.R", "sum2.G", "sum2.B"};
+  if (with_aovs) sums.insert(sums.end(), {"albedo.R", "albedo.G", "albedo.B", "normal.X", "normal.Y", "normal.Z", "depth.Z"});
+  std::vector<std::string> names = {"R", "G", "B", "samples"};
+  for (const std::string& sum : sums)
+    for (const char* word : {".t", ".h0", ".h1", ".l0", ".l1"}) names.push_back(sum + word);
+  return names;
+}
+
+std::string join(const std::vector<std::string>& words) {
+  std::string text;
+  for (const std::string& word : words) {
+    if (!text.empty()) text += ',';
+    text += word;
+  }
+  return text;
+}
+
+std::vector<std::string> split(const std::string& text) {
+  std::vector<std::string> words;
+  size_t start = 0;
+  while (start < text.size()) {
+    size_t comma = text.find(',', start);
+    if (comma == std::string::npos) comma = text.size();
+    words.push_back(text.substr(start, comma - start));
+    start = comma + 1;
+  }
+  return words;
+}
+
+template <typename Number>
+Number parse_number(const std::string& name, const std::string& text) {
+  Number value{};
+  auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size())
+    throw std::runtime_error("radiant:" + name + " '" + text + "' is not a number");
+  return value;
+}
+
+// "A:B" or "X0,Y0,X1,Y1" as numbers.
+std::vector<int64_t> parse_numbers(const std::string& name, const std::string& text, char separator, size_t count) {
+  std::vector<int64_t> numbers;
+  size_t start = 0;
+  for (size_t i = 0; i < count; ++i) {
+    size_t end = i + 1 < count ? text.find(separator, start) : text.size();
+    if (end == std::string::npos) throw std::runtime_error("radiant:" + name + " '" + text + "' is malformed");
+    numbers.push_back(parse_number<int64_t>(name, text.substr(start, end - start)));
+    start = end + 1;
+  }
+  return numbers;
+}
+
+void check(bool ok, const std::string& path, const std::string& why) {
+  if (!ok) throw std::runtime_error(path + ": " + why);
+}
+
+}  // namespace
+
+ImageMetadata shard_metadata(const ShardInfo& info) {
+  ImageMetadata m = {
+      {"radiant:format", shard_format},
+      {"radiant:version", info.version},
+      {"radiant:scene_hash", info.scene_hash},
+      {"radiant:settings_hash", info.settings_hash},
+      {"radiant:isa", info.isa},
+      {"radiant:sampler", info.sampler},
+      {"radiant:seed", std::to_string(info.seed)},
+      {"radiant:spp", std::to_string(info.spp)},
+      {"radiant:sample_range", std::to_string(info.sample_begin) + ":" + std::to_string(info.sample_end)},
+      {"radiant:region", std::to_string(info.x0) + "," + std::to_string(info.y0) + "," + std::to_string(info.x1) + "," +
+                             std::to_string(info.y1)},
+      {"radiant:full_size", std::to_string(info.full_width) + "x" + std::to_string(info.full_height)},
+      {"radiant:aovs", join(info.aovs)},
+      {"radiant:shard", info.shard_count ? std::to_string(info.shard_index) + "/" + std::to_string(info.shard_count) : ""},
+      {"radiant:split", info.split},
+  };
+  if (!info.partial.empty()) m.emplace_back("radiant:partial", info.partial);
+  return m;
+}
+
+ShardInfo parse_shard_metadata(const ImageMetadata& metadata) {
+  auto find = [&](const std::string& name, bool required) -> std::string {
+    for (const auto& [key, value] : metadata)
+      if (key == "radiant:" + name) return value;
+    if (required) throw std::runtime_error("no radiant:" + name + " attribute");
+    return "";
+  };
+  if (find("format", false) != shard_format)
+    throw std::runtime_error("not a radiant shard (its radiant:format is not '" + std::string(shard_format) + "')");
+  ShardInfo info;
+  info.version = find("version", true);
+  info.scene_hash = find("scene_hash", true);
+  info.settings_hash = find("settings_hash", true);
+  info.isa = find("isa", true);
+  info.sampler = find("sampler", true);
+  info.seed = parse_number<uint32_t>("seed", find("seed", true));
+  info.spp = parse_number<uint32_t>("spp", find("spp", true));
+  if (info.spp > ExactSum::max_terms)
+    throw std::runtime_error("radiant:spp " + std::to_string(info.spp) + " is more than a pixel's sums hold (2^24)");
+  std::vector<int64_t> range = parse_numbers("sample_range", find("sample_range", true), ':', 2);
+  std::vector<int64_t> region = parse_numbers("region", find("region", true), ',', 4);
+  std::vector<int64_t> size = parse_numbers("full_size", find("full_size", true), 'x', 2);
+  if (!(range[0] >= 0 && range[0] < range[1] && range[1] <= info.spp))
+    throw std::runtime_error("radiant:sample_range " + find("sample_range", true) + " is not within [0, spp)");
+  if (!(size[0] >= 1 && size[1] >= 1 && size[0] <= 65536 && size[1] <= 65536))
+    throw std::runtime_error("radiant:full_size " + find("full_size", true) + " is out of range");
+  if (!(region[0] >= 0 && region[1] >= 0 && region[0] < region[2] && region[1] < region[3] && region[2] <= size[0] &&
+        region[3] <= size[1]))
+    throw std::runtime_error("radiant:region " + find("region", true) + " is not inside the full image");
+  info.sample_begin = uint32_t(range[0]), info.sample_end = uint32_t(range[1]);
+  info.x0 = int(region[0]), info.y0 = int(region[1]), info.x1 = int(region[2]), info.y1 = int(region[3]);
+  info.full_width = int(size[0]), info.full_height = int(size[1]);
+  info.aovs = split(find("aovs", false));
+  if (std::string shard = find("shard", false); !shard.empty()) {
+    std::vector<int64_t> index = parse_numbers("shard", shard, '/', 2);
+    if (!(index[0] >= 0 && index[0] < index[1] && index[1] <= 1 << 20))
+      throw std::runtime_error("radiant:shard '" + shard + "' is not I/K with 0 <= I < K");
+    info.shard_index = int(index[0]), info.shard_count = int(index[1]);
+  }
+  info.split = find("split", false);
+  info.partial = find("partial", false);
+  return info;
+}
+
+void write_shard(TemporaryFile& file, const Film& film, const ShardInfo& info, MemoryBudget* budget) {
+  bool with_aovs = !film.aovs.empty();
+  ImageWriteSpec spec;
+  spec.width = film.width, spec.height = film.height;
+  spec.x = film.x, spec.y = film.y, spec.full_width = film.full_width, spec.full_height = film.full_height;
+  spec.channel_names = channel_names(with_aovs);
+  spec.type = PixelType::float32;
+  spec.channel_types.assign(spec.channel_names.size(), PixelType::uint32);
+  for (int c = 0; c < color_channels; ++c) spec.channel_types[size_t(c)] = PixelType::float32;
+  spec.color_space = "Linear";
+  spec.zip = true;
+  spec.metadata = shard_metadata(info);
+  size_t stride = spec.channel_names.size();
+  MemoryCharge memory(budget, saturating_multiply(film.pixels.size(), stride * sizeof(uint32_t)),
+                      file.target() + ": the shard's channels");
+  std::vector<uint32_t> words(film.pixels.size() * stride);
+  for (size_t i = 0; i < film.pixels.size(); ++i) {
+    uint32_t* out = &words[i * stride];
+    FilmPixel pixel = film.pixels[i];
+    FilmAovs aovs = with_aovs ? film.aovs[i] : FilmAovs{};
+    color3 mean = pixel_mean(pixel);
+    for (int c = 0; c < color_channels; ++c) *out++ = std::bit_cast<uint32_t>(mean[c]);
+    *out++ = pixel.samples;
+    PixelSums sums = pixel_sums(pixel, with_aovs ? &aovs : nullptr);
+    for (int s = 0; s < sums.count; ++s) {
+      const ExactSum& sum = *sums.sums[size_t(s)];
+      uint64_t high = uint64_t(sum.high()), low = uint64_t(sum.low());
+      *out++ = uint32_t(sum.top());
+      *out++ = uint32_t(high), *out++ = uint32_t(high >> 32);
+      *out++ = uint32_t(low), *out++ = uint32_t(low >> 32);
+    }
+  }
+  write_image_file(file, spec, words.data());
+}
+
+ShardInfo read_shard_info(const std::string& path) {
+  std::string error;
+  std::unique_ptr<ImageSource> source = open_image_file(path, error);
+  check(source != nullptr, path, error);
+  const ImageHeader& header = source->header();
+  ShardInfo info;
+  try {
+    info = parse_shard_metadata(header.metadata);
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(path + ": " + e.what());
+  }
+  check(header.x == info.x0 && header.y == info.y0 && header.width == info.x1 - info.x0 &&
+            header.height == info.y1 - info.y0 && header.depth == 1,
+        path, "its data window does not match its radiant:region");
+  check(header.full_x == 0 && header.full_y == 0 && header.full_width == info.full_width &&
+            header.full_height == info.full_height,
+        path, "its display window does not match its radiant:full_size");
+  return info;
+}
+
+LoadedShard read_shard_film(const std::string& path, const ShardInfo& info, MemoryBudget* budget) {
+  std::string error;
+  std::unique_ptr<ImageSource> source = open_image_file(path, error);
+  check(source != nullptr, path, error);
+  const ImageHeader& header = source->header();
+  bool with_aovs = !info.aovs.empty();
+  std::vector<std::string> names = channel_names(with_aovs);
+  // Where each channel radiant needs lies in the file (EXR stores channels sorted by name).
+  std::vector<int> file_channel(names.size());
+  for (size_t n = color_channels; n < names.size(); ++n) {
+    int found = -1;
+    for (size_t c = 0; c < header.channel_names.size(); ++c)
+      if (header.channel_names[c] == names[n]) found = int(c);
+    check(found >= 0, path, "no channel " + names[n]);
+    check(size_t(found) < header.channel_types.size() && header.channel_types[size_t(found)] == PixelType::uint32, path,
+          "channel " + names[n] + " is not stored as uint32");
+    file_channel[n] = found;
+  }
+  int width = info.x1 - info.x0, height = info.y1 - info.y0;
+  // The file read again: it must still be the shard read_shard_info described.
+  check(header.width == width && header.height == height && header.depth == 1, path, "changed while being merged");
+  uint64_t pixels = uint64_t(width) * uint64_t(height);
+  MemoryCharge read_memory(budget, saturating_multiply(pixels, uint64_t(header.channels) * sizeof(uint32_t)),
+                           path + ": the shard's channels");
+  MemoryCharge film_memory(budget, saturating_multiply(pixels, film_pixel_bytes(with_aovs)), path + ": the shard's film");
+  std::vector<uint32_t> words(pixels * size_t(header.channels));
+  check(source->read_channels(0, header.channels, PixelType::uint32, words.data()), path, source->error());
+
+  Film film = make_film(width, height, with_aovs);
+  film.x = info.x0, film.y = info.y0, film.full_width = info.full_width, film.full_height = info.full_height;
+  uint32_t range = info.sample_end - info.sample_begin;
+  for (size_t i = 0; i < film.pixels.size(); ++i) {
+    const uint32_t* in = &words[i * size_t(header.channels)];
+    auto word = [&](size_t name) { return in[file_channel[name]]; };
+    auto place = [&] {
+      return "pixel (" + std::to_string(info.x0 + int(i % size_t(width))) + ", " +
+             std::to_string(info.y0 + int(i / size_t(width))) + ")";
+    };
+    FilmPixel& pixel = film.pixels[i];
+    pixel.samples = word(color_channels);
+    if (pixel.samples > range) check(false, path, place() + " holds more samples than its sample range");
+    PixelSums sums = pixel_sums(pixel, with_aovs ? &film.aovs[i] : nullptr);
+    for (int s = 0; s < sums.count; ++s) {
+      size_t first = color_channels + count_channels + size_t(s) * words_per_sum;
+      int64_t high = int64_t(uint64_t(word(first + 1)) | uint64_t(word(first + 2)) << 32);
+      int64_t low = int64_t(uint64_t(word(first + 3)) | uint64_t(word(first + 4)) << 32);
+      if (!ExactSum::from_state(int(word(first)), high, low, *sums.sums[size_t(s)], pixel.samples))
+        check(false, path, place() + ": channel " + names[first] + " holds a sum no render makes");
+    }
+  }
+  return {std::move(film), std::move(film_memory)};
+}
+
+}  // namespace radiant

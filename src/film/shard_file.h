@@ -1,0 +1,61 @@
+// A shard file: an EXR holding a film's exact accumulators (not its resolved pixels), placed in
+// the full image by its data and display windows, with the metadata `radiant merge` checks.
+// Channels: R, G, B (the mean, as float, for viewers), `samples` (uint32) and, for every exact
+// sum (sum.R, sum2.R, ... and the AOV sums albedo.R, normal.X, depth.Z when kept), five uint32
+// channels: its top bin (.t) and its high and low bins as two 32-bit halves each (.h0 .h1 .l0 .l1).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "film/film.h"
+#include "image/image_io_module.h"
+#include "memory/memory_budget.h"
+#include "output/temporary_file.h"
+
+namespace radiant {
+
+// What a shard says about itself; equal fields of shards that belong together.
+struct ShardInfo {
+  std::string version;        // radiant's
+  std::string scene_hash;     // files_hash of the scene's files
+  std::string settings_hash;  // settings_hash of the render
+  std::string isa;            // embree_isa_name
+  std::string sampler;        // sampler_name
+  uint32_t seed = 0;
+  uint32_t spp = 0;                       // the render's total samples per pixel
+  uint32_t sample_begin = 0, sample_end = 0;  // the samples of each pixel it holds
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;     // its region of the full image, half-open
+  int full_width = 0, full_height = 0;
+  std::vector<std::string> aovs;  // the AOVs of the render's output (merge writes them)
+  int shard_index = 0, shard_count = 0;  // I and K of --shard I/K; K = 0 for --crop/--sample-range
+  std::string split;                     // tiles, samples or both with --shard
+  std::string partial;            // why the render stopped early ("" when complete)
+  bool operator==(const ShardInfo&) const = default;
+};
+
+// The file's text attributes for `info`, and back. parse_shard_metadata throws
+// std::runtime_error naming the attribute that is missing or malformed.
+ImageMetadata shard_metadata(const ShardInfo& info);
+ShardInfo parse_shard_metadata(const ImageMetadata& metadata);
+
+// Writes `film` (its window and AOV sums as made) with `info`'s metadata, charging `budget` for
+// the channels first. Throws like write_image_file, and MemoryLimitError.
+void write_shard(TemporaryFile& file, const Film& film, const ShardInfo& info, MemoryBudget* budget);
+
+// The metadata of the shard at `path`, checked against its windows. Throws std::runtime_error
+// "path: why" for a file that is not a shard radiant can merge.
+ShardInfo read_shard_info(const std::string& path);
+
+// A shard's film and its charge against the budget, held as long as the film.
+struct LoadedShard {
+  Film film;
+  MemoryCharge memory;
+};
+
+// The film of the shard at `path` (with AOV sums when its info lists AOVs), charging `budget`
+// for it and for the read buffer first. Throws std::runtime_error "path: why" (a pixel names
+// itself) and MemoryLimitError.
+LoadedShard read_shard_film(const std::string& path, const ShardInfo& info, MemoryBudget* budget);
+
+}  // namespace radiant

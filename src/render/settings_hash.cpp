@@ -1,0 +1,65 @@
+#include "render/settings_hash.h"
+
+#include <bit>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace radiant {
+
+namespace {
+
+constexpr uint64_t fnv_offset = 0xcbf29ce484222325ull, fnv_prime = 0x100000001b3ull;
+
+uint64_t fnv1a(uint64_t hash, const char* data, size_t size) {
+  for (size_t i = 0; i < size; ++i) hash = (hash ^ uint8_t(data[i])) * fnv_prime;
+  return hash;
+}
+
+std::string hex(uint64_t value) {
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(value));
+  return text;
+}
+
+// Floats by their bits: two settings that print alike but differ in the last bit differ here.
+void put(std::ostream& out, float value) { out << std::bit_cast<uint32_t>(value) << ' '; }
+void put(std::ostream& out, vec3 v) { put(out, v.x), put(out, v.y), put(out, v.z); }
+
+}  // namespace
+
+std::string files_hash(const std::vector<std::string>& paths) {
+  uint64_t hash = fnv_offset;
+  std::vector<char> buffer(1 << 16);
+  for (const std::string& path : paths) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw std::runtime_error(path + ": cannot be read to hash the scene");
+    while (in) {
+      in.read(buffer.data(), std::streamsize(buffer.size()));
+      hash = fnv1a(hash, buffer.data(), size_t(in.gcount()));
+    }
+    if (in.bad()) throw std::runtime_error(path + ": a read failed while hashing the scene");
+  }
+  return hex(hash);
+}
+
+bool sampler_extends(SamplerKind sampler) { return sampler == SamplerKind::sobol || sampler == SamplerKind::random; }
+
+std::string settings_hash(const ResolvedSettings& s, const RenderOptions& options) {
+  std::ostringstream text;
+  text << s.width << ' ' << s.height << ' ' << int(s.mode) << ' ' << s.max_depth << ' ' << int(s.sampler) << ' '
+       << options.seed << ' ' << (sampler_extends(s.sampler) ? 0 : s.spp) << ' ';
+  const CameraDesc& c = s.camera;
+  text << int(c.projection) << ' ';
+  put(text, c.position), put(text, c.forward), put(text, c.up);
+  put(text, c.vertical_fov_degrees), put(text, c.ortho_height), put(text, c.aspect);
+  put(text, s.environment_color);
+  text << s.environment_map << '\n' << s.effects << ' ' << s.compiled_variant << ' ';
+  put(text, options.contribution_cutoff);
+  text << (options.aovs.empty() ? "no-aov-sums" : "aov-sums");
+  std::string settings = text.str();
+  return hex(fnv1a(fnv_offset, settings.data(), settings.size()));
+}
+
+}  // namespace radiant

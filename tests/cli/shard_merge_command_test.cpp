@@ -1,0 +1,223 @@
+// `render --shard`/`--sample-range` and `radiant merge`: any exact cover of the image x [0, spp)
+// merges to the pixels of one render, bit for bit; what cannot merge is refused and writes nothing.
+#include <doctest/doctest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <tuple>
+
+#include "image/image_io.h"
+#include "support/test_support.h"
+
+using namespace radiant;
+using namespace radiant::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
+
+// A scene and the flags of a tiny render of it in one mode.
+struct Case {
+  const char* name;
+  const char* scene;
+  const char* flags;
+};
+const Case cases[] = {
+    {"path", "assets/cornell.gltf", "--mode path --width 12 --height 10 --spp 8 --max-depth 3"},
+    {"naive", "assets/cornell.gltf", "--mode naive --width 12 --height 10 --spp 8 --max-depth 3"},
+    {"whitted", "assets/showcase.scene", "--mode whitted --width 12 --height 10 --spp 4"},
+};
+const char* all_aovs = " --aov albedo,normal,depth,variance,spp";
+
+CommandResult radiant_ok(const std::string& args) {
+  CommandResult r = run_radiant(args + " --quiet");
+  INFO(args);
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  return r;
+}
+
+// Same size, channel names and every float's bits.
+void require_same_pixels(const fs::path& a, const fs::path& b) {
+  TestImage x = read_image(a), y = read_image(b);
+  REQUIRE(x.width == y.width);
+  REQUIRE(x.height == y.height);
+  REQUIRE(x.channel_names == y.channel_names);
+  REQUIRE(x.pixels.size() == y.pixels.size());
+  CHECK(std::memcmp(x.pixels.data(), y.pixels.data(), x.pixels.size() * sizeof(float)) == 0);
+}
+
+ImageHeader header_of(const fs::path& file) {
+  std::string error;
+  auto source = open_image_file(file.string(), error);
+  REQUIRE_MESSAGE(source, error);
+  return source->header();
+}
+
+}  // namespace
+
+TEST_CASE("merge cli: tiles, sample ranges and both merge to a single render's pixels bit for bit, PNG and EXR with all AOVs") {
+  ScratchDir dir("merge-identical");
+  for (const Case& c : cases) {
+    CAPTURE(c.name);
+    std::string scene = quoted(source_path(c.scene)), base = std::string(" ") + c.flags;
+    fs::path single_exr = dir.file(std::string(c.name) + ".exr"), single_png = dir.file(std::string(c.name) + ".png");
+    radiant_ok("render " + scene + " -o " + quoted(single_exr) + base + all_aovs);
+    radiant_ok("render " + scene + " -o " + quoted(single_png) + base);
+    for (const char* split : {"tiles", "samples", "both"}) {
+      CAPTURE(split);
+      std::string shards;
+      for (int i = 0; i < 4; ++i) {
+        fs::path shard = dir.file(std::string(c.name) + "-" + split + "-" + std::to_string(i) + ".exr");
+        radiant_ok("render " + scene + " -o " + quoted(shard) + base + all_aovs + " --shard " + std::to_string(i) +
+                   "/4 --split " + split);
+        shards = quoted(shard) + " " + shards;  // merged in another order than rendered
+      }
+      fs::path merged_exr = dir.file("merged.exr"), merged_png = dir.file("merged.png");
+      radiant_ok("merge " + shards + " -o " + quoted(merged_exr));
+      radiant_ok("merge " + shards + " -o " + quoted(merged_png));
+      require_same_pixels(single_exr, merged_exr);
+      CHECK(read_bytes(single_png) == read_bytes(merged_png));
+    }
+  }
+}
+
+TEST_CASE("merge cli: --keep-accum merges part of the shards into a shard that merges with the rest") {
+  ScratchDir dir("merge-hierarchical");
+  std::string scene = quoted(source_path("assets/cornell.gltf")), base = " --width 12 --height 10 --spp 8 --max-depth 3";
+  fs::path single = dir.file("single.exr");
+  radiant_ok("render " + scene + " -o " + quoted(single) + base + all_aovs);
+  std::string shard[4];
+  for (int i = 0; i < 4; ++i) {
+    shard[i] = quoted(dir.file("s" + std::to_string(i) + ".exr"));
+    radiant_ok("render " + scene + " -o " + shard[i] + base + all_aovs + " --shard " + std::to_string(i) + "/4 --split both");
+  }
+  // --split both of 4: shards 0 and 1 are the two sample ranges of the first tile.
+  fs::path half = dir.file("half.exr"), merged = dir.file("merged.exr");
+  radiant_ok("merge " + shard[1] + " " + shard[0] + " -o " + quoted(half) + " --keep-accum");
+  radiant_ok("merge " + quoted(half) + " " + shard[3] + " " + shard[2] + " -o " + quoted(merged));
+  require_same_pixels(single, merged);
+  // Shards 0 and 3 (a range of each tile) make no region x sample range: nothing to keep.
+  fs::path refused = dir.file("refused.exr");
+  CommandResult r = run_radiant("merge " + shard[0] + " " + shard[3] + " -o " + quoted(refused) + " --keep-accum");
+  CHECK(r.exit_code == 1);
+  CHECK(r.err == "radiant: not covered by any shard: pixels 6,0,12,10 samples 0:4\n");
+  CHECK_FALSE(fs::exists(refused));
+}
+
+TEST_CASE("merge cli: a sobol render of samples 0:4 extended by samples 4:16 of 16 spp equals a 16-spp render; jittered is refused") {
+  ScratchDir dir("merge-extend");
+  std::string scene = quoted(source_path("assets/cornell.gltf")), base = " --width 10 --height 8 --max-depth 2";
+  fs::path single = dir.file("single.exr"), early = dir.file("early.exr"), later = dir.file("later.exr"),
+           merged = dir.file("merged.exr");
+  radiant_ok("render " + scene + " -o " + quoted(single) + base + " --sampler sobol --spp 16");
+  radiant_ok("render " + scene + " -o " + quoted(early) + base + " --sampler sobol --spp 4 --sample-range 0:4");
+  radiant_ok("render " + scene + " -o " + quoted(later) + base + " --sampler sobol --spp 16 --sample-range 4:16");
+  radiant_ok("merge " + quoted(early) + " " + quoted(later) + " -o " + quoted(merged));
+  require_same_pixels(single, merged);
+
+  radiant_ok("render " + scene + " -o " + quoted(early) + base + " --sampler jittered --spp 4 --sample-range 0:4");
+  radiant_ok("render " + scene + " -o " + quoted(later) + base + " --sampler jittered --spp 16 --sample-range 4:16");
+  fs::path refused = dir.file("refused.exr");
+  CommandResult r = run_radiant("merge " + quoted(early) + " " + quoted(later) + " -o " + quoted(refused));
+  CHECK(r.exit_code == 1);
+  CHECK(r.err.find("later.exr: its settings hash") != std::string::npos);
+  CHECK_FALSE(fs::exists(refused));
+}
+
+TEST_CASE("merge cli: missing shards are listed, mismatched ones named, and nothing is written") {
+  ScratchDir dir("merge-refusals");
+  std::string scene = quoted(source_path("assets/cornell.gltf")), base = " --width 8 --height 8 --spp 2 --max-depth 2";
+  for (int i : {0, 2})
+    radiant_ok("render " + scene + " -o " + quoted(dir.file("s" + std::to_string(i) + ".exr")) + base + " --shard " +
+               std::to_string(i) + "/4");
+  fs::path out = dir.file("out.png");
+  CommandResult missing = run_radiant("merge " + quoted(dir.file("s0.exr")) + " " + quoted(dir.file("s2.exr")) + " -o " + quoted(out));
+  CHECK(missing.exit_code == 1);
+  CHECK(missing.err == "radiant: missing: 1,3 (of --shard I/4 --split tiles)\n");
+  CHECK_FALSE(fs::exists(out));
+
+  radiant_ok("render " + scene + " -o " + quoted(dir.file("s1.exr")) + base + " --shard 1/4 --seed 9");
+  radiant_ok("render " + scene + " -o " + quoted(dir.file("s3.exr")) + base + " --shard 3/4");
+  CommandResult mismatched = run_radiant("merge " + quoted(dir.file("s0.exr")) + " " + quoted(dir.file("s1.exr")) + " " +
+                                         quoted(dir.file("s2.exr")) + " " + quoted(dir.file("s3.exr")) + " -o " + quoted(out));
+  CHECK(mismatched.exit_code == 1);
+  CHECK(dir.without_path(mismatched.err).find("radiant: s1.exr: its settings hash") == 0);
+  CHECK_FALSE(fs::exists(out));
+
+  fs::path plain = dir.file("plain.exr");
+  radiant_ok("render " + scene + " -o " + quoted(plain) + base);
+  CommandResult not_shard = run_radiant("merge " + quoted(plain) + " -o " + quoted(out));
+  CHECK(not_shard.exit_code == 1);
+  CHECK(dir.without_path(not_shard.err) == "radiant: plain.exr: not a radiant shard (its radiant:format is not 'radiant shard 1')\n");
+  CHECK_FALSE(fs::exists(out));
+}
+
+TEST_CASE("render cli: a --crop EXR and a shard carry their region as data window and the full image as display window") {
+  ScratchDir dir("shard-windows");
+  std::string scene = quoted(source_path("assets/cornell.gltf")), base = " --width 16 --height 12 --spp 1 --max-depth 1";
+  fs::path crop = dir.file("crop.exr"), shard = dir.file("shard.exr");
+  radiant_ok("render " + scene + " -o " + quoted(crop) + base + " --crop 2,3,10,7");
+  radiant_ok("render " + scene + " -o " + quoted(shard) + base + " --shard 3/4");
+  for (auto [file, x, y, w, h] : {std::tuple{crop, 2, 3, 8, 4}, {shard, 8, 6, 8, 6}}) {
+    CAPTURE(file);
+    ImageHeader header = header_of(file);
+    CHECK(header.x == x);
+    CHECK(header.y == y);
+    CHECK(header.width == w);
+    CHECK(header.height == h);
+    CHECK(header.full_x == 0);
+    CHECK(header.full_y == 0);
+    CHECK(header.full_width == 16);
+    CHECK(header.full_height == 12);
+  }
+}
+
+TEST_CASE("render cli: --skip-existing leaves a complete matching shard alone and renders a different one again") {
+  ScratchDir dir("shard-skip");
+  std::string scene = quoted(source_path("assets/cornell.gltf")), base = " --width 8 --height 8 --spp 2 --max-depth 1 --shard 1/2";
+  fs::path shard = dir.file("shard.exr");
+  radiant_ok("render " + scene + " -o " + quoted(shard) + base);
+  std::string first = read_bytes(shard);
+  auto written = fs::last_write_time(shard);
+  CommandResult skipped = run_radiant("render " + quoted(source_path("assets/cornell.gltf")) + " -o " + quoted(shard) + base + " --skip-existing");
+  CHECK(skipped.exit_code == 0);
+  CHECK(dir.without_path(skipped.err) == "radiant: shard.exr already holds this shard, complete; skipped\n");
+  CHECK(fs::last_write_time(shard) == written);
+  CommandResult other = run_radiant("render " + scene + " -o " + quoted(shard) + base + " --skip-existing --seed 5");
+  CHECK(other.exit_code == 0);
+  CHECK(other.err.find("skipped") == std::string::npos);
+  CHECK(read_bytes(shard) != first);
+}
+
+TEST_CASE("render cli: splits that cannot be exact are refused as usage errors, writing nothing") {
+  ScratchDir dir("shard-usage");
+  std::string scene = quoted(source_path("assets/cornell.gltf")), base = " --width 8 --height 8 --spp 4";
+  fs::path out = dir.file("out.exr");
+  for (std::string flags : {"--noise-threshold 0.1 --sample-range 0:2", "--noise-threshold 0.1 --shard 0/2 --split samples",
+                            "--time-limit 5 --shard 0/2", "--time-limit 5 --sample-range 0:2", "--shard 0/2 --crop 0,0,4,4",
+                            "--split tiles", "--skip-existing", "--shard 2/2", "--shard 0/9 --split samples",
+                            "--sample-range 3:9"}) {
+    CAPTURE(flags);
+    CommandResult r = run_radiant("render " + scene + " -o " + quoted(out) + base + " " + flags);
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find('\n') == r.err.size() - 1);
+    CHECK_FALSE(fs::exists(out));
+  }
+  CommandResult png = run_radiant("render " + scene + " -o " + quoted(dir.file("out.png")) + base + " --shard 0/2");
+  CHECK(png.exit_code == 2);
+  CHECK(png.err.find("-o must end in .exr") != std::string::npos);
+  // Adaptive sampling splits by tiles: each pixel keeps all its samples in one shard.
+  radiant_ok("render " + scene + " -o " + quoted(out) + base + " --noise-threshold 0.1 --shard 0/2 --split tiles");
+}
+
+TEST_CASE("batch cli: --shard I/K renders render lines I, I+K, ... of the script") {
+  ScratchDir dir("batch-shard");
+  std::string script = "scene " + source_path("assets/first-render.scene").string() + "\n";
+  for (int i = 0; i < 5; ++i) script += "render -o " + dir.file("v" + std::to_string(i) + ".png").string() + " --width 8 --height 8 --spp 1\n";
+  fs::path file = dir.write("views.txt", script);
+  radiant_ok("batch " + quoted(file) + " --shard 1/2");
+  for (int i = 0; i < 5; ++i) CHECK(fs::exists(dir.file("v" + std::to_string(i) + ".png")) == (i % 2 == 1));
+}
