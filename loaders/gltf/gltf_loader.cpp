@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <sstream>
+#include <stdexcept>
 
 #include "file_access.h"
 #include "gltf/gltf_animation.h"
@@ -83,8 +84,16 @@ tinygltf::Model parse(const std::string& path, const std::string& bytes, const L
   std::string rewritten;
   const std::string& document = with_draco_index_views(bytes, binary, rewritten) ? rewritten : bytes;
   const auto* data = reinterpret_cast<const unsigned char*>(document.data());
-  bool ok = binary ? gltf.LoadBinaryFromMemory(&model, &error, &warning, data, unsigned(document.size()), "")
-                   : gltf.LoadASCIIFromString(&model, &error, &warning, document.data(), unsigned(document.size()), "");
+  bool ok = false;
+  try {
+    ok = binary ? gltf.LoadBinaryFromMemory(&model, &error, &warning, data, unsigned(document.size()), "")
+                : gltf.LoadASCIIFromString(&model, &error, &warning, document.data(), unsigned(document.size()), "");
+  } catch (const std::out_of_range& e) {
+    // tinygltf 2.7 follows some indices with an unchecked at(): a primitive's material in a file
+    // without materials escapes as std::out_of_range (found by the glTF fuzzer).
+    throw LoadError(path + ": invalid glTF: an index refers to an element the file does not have (" +
+                    one_line(e.what()) + ")");
+  }
   if (!access.error.empty()) throw LoadError(access.error);
   if (!ok) throw LoadError(path + ": " + (error.empty() ? "invalid glTF" : one_line(error)));
   if (!warning.empty()) scene.warnings.push_back(path + ": " + one_line(warning));
