@@ -12,7 +12,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
 
 const char* sphere_scene = "@sphere\ncenter 0 0 0\nradius 1\nkd 1\n@light point\nposition 0 3 3\n";
 

@@ -9,10 +9,6 @@
 using namespace radiant::test;
 namespace fs = std::filesystem;
 
-namespace {
-std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
-}  // namespace
-
 TEST_CASE("flags: a typo is a usage error suggesting the nearest flags, and nothing is written") {
   ScratchDir dir("flag-typo");
   fs::path scene = dir.write("s.scene", lit_plane_scene);

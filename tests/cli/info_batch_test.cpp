@@ -10,10 +10,6 @@
 using namespace radiant::test;
 namespace fs = std::filesystem;
 
-namespace {
-std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
-}  // namespace
-
 TEST_CASE("info: the showcase reports its shapes, lights by kind, effects with reasons and the auto mode") {
   CommandResult r = run_radiant("info " + quoted(source_path("assets/showcase.scene")) + " --json");
   REQUIRE(r.exit_code == 0);

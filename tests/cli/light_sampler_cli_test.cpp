@@ -11,7 +11,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
 
 // The light sampler the --stats file of a small render of `scene` with `flags` reports.
 std::string chosen_light_sampler(const std::string& scene, const std::string& flags) {

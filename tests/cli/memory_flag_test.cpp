@@ -16,7 +16,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 // A tiny scene and the start of a command that renders it into `dir`.

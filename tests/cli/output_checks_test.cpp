@@ -18,7 +18,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
 
 bool mentions(const CommandResult& r, const std::string& text) { return r.err.find(text) != std::string::npos; }
 

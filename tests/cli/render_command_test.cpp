@@ -29,7 +29,6 @@ normal 0 1 0
 kd 0.6
 )";
 
-std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
 
 }  // namespace
 

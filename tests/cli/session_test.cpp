@@ -15,7 +15,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
 
 // first-render.scene: a camera at (0, 0, 1000) looking down -z with +y up.
 fs::path copy_scene(ScratchDir& dir) {

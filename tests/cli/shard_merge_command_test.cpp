@@ -16,7 +16,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
 
 // A scene and the flags of a tiny render of it in one mode.
 struct Case {

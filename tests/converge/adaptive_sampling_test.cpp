@@ -37,7 +37,6 @@ RenderOptions half_noisy_options(int spp) {
   return options;
 }
 
-std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
 
 }  // namespace
 

@@ -14,7 +14,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
 
 std::vector<std::vector<std::string>> read_csv(const fs::path& file) {
   std::vector<std::vector<std::string>> rows;

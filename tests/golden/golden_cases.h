@@ -74,7 +74,7 @@ inline std::vector<GoldenCase> read_golden_cases() {
   return cases;
 }
 
-inline std::string quoted(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
+using test::quoted;
 
 // `radiant render` arguments of the test render of `golden` for `scene` (the asset itself or a
 // deliberately changed copy), written to `output` with `threads` worker threads.

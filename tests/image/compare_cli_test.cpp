@@ -10,12 +10,12 @@
 
 namespace radiant {
 
+using test::quoted;
 using test::run_radiant;
 using test::ScratchDir;
 
 namespace {
 
-std::string quoted(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
 
 // The number after "key": in a flat JSON text (enough for checking our own output).
 double json_value(const std::string& json, const std::string& key) {

@@ -20,7 +20,6 @@ float shown(float linear, ViewTransform view, float exposure = 0) {
   return display_encode({linear, linear, linear}, {exposure, view}).x;
 }
 
-std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
 
 }  // namespace
 

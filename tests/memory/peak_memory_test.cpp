@@ -23,7 +23,6 @@ constexpr uint64_t slack = 16 * MiB;
 // Keeps a regression from taking the machine down with it; far above every bound checked here.
 constexpr uint64_t address_space_limit = uint64_t(4) << 30;
 
-std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
 
 MeasuredRun measure(const std::string& args) {
   return run_radiant_measured(args, 120, built_with_address_sanitizer ? 0 : address_space_limit);

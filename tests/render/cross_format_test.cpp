@@ -12,7 +12,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
 
 const char* same_camera = " --look-from 0,0,3 --look-at 0,0,0 --up 0,1,0 --fov 40 --width 32 --height 32 --quiet";
 

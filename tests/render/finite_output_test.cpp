@@ -15,7 +15,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
 
 const char* all_aovs = " --aov albedo,normal,depth,variance,spp";
 

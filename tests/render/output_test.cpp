@@ -11,7 +11,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
 
 int channel(const TestImage& img, const std::string& name) {
   auto it = std::find(img.channel_names.begin(), img.channel_names.end(), name);

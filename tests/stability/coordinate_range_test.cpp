@@ -19,7 +19,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
 
 // A lit sphere on a plane; `camera`, `plane_point` and `extra` are spliced into the text.
 std::string scene_text(const std::string& camera, const std::string& plane_point, const std::string& extra = "") {

@@ -73,6 +73,9 @@ void write_texel_bytes(const std::filesystem::path& path, int width, int height,
 // Whole file contents as bytes, for byte-identity checks.
 std::string read_bytes(const std::filesystem::path& file);
 
+// A path as one shell word, for run_radiant's command lines.
+inline std::string quoted(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
+
 // Absolute path of a file in the source tree (e.g. "assets/cornell.gltf").
 std::filesystem::path source_path(const std::string& relative);
 
