@@ -5,21 +5,15 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "support/test_scenes.h"
 #include "support/test_support.h"
 
 using namespace radiant::test;
 namespace fs = std::filesystem;
 
-namespace {
-
-
-const char* sphere_scene = "@sphere\ncenter 0 0 0\nradius 1\nkd 1\n@light point\nposition 0 3 3\n";
-
-}  // namespace
-
 TEST_CASE("camera flags: panoramas and a lens render; their default image shapes follow the projection") {
   ScratchDir dir("camera-flags");
-  fs::path scene = dir.write("s.scene", sphere_scene);
+  fs::path scene = dir.write("s.scene", lit_sphere_scene);
   struct Case {
     std::string flags;
     int width, height;
@@ -40,7 +34,7 @@ TEST_CASE("camera flags: panoramas and a lens render; their default image shapes
 
 TEST_CASE("camera flags: a lens without focus, a lens on a panorama, bad types and blade counts are usage errors") {
   ScratchDir dir("camera-flag-errors");
-  fs::path scene = dir.write("s.scene", sphere_scene);
+  fs::path scene = dir.write("s.scene", lit_sphere_scene);
   fs::path out = dir.file("out.png");
   struct Case {
     std::string flags, message;
@@ -69,17 +63,17 @@ TEST_CASE("camera flags: the .scene camera's lens attributes, and their errors a
   ScratchDir dir("scene-lens");
   fs::path out = dir.file("out.exr");
   std::string camera = "@camera\nposition 0 0 5\nlook-at 0 0 0\n";
-  fs::path good = dir.write("lens.scene", camera + "lens-radius 0.2\nblades 5\n" + sphere_scene);
+  fs::path good = dir.write("lens.scene", camera + "lens-radius 0.2\nblades 5\n" + lit_sphere_scene);
   CommandResult r = run_radiant("render " + quoted(good) + " -o " + quoted(out) + " --width 8 --height 8 --spp 2 --quiet");
   CAPTURE(r.err);
   CHECK(r.exit_code == 0);
   fs::path unfocused = dir.write("unfocused.scene", "@camera\nposition 0 0 5\ndirection 0 0 -1\nlens-radius 0.2\n" +
-                                                        std::string(sphere_scene));
+                                                        std::string(lit_sphere_scene));
   r = run_radiant("render " + quoted(unfocused) + " -o " + quoted(dir.file("u.exr")) + " --spp 1 --quiet");
   CHECK(r.exit_code == 1);
   CHECK(r.err.find("unfocused.scene:4:1: 'lens-radius' needs 'focus-distance' or 'look-at' to focus on\n") !=
         std::string::npos);
-  fs::path two_blades = dir.write("blades.scene", camera + "lens-radius 0.2\nblades 2\n" + sphere_scene);
+  fs::path two_blades = dir.write("blades.scene", camera + "lens-radius 0.2\nblades 2\n" + lit_sphere_scene);
   r = run_radiant("render " + quoted(two_blades) + " -o " + quoted(dir.file("b.exr")) + " --spp 1 --quiet");
   CHECK(r.exit_code == 1);
   CHECK(r.err.find("blades.scene:5:8: 'blades' must be 0 (a round aperture) or 3 to 64\n") != std::string::npos);
@@ -90,28 +84,28 @@ TEST_CASE("camera flags: the .scene camera's lens attributes, and their errors a
 TEST_CASE("camera flags: the .scene camera's panorama attribute sets the projection and the image shape") {
   ScratchDir dir("scene-panorama");
   fs::path equirect = dir.write("e.scene", "@camera\nposition 0 0 5\ndirection 0 0 -1\npanorama equirect\n" +
-                                              std::string(sphere_scene));
+                                              std::string(lit_sphere_scene));
   CommandResult r = run_radiant("render " + quoted(equirect) + " -o " + quoted(dir.file("e.exr")) + " --height 4 --spp 1 --quiet");
   CAPTURE(r.err);
   REQUIRE(r.exit_code == 0);
   CHECK(read_image(dir.file("e.exr")).width == 8);
   fs::path fisheye = dir.write("f.scene", "@camera\nposition 0 0 5\ndirection 0 0 -1\npanorama fisheye\nfisheye-fov 220\n" +
-                                             std::string(sphere_scene));
+                                             std::string(lit_sphere_scene));
   r = run_radiant("render " + quoted(fisheye) + " -o " + quoted(dir.file("f.exr")) + " --height 6 --spp 1 --quiet");
   REQUIRE(r.exit_code == 0);
   CHECK(read_image(dir.file("f.exr")).width == 6);
   // The equirect camera's own 2:1 resolution does not follow it into --camera-type fisheye.
   fs::path sized = dir.write("s.scene", "@camera\nposition 0 0 5\ndirection 0 0 -1\npanorama equirect\nresolution 16 8\n" +
-                                           std::string(sphere_scene));
+                                           std::string(lit_sphere_scene));
   r = run_radiant("render " + quoted(sized) + " -o " + quoted(dir.file("s.exr")) + " --camera-type fisheye --width 6 --spp 1 --quiet");
   REQUIRE(r.exit_code == 0);
   CHECK(read_image(dir.file("s.exr")).height == 6);
-  fs::path bad = dir.write("bad.scene", "@camera\nposition 0 0 5\ndirection 0 0 -1\nfisheye-fov 90\n" + std::string(sphere_scene));
+  fs::path bad = dir.write("bad.scene", "@camera\nposition 0 0 5\ndirection 0 0 -1\nfisheye-fov 90\n" + std::string(lit_sphere_scene));
   r = run_radiant("render " + quoted(bad) + " -o " + quoted(dir.file("b.exr")) + " --spp 1 --quiet");
   CHECK(r.exit_code == 1);
   CHECK(r.err.find("bad.scene:4:1: 'fisheye-fov' needs 'panorama fisheye'\n") != std::string::npos);
   fs::path mixed = dir.write("mixed.scene", "@camera\nposition 0 0 5\ndirection 0 0 -1\nfov 40\npanorama equirect\n" +
-                                               std::string(sphere_scene));
+                                               std::string(lit_sphere_scene));
   r = run_radiant("render " + quoted(mixed) + " -o " + quoted(dir.file("m.exr")) + " --spp 1 --quiet");
   CHECK(r.exit_code == 1);
   CHECK(r.err.find("mixed.scene:5:1: 'panorama' cannot be combined with 'fov'\n") != std::string::npos);

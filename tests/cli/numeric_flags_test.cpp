@@ -5,21 +5,15 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "support/test_scenes.h"
 #include "support/test_support.h"
 
 using namespace radiant::test;
 namespace fs = std::filesystem;
 
-namespace {
-
-
-const char* sphere_scene = "@sphere\ncenter 0 0 0\nradius 1\nkd 1\n@light point\nposition 0 3 3\n";
-
-}  // namespace
-
 TEST_CASE("numeric flags: render refuses NaN, infinities and float overflow, naming the flag") {
   ScratchDir dir("numeric-flags");
-  fs::path scene = dir.write("s.scene", sphere_scene);
+  fs::path scene = dir.write("s.scene", lit_sphere_scene);
   fs::path out = dir.file("out.exr");
   for (std::string flag : {"--noise-threshold nan", "--noise-threshold inf", "--noise-threshold 1e39",
                            "--noise-threshold -nan", "--env-color 1e39,0,0", "--env-color 1,nan,1",
@@ -37,7 +31,7 @@ TEST_CASE("numeric flags: render refuses NaN, infinities and float overflow, nam
 
 TEST_CASE("numeric flags: converge refuses NaN for --target-error and --edge-fraction") {
   ScratchDir dir("numeric-converge");
-  fs::path scene = dir.write("s.scene", sphere_scene);
+  fs::path scene = dir.write("s.scene", lit_sphere_scene);
   for (std::string flag : {"--target-error nan", "--edge-fraction nan", "--target-error 1e39"}) {
     CAPTURE(flag);
     CommandResult r = run_radiant("converge " + quoted(scene) + " --out " + quoted(dir.path) + " " + flag);
@@ -48,7 +42,7 @@ TEST_CASE("numeric flags: converge refuses NaN for --target-error and --edge-fra
 
 TEST_CASE("numeric flags: a batch line with a NaN noise threshold is refused as script:line") {
   ScratchDir dir("numeric-batch");
-  dir.write("s.scene", sphere_scene);
+  dir.write("s.scene", lit_sphere_scene);
   fs::path script = dir.write("views.txt", "scene s.scene\nrender -o a.png --spp 1 --noise-threshold nan\n");
   CommandResult r = run_radiant("batch " + quoted(script));
   CHECK(r.exit_code == 1);

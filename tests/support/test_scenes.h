@@ -18,4 +18,8 @@ inline constexpr const char* closed_sphere_scene =
     "@light point\ncolor 255 255 255\nposition 0 0 0\n"
     "@sphere\ncenter 0 0 0\nradius 10\nkd 1\n";
 
+// A white unit sphere at the origin lit by a point light, seen by the default camera: for tests
+// of command-line flags that need some geometry in view.
+inline constexpr const char* lit_sphere_scene = "@sphere\ncenter 0 0 0\nradius 1\nkd 1\n@light point\nposition 0 3 3\n";
+
 }  // namespace radiant::test
