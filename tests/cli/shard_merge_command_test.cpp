@@ -174,23 +174,6 @@ TEST_CASE("render cli: a --crop EXR and a shard carry their region as data windo
   }
 }
 
-TEST_CASE("render cli: --skip-existing leaves a complete matching shard alone and renders a different one again") {
-  ScratchDir dir("shard-skip");
-  std::string scene = quoted(source_path("assets/cornell.gltf")), base = " --width 8 --height 8 --spp 2 --max-depth 1 --shard 1/2";
-  fs::path shard = dir.file("shard.exr");
-  radiant_ok("render " + scene + " -o " + quoted(shard) + base);
-  std::string first = read_bytes(shard);
-  auto written = fs::last_write_time(shard);
-  CommandResult skipped = run_radiant("render " + quoted(source_path("assets/cornell.gltf")) + " -o " + quoted(shard) + base + " --skip-existing");
-  CHECK(skipped.exit_code == 0);
-  CHECK(dir.without_path(skipped.err) == "radiant: shard.exr already holds this shard, complete; skipped\n");
-  CHECK(fs::last_write_time(shard) == written);
-  CommandResult other = run_radiant("render " + scene + " -o " + quoted(shard) + base + " --skip-existing --seed 5");
-  CHECK(other.exit_code == 0);
-  CHECK(other.err.find("skipped") == std::string::npos);
-  CHECK(read_bytes(shard) != first);
-}
-
 TEST_CASE("render cli: splits that cannot be exact are refused as usage errors, writing nothing") {
   ScratchDir dir("shard-usage");
   std::string scene = quoted(source_path("assets/cornell.gltf")), base = " --width 8 --height 8 --spp 4";
