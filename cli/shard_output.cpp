@@ -28,7 +28,7 @@ ShardInfo make_shard_info(const PreparedScene& prepared, const ResolvedSettings&
   // later run hashes them there before loading anything.
   for (size_t i = 1; i < files.size(); ++i) info.inputs.push_back(resolved_path(files[i]));
   info.settings_hash = settings_hash(s, options);
-  info.isa = embree_isa_name();
+  info.isa = embree_kernels_name();
   info.sampler = sampler_name(s.sampler);
   info.seed = options.seed;
   info.spp = uint32_t(s.spp);

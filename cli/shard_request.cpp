@@ -51,7 +51,7 @@ bool shard_unchanged_before_load(const std::string& output, const std::string& s
   try {
     ShardInfo found = read_shard_info(output);
     if (found.request_hash != request_hash || !found.partial.empty() || found.version != RADIANT_VERSION ||
-        found.isa != embree_isa_name())
+        found.isa != embree_kernels_name())
       return false;
     std::vector<std::string> files = {scene_path};
     files.insert(files.end(), found.inputs.begin(), found.inputs.end());

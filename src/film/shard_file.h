@@ -20,7 +20,7 @@ struct ShardInfo {
   std::string version;        // radiant's
   std::string scene_hash;     // files_hash of the scene's files
   std::string settings_hash;  // settings_hash of the render
-  std::string isa;            // embree_isa_name
+  std::string isa;            // embree_kernels_name: the ISA and the Embree version
   std::string sampler;        // sampler_name
   uint32_t seed = 0;
   uint32_t spp = 0;                       // the render's total samples per pixel
