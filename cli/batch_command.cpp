@@ -2,6 +2,7 @@
 //
 //   # comments and blank lines are ignored
 //   scene assets/cornell.gltf                 # load (relative to the script's folder)
+//   scene shoe.gltf --variant "red shoe"      # glTF: --scene N and --variant NAME choose what loads
 //   render -o views/front.png --spp 16
 //   render -o views/side.png --look-from 600,273,-400 --look-at 278,273,279
 //
@@ -31,6 +32,19 @@ namespace radiant::cli {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+// `scene PATH [--scene N] [--variant NAME]` into `step`. Throws CLI::ParseError.
+void parse_scene_line(const std::vector<std::string>& words, BatchStep& step) {
+  CLI::App app{"scene"};
+  app.add_option("PATH", step.scene, "Scene file")->required();
+  app.add_option("--scene", step.gltf_scene, "glTF scene index")->check(CLI::NonNegativeNumber);
+  app.add_option("--variant", step.material_variant, "glTF material variant by name");
+  parse_arguments(app, words);
+}
+
+}  // namespace
+
 std::vector<BatchStep> parse_script(std::istream& in, const std::string& name, const fs::path& base) {
   std::vector<BatchStep> steps;
   std::string line;
@@ -48,8 +62,8 @@ std::vector<BatchStep> parse_script(std::istream& in, const std::string& name, c
       BatchStep step;
       step.line = number;
       if (words[0] == "scene") {
-        if (words.size() != 2) throw std::invalid_argument("expected 'scene PATH'");
-        step.scene = fs::path(words[1]).is_relative() ? (base / words[1]).string() : words[1];
+        parse_scene_line(words, step);
+        if (fs::path(step.scene).is_relative()) step.scene = (base / step.scene).string();
         have_scene = true;
       } else if (words[0] == "render") {
         if (!have_scene) throw std::invalid_argument("'render' before any 'scene' line");
@@ -84,11 +98,14 @@ struct LoadedScene {
   }
 };
 
-LoadedScene load_batch_scene(const std::string& path, bool allow_external, MemoryBudget& budget) {
+LoadedScene load_batch_scene(const BatchStep& step, bool allow_external, MemoryBudget& budget) {
   auto start = std::chrono::steady_clock::now();
   LoadOptions options;
   options.allow_external_files = allow_external;
   options.budget = &budget;
+  options.gltf_scene = step.gltf_scene;
+  options.material_variant = step.material_variant;
+  const std::string& path = step.scene;
   LoadedScene loaded;
   loaded.path = path;
   uint64_t used_before = budget.used();
@@ -149,7 +166,7 @@ void run_script(const std::vector<BatchStep>& steps, const std::string& script_n
   for (size_t i = 0; i < steps.size(); ++i) {
     const BatchStep& step = steps[i];
     try {
-      if (!step.scene.empty()) scenes.push_back(load_batch_scene(step.scene, settings.allow_external_files, budget));
+      if (!step.scene.empty()) scenes.push_back(load_batch_scene(step, settings.allow_external_files, budget));
       else check_view(scenes.back(), jobs[i]);
     } catch (const std::bad_alloc&) {
       throw at_line(step, out_of_memory_message(step.scene.empty() ? scenes.back().path : step.scene, "loading", budget));
@@ -209,7 +226,8 @@ std::vector<BatchStep> shard_steps(const std::vector<BatchStep>& steps, const Sh
 int batch_main(int argc, char** argv) {
   CLI::App app{"Run a command script: load a scene once, render many views (docs/cli.md)."};
   app.footer(
-      "\nA script has 'scene PATH' lines and 'render -o OUT [render flags]' lines; # starts a comment.\n"
+      "\nA script has 'scene PATH [--scene N] [--variant NAME]' lines and 'render -o OUT [render flags]' lines;\n"
+      "# starts a comment.\n"
       "\nExamples:\n"
       "  radiant batch views.txt\n"
       "  printf 'scene assets/cornell.gltf\\nrender -o a.png --spp 16\\nrender -o b.png --fov 30\\n' | radiant batch -\n"

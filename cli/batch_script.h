@@ -17,6 +17,8 @@ namespace radiant::cli {
 struct BatchStep {
   int line = 0;
   std::string scene;  // non-empty: load this scene
+  int gltf_scene = -1;          // its --scene (glTF scene index), -1: the file's default
+  std::string material_variant;  // its --variant (KHR_materials_variants), "": the default materials
   RenderJob job;      // otherwise: render this
 };
 

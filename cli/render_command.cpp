@@ -11,6 +11,7 @@
 #include "option_parsing.h"
 #include "render_job.h"
 #include "shard_output.h"
+#include "shard_request.h"
 #include "image/image_io.h"
 
 namespace radiant::cli {
@@ -108,6 +109,7 @@ int render_main(int argc, char** argv) {
   options.memory = &budget;
   job.options.memory = &budget;
   job.skip_existing = skip_existing;
+  if (writes_shard(options)) job.shard_request_hash = shard_request_hash(app, scene_path);
   PhaseTimes times;
   const char* doing = "loading";
   try {
@@ -122,6 +124,11 @@ int render_main(int argc, char** argv) {
   } catch (const std::exception& e) {
     std::cerr << "radiant: " << e.what() << "\n";
     return exit_failure;
+  }
+  // A finished array task run again exits here, before the scene is loaded and its BVH built.
+  if (skip_existing && shard_unchanged_before_load(output, scene_path, job.shard_request_hash)) {
+    report_shard_skipped(output, options.quiet);
+    return exit_ok;
   }
   try {
     load_options.allow_external_files = flags.allow_external_files;

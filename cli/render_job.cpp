@@ -77,10 +77,12 @@ void run_render_job(const std::string& scene_path, PreparedScene& prepared, cons
   check_outputs_spare_scene_files(prepared.scene->input_files, render_job_outputs(job));
   prepare_view(prepared, job.options);
   times.build = prepared.build_seconds;
-  if (job.skip_existing &&
-      shard_already_rendered(job.output, make_shard_info(prepared, resolve_settings(prepared, options), options))) {
-    if (!job.options.quiet) std::cerr << "radiant: " << job.output << " already holds this shard, complete; skipped\n";
-    return;
+  if (job.skip_existing) {
+    ShardInfo expected = make_shard_info(prepared, resolve_settings(prepared, options), options, job.shard_request_hash);
+    if (shard_already_rendered(job.output, expected)) {
+      report_shard_skipped(job.output, job.options.quiet);
+      return;
+    }
   }
   if (!job.options.quiet) print_render_notes(scene_path, prepared, resolve_settings(prepared, job.options));
   RenderResult result = render_prepared(prepared, options);
@@ -89,7 +91,7 @@ void run_render_job(const std::string& scene_path, PreparedScene& prepared, cons
   auto write_start = Clock::now();
   OutputSet outputs;
   if (writes_shard(options)) {
-    ShardInfo info = make_shard_info(prepared, result.settings, options);
+    ShardInfo info = make_shard_info(prepared, result.settings, options, job.shard_request_hash);
     if (result.stats.interrupted) info.partial = std::string("interrupted by ") + signal_name(interrupt_signal());
     write_shard(outputs.create(job.output), result.film, info, options.memory);
   } else {

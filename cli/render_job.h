@@ -19,6 +19,7 @@ struct RenderJob {
   std::string format = "png";  // the extension that names the format of `-o -`
   std::optional<uint64_t> max_memory_bytes;  // a batch render line's own --max-memory
   bool skip_existing = false;  // a shard already complete at `output` is not rendered again
+  std::string shard_request_hash;  // of the command line, recorded in a shard (shard_request.h)
 };
 
 // A name whose extension names the image format: the output, or for `-o -` "-.FORMAT".

@@ -48,6 +48,12 @@ RenderJob parse_render_line(std::vector<std::string> words, const fs::path& base
   app.add_option("--crop", flags.crop);
   app.add_option("--noise-threshold", flags.options.noise_threshold)->check(positive_number());
   parse_arguments(app, std::move(words));
+  // A view of a scene already loaded cannot change what was loaded.
+  for (const char* flag : {"--scene", "--variant"})
+    if (app.count(flag))
+      throw std::invalid_argument(std::string(flag) +
+                                  " chooses what is loaded, not a view of it: give it where the scene is loaded "
+                                  "(in a batch script, on the 'scene' line: scene PATH " + flag + " ...)");
   flags.finish();
   job.options = flags.options;
   job.max_memory_bytes = flags.max_memory_bytes;

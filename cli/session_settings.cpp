@@ -16,6 +16,7 @@ std::string owned_by_session(const std::string& name) {
   if (name == "look-from" || name == "look-at" || name == "up") return "use moveto/move and turnto/turn";
   if (name == "max-memory") return "give --max-memory when the session starts";
   if (name == "time-limit") return "not a session setting";
+  if (name == "scene" || name == "variant") return "chooses what is loaded, not a session setting";
   return "";
 }
 

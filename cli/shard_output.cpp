@@ -2,17 +2,20 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <iostream>
 
 #include "accel/embree_isa.h"
 #include "option_parsing.h"
 #include "render/settings_hash.h"
 #include "render/shard_plan.h"
+#include "shard_request.h"
 
 namespace radiant::cli {
 
 bool writes_shard(const RenderOptions& options) { return options.shard || options.sample_range; }
 
-ShardInfo make_shard_info(const PreparedScene& prepared, const ResolvedSettings& s, const RenderOptions& options) {
+ShardInfo make_shard_info(const PreparedScene& prepared, const ResolvedSettings& s, const RenderOptions& options,
+                          const std::string& request_hash) {
   std::vector<std::string> files = prepared.scene->input_files;
   // An environment map is read when rendering, not loading: it belongs to the scene all the same.
   if (!s.environment_map.empty() && std::find(files.begin(), files.end(), s.environment_map) == files.end())
@@ -20,8 +23,12 @@ ShardInfo make_shard_info(const PreparedScene& prepared, const ResolvedSettings&
   ShardInfo info;
   info.version = RADIANT_VERSION;
   info.scene_hash = files_hash(files);
+  info.request_hash = request_hash;
+  // After the scene file itself (which the command line names), where each file was read: a
+  // later run hashes them there before loading anything.
+  for (size_t i = 1; i < files.size(); ++i) info.inputs.push_back(resolved_path(files[i]));
   info.settings_hash = settings_hash(s, options);
-  info.isa = embree_isa_name();
+  info.isa = embree_kernels_name();
   info.sampler = sampler_name(s.sampler);
   info.seed = options.seed;
   info.spp = uint32_t(s.spp);
@@ -40,10 +47,16 @@ bool shard_already_rendered(const std::string& path, const ShardInfo& expected) 
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error)) return false;
   try {
-    return read_shard_info(path) == expected;
+    ShardInfo found = read_shard_info(path);
+    found.request_hash = expected.request_hash;
+    return found == expected;
   } catch (const std::runtime_error&) {
     return false;  // not a shard of ours (or damaged): rendering it again replaces it
   }
+}
+
+void report_shard_skipped(const std::string& output, bool quiet) {
+  if (!quiet) std::cerr << "radiant: " << output << " already holds this shard, complete; skipped\n";
 }
 
 }  // namespace radiant::cli

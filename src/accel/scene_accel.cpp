@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "accel/analytic_shapes.h"
+#include "accel/embree_isa.h"
 #include "scene/coordinate_range.h"
 
 namespace radiant {
@@ -340,7 +341,7 @@ SceneAccel::~SceneAccel() {
 std::unique_ptr<SceneAccel> build_scene_accel(const SceneDesc& scene) {
   auto accel = std::make_unique<SceneAccel>();
   accel->scene = &scene;
-  accel->device = rtcNewDevice(nullptr);
+  accel->device = rtcNewDevice(embree_device_config().c_str());
   if (!accel->device) throw std::runtime_error("cannot create the Embree device");
   rtcSetDeviceErrorFunction(accel->device, record_device_error, &device_error());
   accel->alpha_masks.resize(scene.meshes.size());

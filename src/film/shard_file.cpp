@@ -45,23 +45,20 @@ std::vector<std::string> channel_names(bool with_aovs) {
   return names;
 }
 
-std::string join(const std::vector<std::string>& words) {
+std::string join(const std::vector<std::string>& words, char separator) {
   std::string text;
-  for (const std::string& word : words) {
-    if (!text.empty()) text += ',';
-    text += word;
-  }
+  for (size_t i = 0; i < words.size(); ++i) text += (i ? std::string(1, separator) : "") + words[i];
   return text;
 }
 
-std::vector<std::string> split(const std::string& text) {
+std::vector<std::string> split(const std::string& text, char separator) {
   std::vector<std::string> words;
   size_t start = 0;
   while (start < text.size()) {
-    size_t comma = text.find(',', start);
-    if (comma == std::string::npos) comma = text.size();
-    words.push_back(text.substr(start, comma - start));
-    start = comma + 1;
+    size_t end = text.find(separator, start);
+    if (end == std::string::npos) end = text.size();
+    words.push_back(text.substr(start, end - start));
+    start = end + 1;
   }
   return words;
 }
@@ -108,9 +105,11 @@ ImageMetadata shard_metadata(const ShardInfo& info) {
       {"radiant:region", std::to_string(info.x0) + "," + std::to_string(info.y0) + "," + std::to_string(info.x1) + "," +
                              std::to_string(info.y1)},
       {"radiant:full_size", std::to_string(info.full_width) + "x" + std::to_string(info.full_height)},
-      {"radiant:aovs", join(info.aovs)},
+      {"radiant:aovs", join(info.aovs, ',')},
       {"radiant:shard", info.shard_count ? std::to_string(info.shard_index) + "/" + std::to_string(info.shard_count) : ""},
       {"radiant:split", info.split},
+      {"radiant:request_hash", info.request_hash},
+      {"radiant:inputs", join(info.inputs, '\n')},
   };
   if (!info.partial.empty()) m.emplace_back("radiant:partial", info.partial);
   return m;
@@ -148,7 +147,7 @@ ShardInfo parse_shard_metadata(const ImageMetadata& metadata) {
   info.sample_begin = uint32_t(range[0]), info.sample_end = uint32_t(range[1]);
   info.x0 = int(region[0]), info.y0 = int(region[1]), info.x1 = int(region[2]), info.y1 = int(region[3]);
   info.full_width = int(size[0]), info.full_height = int(size[1]);
-  info.aovs = split(find("aovs", false));
+  info.aovs = split(find("aovs", false), ',');
   if (std::string shard = find("shard", false); !shard.empty()) {
     std::vector<int64_t> index = parse_numbers("shard", shard, '/', 2);
     if (!(index[0] >= 0 && index[0] < index[1] && index[1] <= 1 << 20))
@@ -157,6 +156,8 @@ ShardInfo parse_shard_metadata(const ImageMetadata& metadata) {
   }
   info.split = find("split", false);
   info.partial = find("partial", false);
+  info.request_hash = find("request_hash", false);
+  info.inputs = split(find("inputs", false), '\n');
   return info;
 }
 

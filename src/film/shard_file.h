@@ -20,7 +20,7 @@ struct ShardInfo {
   std::string version;        // radiant's
   std::string scene_hash;     // files_hash of the scene's files
   std::string settings_hash;  // settings_hash of the render
-  std::string isa;            // embree_isa_name
+  std::string isa;            // embree_kernels_name: the ISA and the Embree version
   std::string sampler;        // sampler_name
   uint32_t seed = 0;
   uint32_t spp = 0;                       // the render's total samples per pixel
@@ -31,6 +31,11 @@ struct ShardInfo {
   int shard_index = 0, shard_count = 0;  // I and K of --shard I/K; K = 0 for --crop/--sample-range
   std::string split;                     // tiles, samples or both with --shard
   std::string partial;            // why the render stopped early ("" when complete)
+  // What --skip-existing checks before loading the scene (cli/shard_request.h): a hash of the
+  // command line that made the shard, and the files the render read after the scene file itself
+  // (absolute, symlinks resolved), whose bytes with the scene file's make scene_hash.
+  std::string request_hash;
+  std::vector<std::string> inputs;
   bool operator==(const ShardInfo&) const = default;
 };
 

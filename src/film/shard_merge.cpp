@@ -136,6 +136,7 @@ ShardInfo check_shards(const std::vector<NamedShard>& shards, bool whole_image) 
   merged.x0 = int(whole.lo[0]), merged.y0 = int(whole.lo[1]), merged.x1 = int(whole.hi[0]), merged.y1 = int(whole.hi[1]);
   merged.sample_begin = uint32_t(whole.lo[2]), merged.sample_end = uint32_t(whole.hi[2]);
   merged.shard_index = 0, merged.shard_count = 0, merged.split.clear();
+  merged.request_hash.clear();  // no one command line made it
   return merged;
 }
 

@@ -55,7 +55,7 @@ void write_image(TemporaryFile& file, const OutputImage& image) {
 
 bool is_float_format(const std::string& path) {
   std::string ext = lowercase_extension(path);
-  return ext == ".exr" || ext == ".hdr" || ext == ".pfm";
+  return ext == ".exr" || ext == ".hdr";
 }
 
 float linear_to_srgb(float v) {

@@ -24,7 +24,8 @@ struct OutputImage {
   bool half = false;          // float formats: 16-bit half floats instead of 32-bit
 };
 
-// True for formats that store linear floating point (EXR, HDR, PFM, TIFF float is not chosen).
+// True for the formats radiant writes as linear floating point: EXR and HDR (TIFF float is not
+// chosen; PFM has no writer in OpenImageIO 2.4).
 bool is_float_format(const std::string& path);
 
 // Checks, before any work, that an image can be written to `path`: its extension names a format

@@ -44,6 +44,8 @@ std::string files_hash(const std::vector<std::string>& paths) {
   return hex(hash);
 }
 
+std::string text_hash(const std::string& text) { return hex(fnv1a(fnv_offset, text.data(), text.size())); }
+
 bool sampler_extends(SamplerKind sampler) { return sampler == SamplerKind::sobol || sampler == SamplerKind::random; }
 
 std::string settings_hash(const ResolvedSettings& s, const RenderOptions& options) {
@@ -58,8 +60,7 @@ std::string settings_hash(const ResolvedSettings& s, const RenderOptions& option
   text << s.environment_map << '\n' << s.effects << ' ' << s.compiled_variant << ' ';
   put(text, options.contribution_cutoff);
   text << (options.aovs.empty() ? "no-aov-sums" : "aov-sums");
-  std::string settings = text.str();
-  return hex(fnv1a(fnv_offset, settings.data(), settings.size()));
+  return text_hash(text.str());
 }
 
 }  // namespace radiant

@@ -14,6 +14,9 @@ namespace radiant {
 // that cannot be read.
 std::string files_hash(const std::vector<std::string>& paths);
 
+// FNV-1a over `text`'s bytes; 16 hex digits.
+std::string text_hash(const std::string& text);
+
 // 16 hex digits over the settings a shard's pixels depend on, exactly (floats by their bits):
 // size, mode, depth, sampler, seed, camera, environment, effects, the AOV sums kept, and the
 // total spp when the sampler's strata depend on it (grid, jittered). Not the window or the sample

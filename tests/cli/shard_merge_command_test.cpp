@@ -4,8 +4,10 @@
 
 #include <cstring>
 #include <filesystem>
+#include <sstream>
 #include <string>
 #include <tuple>
+#include <vector>
 
 #include "image/image_io.h"
 #include "support/test_support.h"
@@ -38,6 +40,25 @@ CommandResult radiant_ok(const std::string& args) {
   return r;
 }
 
+// The words of `text`, split at spaces.
+std::vector<std::string> words_of(const std::string& text) {
+  std::vector<std::string> words;
+  std::istringstream in(text);
+  for (std::string word; in >> word;) words.push_back(word);
+  return words;
+}
+
+// Runs `words` (a command and its arguments) in this process, quietly; it must succeed.
+void in_process_ok(std::vector<std::string> words) {
+  words.push_back("--quiet");
+  CommandResult r = run_radiant_in_process(words);
+  std::string line;
+  for (const std::string& word : words) line += word + " ";
+  INFO(line);
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+}
+
 // Same size, channel names and every float's bits.
 void require_same_pixels(const fs::path& a, const fs::path& b) {
   TestImage x = read_image(a), y = read_image(b);
@@ -58,25 +79,34 @@ ImageHeader header_of(const fs::path& file) {
 }  // namespace
 
 TEST_CASE("merge cli: tiles, sample ranges and both merge to a single render's pixels bit for bit, PNG and EXR with all AOVs") {
+  // 3 modes x (2 single renders + 3 splits x (4 shards + 2 merges)): 60 commands, run in this
+  // process (the commands' own functions), where a process each cost a minute. The other tests
+  // here run the executable.
   ScratchDir dir("merge-identical");
   for (const Case& c : cases) {
     CAPTURE(c.name);
-    std::string scene = quoted(source_path(c.scene)), base = std::string(" ") + c.flags;
-    fs::path single_exr = dir.file(std::string(c.name) + ".exr"), single_png = dir.file(std::string(c.name) + ".png");
-    radiant_ok("render " + scene + " -o " + quoted(single_exr) + base + all_aovs);
-    radiant_ok("render " + scene + " -o " + quoted(single_png) + base);
+    std::vector<std::string> base = {source_path(c.scene).string()};
+    for (const std::string& word : words_of(c.flags)) base.push_back(word);
+    auto with = [&](std::vector<std::string> words, const std::vector<std::string>& more) {
+      words.insert(words.end(), more.begin(), more.end());
+      return words;
+    };
+    std::vector<std::string> aovs = {"--aov", "albedo,normal,depth,variance,spp"};
+    std::string single_exr = dir.file(std::string(c.name) + ".exr"), single_png = dir.file(std::string(c.name) + ".png");
+    in_process_ok(with(with({"render"}, base), with({"-o", single_exr}, aovs)));
+    in_process_ok(with(with({"render"}, base), {"-o", single_png}));
     for (const char* split : {"tiles", "samples", "both"}) {
       CAPTURE(split);
-      std::string shards;
+      std::vector<std::string> shards;
       for (int i = 0; i < 4; ++i) {
-        fs::path shard = dir.file(std::string(c.name) + "-" + split + "-" + std::to_string(i) + ".exr");
-        radiant_ok("render " + scene + " -o " + quoted(shard) + base + all_aovs + " --shard " + std::to_string(i) +
-                   "/4 --split " + split);
-        shards = quoted(shard) + " " + shards;  // merged in another order than rendered
+        std::string shard = dir.file(std::string(c.name) + "-" + split + "-" + std::to_string(i) + ".exr");
+        in_process_ok(with(with({"render"}, base),
+                           with({"-o", shard, "--shard", std::to_string(i) + "/4", "--split", split}, aovs)));
+        shards.insert(shards.begin(), shard);  // merged in another order than rendered
       }
-      fs::path merged_exr = dir.file("merged.exr"), merged_png = dir.file("merged.png");
-      radiant_ok("merge " + shards + " -o " + quoted(merged_exr));
-      radiant_ok("merge " + shards + " -o " + quoted(merged_png));
+      std::string merged_exr = dir.file("merged.exr"), merged_png = dir.file("merged.png");
+      in_process_ok(with(with({"merge"}, shards), {"-o", merged_exr}));
+      in_process_ok(with(with({"merge"}, shards), {"-o", merged_png}));
       require_same_pixels(single_exr, merged_exr);
       CHECK(read_bytes(single_png) == read_bytes(merged_png));
     }
@@ -172,23 +202,6 @@ TEST_CASE("render cli: a --crop EXR and a shard carry their region as data windo
     CHECK(header.full_width == 16);
     CHECK(header.full_height == 12);
   }
-}
-
-TEST_CASE("render cli: --skip-existing leaves a complete matching shard alone and renders a different one again") {
-  ScratchDir dir("shard-skip");
-  std::string scene = quoted(source_path("assets/cornell.gltf")), base = " --width 8 --height 8 --spp 2 --max-depth 1 --shard 1/2";
-  fs::path shard = dir.file("shard.exr");
-  radiant_ok("render " + scene + " -o " + quoted(shard) + base);
-  std::string first = read_bytes(shard);
-  auto written = fs::last_write_time(shard);
-  CommandResult skipped = run_radiant("render " + quoted(source_path("assets/cornell.gltf")) + " -o " + quoted(shard) + base + " --skip-existing");
-  CHECK(skipped.exit_code == 0);
-  CHECK(dir.without_path(skipped.err) == "radiant: shard.exr already holds this shard, complete; skipped\n");
-  CHECK(fs::last_write_time(shard) == written);
-  CommandResult other = run_radiant("render " + scene + " -o " + quoted(shard) + base + " --skip-existing --seed 5");
-  CHECK(other.exit_code == 0);
-  CHECK(other.err.find("skipped") == std::string::npos);
-  CHECK(read_bytes(shard) != first);
 }
 
 TEST_CASE("render cli: splits that cannot be exact are refused as usage errors, writing nothing") {

@@ -23,6 +23,7 @@ ShardInfo window_info() {
   info.x0 = 5, info.y0 = 1, info.x1 = 8, info.y1 = 3, info.full_width = 10, info.full_height = 4;
   info.aovs = {"albedo", "variance"};
   info.shard_index = 1, info.shard_count = 4, info.split = "both";
+  info.request_hash = "0011223344556677", info.inputs = {"/scenes/a b,c.bin", "/scenes/tex.png"};
   return info;
 }
 

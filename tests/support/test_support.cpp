@@ -8,11 +8,13 @@
 #include <atomic>
 #include <chrono>
 #include <fstream>
+#include <iostream>
 #include <random>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
 
+#include "commands.h"
 #include "image/image_io.h"
 #include "output/output_set.h"
 
@@ -66,6 +68,23 @@ CommandResult run_radiant(const std::string& args, const std::string& stdin_text
   r.out = read_bytes(out);
   r.err = read_bytes(err);
   return r;
+}
+
+CommandResult run_radiant_in_process(const std::vector<std::string>& words) {
+  std::vector<std::string> arguments = words;
+  std::vector<char*> argv;
+  for (std::string& word : arguments) argv.push_back(word.data());
+  argv.push_back(nullptr);
+  std::ostringstream err;
+  struct RestoreCerr {
+    std::streambuf* saved;
+    ~RestoreCerr() { std::cerr.rdbuf(saved); }
+  } restore{std::cerr.rdbuf(err.rdbuf())};
+  CommandResult result;
+  for (const cli::Command& command : cli::commands())
+    if (!words.empty() && words[0] == command.name) result.exit_code = command.run(int(words.size()), argv.data());
+  result.err = err.str();
+  return result;
 }
 
 MeasuredRun run_radiant_measured(const std::string& args, int timeout_seconds, uint64_t address_space_limit) {

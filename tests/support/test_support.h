@@ -32,6 +32,13 @@ struct CommandResult {
 CommandResult run_radiant(const std::string& args, const std::string& stdin_text = "",
                           int timeout_seconds = 120);
 
+// Runs the command `words[0]` of radiant (render, merge, ...) with the words after it in this
+// process, through the same function cli/main.cpp calls, with its standard error captured. For
+// tests of many tiny runs, where a child process each (and loading OpenImageIO's ~265 libraries,
+// a quarter second) would be most of the test's time; what only a process shows (exit codes at
+// the shell, signals, files left behind) stays with run_radiant.
+CommandResult run_radiant_in_process(const std::vector<std::string>& words);
+
 // A run of radiant in a child process of its own, with that child's peak resident memory.
 struct MeasuredRun {
   CommandResult result;
