@@ -16,6 +16,7 @@ namespace radiant::cli {
 
 struct BatchStep {
   int line = 0;
+  std::string text;   // the line as written, without its comment
   std::string scene;  // non-empty: load this scene
   RenderJob job;      // otherwise: render this
 };

@@ -19,6 +19,8 @@ struct RenderJob {
   std::string format = "png";  // the extension that names the format of `-o -`
   std::optional<uint64_t> max_memory_bytes;  // a batch render line's own --max-memory
   bool skip_existing = false;  // a shard already complete at `output` is not rendered again
+  std::string command_line;    // what asked for this render, recorded in the image
+  bool write_metadata = true;  // --no-metadata: no record in the image, for identical bytes
 };
 
 // A name whose extension names the image format: the output, or for `-o -` "-.FORMAT".

@@ -2,7 +2,6 @@
 // merges to the pixels of one render, bit for bit; what cannot merge is refused and writes nothing.
 #include <doctest/doctest.h>
 
-#include <cstring>
 #include <filesystem>
 #include <string>
 #include <tuple>
@@ -38,16 +37,6 @@ CommandResult radiant_ok(const std::string& args) {
   return r;
 }
 
-// Same size, channel names and every float's bits.
-void require_same_pixels(const fs::path& a, const fs::path& b) {
-  TestImage x = read_image(a), y = read_image(b);
-  REQUIRE(x.width == y.width);
-  REQUIRE(x.height == y.height);
-  REQUIRE(x.channel_names == y.channel_names);
-  REQUIRE(x.pixels.size() == y.pixels.size());
-  CHECK(std::memcmp(x.pixels.data(), y.pixels.data(), x.pixels.size() * sizeof(float)) == 0);
-}
-
 ImageHeader header_of(const fs::path& file) {
   std::string error;
   auto source = open_image_file(file.string(), error);
@@ -67,18 +56,36 @@ TEST_CASE("merge cli: tiles, sample ranges and both merge to a single render's p
     radiant_ok("render " + scene + " -o " + quoted(single_png) + base);
     for (const char* split : {"tiles", "samples", "both"}) {
       CAPTURE(split);
-      std::string shards;
+      std::string shards, shards_words;  // quoted for the shell, and as the merged image records them
+      std::vector<fs::path> shard_files;
       for (int i = 0; i < 4; ++i) {
         fs::path shard = dir.file(std::string(c.name) + "-" + split + "-" + std::to_string(i) + ".exr");
         radiant_ok("render " + scene + " -o " + quoted(shard) + base + all_aovs + " --shard " + std::to_string(i) +
                    "/4 --split " + split);
         shards = quoted(shard) + " " + shards;  // merged in another order than rendered
+        shards_words = shard.string() + (i ? " " : "") + shards_words;
+        shard_files.push_back(shard);
       }
       fs::path merged_exr = dir.file("merged.exr"), merged_png = dir.file("merged.png");
       radiant_ok("merge " + shards + " -o " + quoted(merged_exr));
       radiant_ok("merge " + shards + " -o " + quoted(merged_png));
-      require_same_pixels(single_exr, merged_exr);
-      CHECK(read_bytes(single_png) == read_bytes(merged_png));
+      CHECK(same_pixels(single_exr, merged_exr));
+      CHECK(same_pixels(single_png, merged_png));
+      // The merged image records the render the shards made together.
+      for (const char* field : {"radiant:scene", "radiant:mode", "radiant:sampler", "radiant:spp", "radiant:seed"})
+        CHECK(image_attribute(merged_png, field) == image_attribute(single_png, field));
+      CHECK(image_attribute(merged_png, "radiant:shards") == "4");
+      CHECK(image_attribute(merged_png, "Comment") == "radiant merge " + shards_words + " -o " + merged_png.string() + " --quiet");
+      CHECK(image_attribute(merged_png, "radiant:shard_command").rfind("radiant render ", 0) == 0);
+      double seconds = 0;
+      uint64_t rays = 0;
+      for (const fs::path& shard : shard_files) {
+        seconds += std::stod(image_attribute(shard, "radiant:render_seconds"));
+        rays += std::stoull(image_attribute(shard, "radiant:rays"));
+      }
+      CHECK(std::stod(image_attribute(merged_png, "radiant:render_seconds")) == doctest::Approx(seconds).epsilon(1e-5));
+      CHECK(std::stoull(image_attribute(merged_png, "radiant:rays")) == rays);
+      CHECK(image_attribute(merged_png, "radiant:rays") == image_attribute(single_png, "radiant:rays"));
     }
   }
 }
@@ -97,7 +104,7 @@ TEST_CASE("merge cli: --keep-accum merges part of the shards into a shard that m
   fs::path half = dir.file("half.exr"), merged = dir.file("merged.exr");
   radiant_ok("merge " + shard[1] + " " + shard[0] + " -o " + quoted(half) + " --keep-accum");
   radiant_ok("merge " + quoted(half) + " " + shard[3] + " " + shard[2] + " -o " + quoted(merged));
-  require_same_pixels(single, merged);
+  CHECK(same_pixels(single, merged));
   // Shards 0 and 3 (a range of each tile) make no region x sample range: nothing to keep.
   fs::path refused = dir.file("refused.exr");
   CommandResult r = run_radiant("merge " + shard[0] + " " + shard[3] + " -o " + quoted(refused) + " --keep-accum");
@@ -115,7 +122,7 @@ TEST_CASE("merge cli: a sobol render of samples 0:4 extended by samples 4:16 of 
   radiant_ok("render " + scene + " -o " + quoted(early) + base + " --sampler sobol --spp 4 --sample-range 0:4");
   radiant_ok("render " + scene + " -o " + quoted(later) + base + " --sampler sobol --spp 16 --sample-range 4:16");
   radiant_ok("merge " + quoted(early) + " " + quoted(later) + " -o " + quoted(merged));
-  require_same_pixels(single, merged);
+  CHECK(same_pixels(single, merged));
 
   radiant_ok("render " + scene + " -o " + quoted(early) + base + " --sampler jittered --spp 4 --sample-range 0:4");
   radiant_ok("render " + scene + " -o " + quoted(later) + base + " --sampler jittered --spp 16 --sample-range 4:16");
