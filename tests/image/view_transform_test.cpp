@@ -74,8 +74,9 @@ TEST_CASE("view transforms: the flags, the .scene setting, 16-bit PNG and half E
   REQUIRE(run_radiant(render + quoted(dir.file("linear.png")) + " --view linear").exit_code == 0);
   REQUIRE(run_radiant(render + quoted(dir.file("dark.png")) + " --view linear --exposure -1").exit_code == 0);
   REQUIRE(run_radiant(render + quoted(dir.file("deep.png")) + " --bit-depth 16").exit_code == 0);
-  REQUIRE(run_radiant(render + quoted(dir.file("half.exr")) + " --half").exit_code == 0);
-  REQUIRE(run_radiant(render + quoted(dir.file("full.exr"))).exit_code == 0);
+  // No metadata: the sizes compare the pixels' storage, not the command lines and times recorded.
+  REQUIRE(run_radiant(render + quoted(dir.file("half.exr")) + " --half --no-metadata").exit_code == 0);
+  REQUIRE(run_radiant(render + quoted(dir.file("full.exr")) + " --no-metadata").exit_code == 0);
   float linear = center(dir.file("full.exr"));
   REQUIRE(linear > 0.05f);
   REQUIRE(linear < 0.9f);
