@@ -24,7 +24,8 @@ SCENES = [
 
 def command(radiant, scene, mode, size, spp, out, effects):
     cmd = [radiant, "render", scene, "-o", out, "--mode", mode, "--width", str(size), "--height", str(size),
-           "--spp", str(spp), "--threads", "1", "--quiet"]
+           "--spp", str(spp), "--threads", "1", "--quiet",
+           "--no-metadata"]  # the command lines differ (--effects): without a record the bytes must not
     if effects:
         cmd.append("--effects=" + effects)
     return cmd

@@ -21,6 +21,7 @@
 #include <sstream>
 
 #include "batch_script.h"
+#include "command_line.h"
 #include "commands.h"
 #include "lights/light_table.h"
 #include "load_scene.h"
@@ -61,6 +62,8 @@ std::vector<BatchStep> parse_script(std::istream& in, const std::string& name, c
       if (words.empty()) continue;
       BatchStep step;
       step.line = number;
+      size_t first = line.find_first_not_of(" \t"), last = line.find_last_not_of(" \t\r");
+      step.text = line.substr(first, last + 1 - first);  // words.empty() above: the line has some
       if (words[0] == "scene") {
         parse_scene_line(words, step);
         if (fs::path(step.scene).is_relative()) step.scene = (base / step.scene).string();
@@ -156,7 +159,11 @@ void run_script(const std::vector<BatchStep>& steps, const std::string& script_n
     return std::runtime_error(script_name + ":" + std::to_string(step.line) + ": " + message);
   };
   std::vector<RenderJob> jobs;
-  for (const BatchStep& step : steps) jobs.push_back(settings.adjust_job ? settings.adjust_job(step.job) : step.job);
+  for (const BatchStep& step : steps) {
+    jobs.push_back(settings.adjust_job ? settings.adjust_job(step.job) : step.job);
+    // A shell line that runs the script again, with the line that made the image as its comment.
+    jobs.back().command_line = command_line_text({"batch", script_name}) + " # line " + std::to_string(step.line) + ": " + step.text;
+  }
   MemoryBudget budget = settings.max_memory_bytes ? MemoryBudget(*settings.max_memory_bytes, "--max-memory")
                                                   : MemoryBudget(default_memory_limit(), default_memory_limit_source);
   // Every scene is loaded and every view resolved before the first render: a bad later line

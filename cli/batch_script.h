@@ -16,6 +16,7 @@ namespace radiant::cli {
 
 struct BatchStep {
   int line = 0;
+  std::string text;   // the line as written, without its comment
   std::string scene;  // non-empty: load this scene
   int gltf_scene = -1;          // its --scene (glTF scene index), -1: the file's default
   std::string material_variant;  // its --variant (KHR_materials_variants), "": the default materials

@@ -15,6 +15,7 @@
 #include <new>
 #include <sstream>
 
+#include "command_line.h"
 #include "commands.h"
 #include "converge_report.h"
 #include "interrupts.h"
@@ -307,7 +308,7 @@ void bind_flags(CLI::App& app, ConvergeFlags& flags) {
 // Loads the scene, settles size and modes, runs the ladders and writes the report. Throws
 // std::invalid_argument for settings that contradict each other (usage), else std::exception.
 void run_converge(const std::string& scene_path, ConvergeFlags& flags, std::vector<RenderMode> modes,
-                  const std::vector<int>& ladder) {
+                  const std::vector<int>& ladder, const std::string& command_line) {
   RenderOptions& options = flags.render.options;
   ReportFiles files = report_files(flags);
   check_report_files(files, scene_path, flags);
@@ -351,6 +352,7 @@ void run_converge(const std::string& scene_path, ConvergeFlags& flags, std::vect
   report.target_error = flags.target_error;
   report.title = scene_title(scene_path) + (flags.supersampling ? ": anti-aliasing error at edges against render time"
                                                                 : ": RMSE against render time");
+  report.chart_metadata = converge_chart_metadata(report, command_line, options.seed);
   write_outputs(report, files, options.quiet);
 }
 
@@ -384,7 +386,7 @@ int converge_main(int argc, char** argv) {
   }
   flags.render.options.progress = isatty(STDERR_FILENO) && !flags.render.options.quiet;
   try {
-    run_converge(scene_path, flags, modes, ladder);
+    run_converge(scene_path, flags, modes, ladder, command_line_text(argc, argv));
   } catch (const std::invalid_argument& e) {
     std::cerr << "radiant converge: " << e.what() << "\n";
     return exit_usage;

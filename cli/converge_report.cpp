@@ -1,5 +1,6 @@
 #include "converge_report.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -58,6 +59,36 @@ double time_multiple(const ConvergeSeries& series, const LadderStep& step) {
   return base->seconds > 0 ? step.seconds / base->seconds : 0;
 }
 
+ImageMetadata converge_chart_metadata(const ConvergeReport& report, const std::string& command_line, uint32_t seed) {
+  std::vector<std::string> modes, samplers, spps;
+  auto add = [](std::vector<std::string>& list, const std::string& value) {
+    if (std::find(list.begin(), list.end(), value) == list.end()) list.push_back(value);
+  };
+  double step_seconds = 0, reference_seconds = 0;
+  uint64_t rays = 0;
+  for (const ConvergeSeries& s : report.series)
+    for (const LadderStep& step : s.steps) {
+      add(modes, mode_name(step.mode)), add(samplers, sampler_name(step.sampler)), add(spps, std::to_string(step.spp));
+      step_seconds += step.seconds, rays += step.rays;
+    }
+  for (const ReferenceNote& r : report.references) reference_seconds += r.seconds;
+  auto joined = [](const std::vector<std::string>& list) {
+    std::string text;
+    for (const std::string& item : list) text += (text.empty() ? "" : ",") + item;
+    return text;
+  };
+  return {{"Software", "radiant " RADIANT_VERSION},
+          {"Comment", command_line},
+          {"radiant:scene", report.scene},
+          {"radiant:mode", joined(modes)},
+          {"radiant:sampler", joined(samplers)},
+          {"radiant:spp", joined(spps)},
+          {"radiant:seed", std::to_string(seed)},
+          {"radiant:render_seconds", csv_number(step_seconds + reference_seconds)},
+          {"radiant:rays", std::to_string(rays)},  // the references' are not counted
+          {"radiant:rays_per_second", csv_number(step_seconds > 0 ? double(rays) / step_seconds : 0)}};
+}
+
 std::string converge_csv(const ConvergeReport& report) {
   std::string csv = "series,mode,sampler,spp,seconds,rays,rmse,relative_mse,psnr,edge_rmse,time_multiple\n";
   for (const ConvergeSeries& s : report.series)
@@ -86,6 +117,9 @@ std::string converge_json(const ConvergeReport& report) {
   Json series = Json::array();
   for (const ConvergeSeries& s : report.series) series.push_back(series_json(s));
   j["series"] = series;
+  Json metadata = Json::object();
+  for (const auto& [name, value] : report.chart_metadata) metadata[name] = value;
+  j["metadata"] = metadata;
   return json_text(j);
 }
 

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "converge/convergence.h"
+#include "image/image_io_module.h"
 
 namespace radiant::cli {
 
@@ -35,7 +36,13 @@ struct ConvergeReport {
   double target_error = 0;  // 0 = none
   std::vector<ReferenceNote> references;
   std::vector<ConvergeSeries> series;
+  ImageMetadata chart_metadata;  // what the chart records (converge.json's "metadata")
 };
+
+// What the chart of `report` records about how it was made (docs/cli.md, "Image metadata"): the
+// command line, the scene, the modes, samplers and spp of its steps (comma lists), the seed, the
+// render time of its steps and references summed, and the steps' rays and rays per second.
+ImageMetadata converge_chart_metadata(const ConvergeReport& report, const std::string& command_line, uint32_t seed);
 
 // A step's render time over the time of the series' 1-spp step (its first step without one).
 double time_multiple(const ConvergeSeries& series, const LadderStep& step);

@@ -1,7 +1,9 @@
-// `radiant info SCENE [--json]`: scene statistics, warnings, and the effects it calls for.
+// `radiant info SCENE [--json]`: scene statistics, warnings, and the effects it calls for; and
+// `radiant info IMAGE [--json]`: an image's size, channels and what radiant recorded in it.
 #include <iostream>
 
 #include "commands.h"
+#include "image_info.h"
 #include "json_output.h"
 #include "load_scene.h"
 #include "option_parsing.h"
@@ -65,17 +67,20 @@ void print_info(std::ostream& out, const std::string& path, const SceneDesc& sce
 }  // namespace
 
 int info_main(int argc, char** argv) {
-  CLI::App app{"Scene statistics, warnings, and the effects the scene calls for."};
+  CLI::App app{"Scene statistics, warnings, and the effects the scene calls for; or an image's size, channels and "
+               "the metadata radiant recorded in it (how it was made)."};
   app.footer(
       "\nExamples:\n"
       "  radiant info assets/showcase.scene                  counts, bounds, lights, effects, auto mode\n"
       "  radiant info model.gltf --json | jq .warnings       one JSON object for scripts\n"
       "  radiant info scene.gltf --scene 1                   another glTF scene of the file\n"
-      "  cat room.scene | radiant info -                     a .scene on standard input\n");
+      "  cat room.scene | radiant info -                     a .scene on standard input\n"
+      "  radiant info render.png                             size, channels, and how radiant made it\n"
+      "  radiant info shard-3.exr --json | jq .metadata      the metadata as one JSON object\n");
   std::string scene_path;
   bool json = false, allow_external = false;
   int gltf_scene = -1;
-  app.add_option("SCENE", scene_path, "Scene file, or - for a .scene on standard input")->required();
+  app.add_option("SCENE", scene_path, "Scene file, - for a .scene on standard input, or an image file")->required();
   app.add_flag("--json", json, "Print one JSON object for scripts");
   app.add_option("--scene", gltf_scene, "glTF scene index");
   app.add_flag("--allow-external-files", allow_external, "Let scene files refer to files outside their folder");
@@ -87,6 +92,15 @@ int info_main(int argc, char** argv) {
     return exit_usage;
   }
   try {
+    if (is_image_path(scene_path)) {
+      if (gltf_scene >= 0 || allow_external) {
+        std::cerr << "radiant info: --scene and --allow-external-files are for scene files, not the image '" << scene_path
+                  << "'\n";
+        return exit_usage;
+      }
+      print_image_info(std::cout, scene_path, json);
+      return exit_ok;
+    }
     LoadOptions options;
     options.allow_external_files = allow_external;
     options.gltf_scene = gltf_scene;

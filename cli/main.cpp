@@ -14,7 +14,7 @@ void print_usage(std::ostream& out) {
   out << "radiant " RADIANT_VERSION " — a batch renderer for glTF 2.0, OBJ and .scene files\n\n"
          "Usage:\n"
          "  radiant render SCENE -o OUT [options]   render an image (radiant render --help)\n"
-         "  radiant info SCENE [--json]             scene statistics, warnings and effects\n"
+         "  radiant info SCENE|IMAGE [--json]       scene statistics and effects, or how an image was made\n"
          "  radiant compare A B [options]           compare images for CI (exit 0 pass, 1 fail)\n"
          "  radiant converge SCENE [--out DIR]      accuracy-versus-time report\n"
          "  radiant batch FILE|-                    render many views of one loaded scene\n"

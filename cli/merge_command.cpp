@@ -2,9 +2,11 @@
 // cover the image x [0, spp) exactly once, added exactly and written like `render` writes.
 #include <iostream>
 
+#include "command_line.h"
 #include "commands.h"
 #include "film/shard_merge.h"
 #include "image/image_io.h"
+#include "image/render_metadata.h"
 #include "option_parsing.h"
 #include "output/output_paths.h"
 #include "output/output_set.h"
@@ -20,9 +22,44 @@ const char* merge_examples =
     "  radiant merge shard-*.exr -o image.png\n"
     "  radiant merge s0.exr s1.exr -o s01.exr --keep-accum   # one shard again, for a later merge\n";
 
-// Reads, checks and adds the shards; writes `output` (and nothing when anything fails).
+// What the merged image records: the shards' render (their settings, the merged spp, their render
+// times and rays summed, the first one's command line) and how many were merged. Shards rendered
+// with --no-metadata record no render: then only the settings every shard holds.
+ImageMetadata merged_metadata(const std::vector<NamedShard>& shards, const ShardInfo& merged,
+                              const std::string& command_line) {
+  std::vector<RenderRecord> records;
+  for (const NamedShard& shard : shards) {
+    std::optional<RenderRecord> record;
+    try {
+      record = parse_render_metadata(read_image_header(shard.path).metadata);
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error(shard.path + ": " + e.what());
+    }
+    if (record) records.push_back(*record);
+  }
+  ImageMetadata metadata;
+  if (records.size() == shards.size()) {
+    RenderRecord record = combined_record(records);
+    record.version = RADIANT_VERSION;
+    record.command_line = command_line;
+    record.spp = merged.spp;
+    metadata = render_metadata(record);
+    metadata.emplace_back("radiant:shard_command", records.front().command_line);
+  } else {
+    metadata = {{"Software", "radiant " RADIANT_VERSION},
+                {"Comment", command_line},
+                {"radiant:sampler", merged.sampler},
+                {"radiant:spp", std::to_string(merged.spp)},
+                {"radiant:seed", std::to_string(merged.seed)}};
+  }
+  metadata.emplace_back("radiant:shards", std::to_string(shards.size()));
+  return metadata;
+}
+
+// Reads, checks and adds the shards; writes `output` (and nothing when anything fails) with
+// `command_line` recorded in it unless `metadata` is false.
 void merge_shards(const std::vector<std::string>& paths, const std::string& output, bool keep_accum, bool quiet,
-                  MemoryBudget& budget) {
+                  const std::string& command_line, bool metadata, MemoryBudget& budget) {
   std::vector<NamedShard> shards;
   for (const std::string& path : paths) shards.push_back({path, read_shard_info(path)});
   ShardInfo merged = check_shards(shards, !keep_accum);
@@ -33,9 +70,15 @@ void merge_shards(const std::vector<std::string>& paths, const std::string& outp
   Film film = make_film(width, height, with_aovs);
   film.x = merged.x0, film.y = merged.y0, film.full_width = merged.full_width, film.full_height = merged.full_height;
   for (const NamedShard& shard : shards) add_shard(film, read_shard_film(shard.path, shard.info, &budget).film);
+  ImageMetadata record = metadata ? merged_metadata(shards, merged, command_line) : ImageMetadata{};
   OutputSet outputs;
-  if (keep_accum) write_shard(outputs.create(output), film, merged, &budget);
-  else write_image(outputs.create(output), film_to_image(film, merged.aovs));
+  if (keep_accum) {
+    write_shard(outputs.create(output), film, merged, record, &budget);
+  } else {
+    OutputImage image = film_to_image(film, merged.aovs);
+    image.metadata = record;
+    write_image(outputs.create(output), image);
+  }
   outputs.commit();
   if (!quiet)
     std::cerr << "radiant: merged " << shards.size() << " shards into " << output << " (" << width << "x" << height
@@ -49,13 +92,15 @@ int merge_main(int argc, char** argv) {
   app.footer(merge_examples);
   std::vector<std::string> paths;
   std::string output, max_memory;
-  bool keep_accum = false, quiet = false;
+  bool keep_accum = false, quiet = false, no_metadata = false;
   app.add_option("SHARD", paths, "Shard EXR files of one render")->required();
   app.add_option("-o,--output", output, "Output image (.png, .exr, ...), or a shard EXR with --keep-accum")->required();
   app.add_flag("--keep-accum", keep_accum,
                "Write the exact accumulators as one shard for a later merge: the shards then need cover only their "
                "bounding region and sample range, exactly once");
   app.add_option("--max-memory", max_memory, "Memory cap in GiB (default 1/4 of RAM)");
+  app.add_flag("--no-metadata", no_metadata,
+               "Record nothing about the render in the image: the same shards then merge to the same bytes");
   app.add_flag("--quiet,-q", quiet, "Print nothing but errors");
   std::optional<uint64_t> max_memory_bytes;
   try {
@@ -81,7 +126,7 @@ int merge_main(int argc, char** argv) {
   }
   try {
     check_output_place(output);
-    merge_shards(paths, output, keep_accum, quiet, budget);
+    merge_shards(paths, output, keep_accum, quiet, command_line_text(argc, argv), !no_metadata, budget);
   } catch (const std::exception& e) {
     std::cerr << "radiant: " << e.what() << "\n";
     return exit_failure;

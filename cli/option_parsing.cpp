@@ -299,6 +299,9 @@ void RenderFlags::bind(CLI::App& app, bool image_flags) {
     app.add_option("--bit-depth", options.bit_depth, "8 or 16 bits per channel for PNG and TIFF")
         ->check(CLI::IsMember({8, 16}));
     app.add_flag("--half", options.half_float, "EXR with 16-bit half floats instead of 32-bit");
+    app.add_flag("--no-metadata", no_metadata,
+                 "Record nothing about the render in the image (version, command, times...): the same render "
+                 "then writes the same bytes");
   }
   app.add_option("--mode", mode, "Integrator: whitted, path, naive or auto (default auto)");
   app.add_option("--max-depth", max_depth, "Surface interactions that gather light (1 = direct only)")->check(CLI::Range(1, 1000));

@@ -60,6 +60,7 @@ struct RenderFlags {
   float lens_radius = -1, focus_distance = 0;  // unset: -1, 0
   int blades = -1;                             // unset: -1
   bool allow_external_files = false;
+  bool no_metadata = false;                 // --no-metadata (image flags only)
   std::string max_memory;                   // GiB, as given
   std::optional<uint64_t> max_memory_bytes;  // set by finish() when --max-memory is given
   void bind(CLI::App& app, bool image_flags);

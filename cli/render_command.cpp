@@ -6,6 +6,7 @@
 #include <new>
 
 #include "animation_flags.h"
+#include "command_line.h"
 #include "commands.h"
 #include "load_scene.h"
 #include "option_parsing.h"
@@ -89,6 +90,8 @@ int render_main(int argc, char** argv) {
   job.options = options;
   job.output = output;
   job.stats_path = stats_path;
+  job.command_line = command_line_text(argc, argv);
+  job.write_metadata = !flags.no_metadata;
   if (!format.empty()) {
     if (!is_standard_output(output)) {
       std::cerr << "radiant render: --format is for -o - (the extension of '" << output << "' names its format)\n";

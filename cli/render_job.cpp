@@ -41,15 +41,23 @@ void check_render_job_outputs(const RenderJob& job) {
 
 namespace {
 
-// The image to write: what the film holds, marked partial when a signal stopped the render, and
-// in a float format with the per-pixel sample counts, which say how far each pixel got.
-OutputImage output_image(const RenderJob& job, const RenderResult& result) {
+// The record the render's image or shard carries, or nothing with --no-metadata.
+ImageMetadata job_metadata(const std::string& scene_path, const RenderJob& job, const RenderResult& result) {
+  if (!job.write_metadata) return {};
+  return render_metadata(render_record(scene_path, job.command_line, job.options.seed, result));
+}
+
+// The image to write: what the film holds with its record, marked partial when a signal stopped
+// the render, and in a float format with the per-pixel sample counts, which say how far each
+// pixel got.
+OutputImage output_image(const std::string& scene_path, const RenderJob& job, const RenderResult& result) {
   std::vector<std::string> aovs = job.options.aovs;
   bool partial = result.stats.interrupted;
   if (partial && is_float_format(image_format_name(job)) && std::find(aovs.begin(), aovs.end(), "spp") == aovs.end())
     aovs.push_back("spp");
   OutputImage image = film_to_image(result.film, aovs);
   set_output_encoding(image, job.options, result.settings);
+  image.metadata = job_metadata(scene_path, job, result);
   if (partial) image.metadata.emplace_back("radiant:partial", std::string("interrupted by ") + signal_name(interrupt_signal()));
   return image;
 }
@@ -93,9 +101,9 @@ void run_render_job(const std::string& scene_path, PreparedScene& prepared, cons
   if (writes_shard(options)) {
     ShardInfo info = make_shard_info(prepared, result.settings, options, job.shard_request_hash);
     if (result.stats.interrupted) info.partial = std::string("interrupted by ") + signal_name(interrupt_signal());
-    write_shard(outputs.create(job.output), result.film, info, options.memory);
+    write_shard(outputs.create(job.output), result.film, info, job_metadata(scene_path, job, result), options.memory);
   } else {
-    write_image(output_file(outputs, job.output, job.format), output_image(job, result));
+    write_image(output_file(outputs, job.output, job.format), output_image(scene_path, job, result));
   }
   times.write = std::chrono::duration<double>(Clock::now() - write_start).count();
   if (!job.stats_path.empty())

@@ -20,6 +20,8 @@ struct RenderJob {
   std::optional<uint64_t> max_memory_bytes;  // a batch render line's own --max-memory
   bool skip_existing = false;  // a shard already complete at `output` is not rendered again
   std::string shard_request_hash;  // of the command line, recorded in a shard (shard_request.h)
+  std::string command_line;        // what asked for this render, recorded in the image
+  bool write_metadata = true;      // --no-metadata: no record in the image, for identical bytes
 };
 
 // A name whose extension names the image format: the output, or for `-o -` "-.FORMAT".

@@ -40,6 +40,21 @@ std::string render_summary(const std::string& output, const RenderResult& r, con
   return line;
 }
 
+RenderRecord render_record(const std::string& scene_path, const std::string& command_line, uint32_t seed,
+                           const RenderResult& r) {
+  RenderRecord record;
+  record.version = RADIANT_VERSION;
+  record.command_line = command_line;
+  record.scene = scene_path;
+  record.mode = mode_name(r.settings.mode);
+  record.sampler = sampler_name(r.settings.sampler);
+  record.spp = uint32_t(r.settings.spp);
+  record.seed = seed;
+  record.render_seconds = r.stats.render_seconds;
+  record.rays = r.stats.rays.total();
+  return record;
+}
+
 std::string render_stats_json(const std::string& scene_path, const std::string& output, const RenderResult& r,
                               const PhaseTimes& t) {
   const ResolvedSettings& s = r.settings;

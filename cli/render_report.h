@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "image/render_metadata.h"
 #include "render/render.h"
 
 namespace radiant::cli {
@@ -16,6 +17,10 @@ std::string render_summary(const std::string& output, const RenderResult& result
 // The --stats JSON document.
 std::string render_stats_json(const std::string& scene_path, const std::string& output, const RenderResult& result,
                               const PhaseTimes& times);
+// What the image of this render records about it (image/render_metadata.h): `command_line`
+// made it from `scene_path` with `seed`.
+RenderRecord render_record(const std::string& scene_path, const std::string& command_line, uint32_t seed,
+                           const RenderResult& result);
 // Peak resident memory of this process in bytes.
 size_t peak_memory_bytes();
 

@@ -23,6 +23,7 @@
 #include <mutex>
 #include <new>
 
+#include "command_line.h"
 #include "commands.h"
 #include "load_scene.h"
 #include "option_parsing.h"
@@ -183,12 +184,18 @@ class Session {
     RenderJob job = settings_.job(output_, fs::current_path());
     job.options.memory = &budget_;
     job.options.progress = false;  // stdout reports each render; stderr stays for errors
+    // The image records the `render` command that makes it again.
+    std::vector<std::string> words = {"render", scene_path_, "-o", output_};
+    for (const std::string& word : settings_.flag_words()) words.push_back(word);
     if (view_) {
       CameraOverride placed = camera_override(*view_);
       job.options.camera_override.look_from = placed.look_from;
       job.options.camera_override.look_at = placed.look_at;
       job.options.camera_override.up = placed.up;
+      words.insert(words.end(), {"--look-from", format_vec3(*placed.look_from), "--look-at",
+                                 format_vec3(*placed.look_at), "--up", format_vec3(*placed.up)});
     }
+    job.command_line = command_line_text(words);
     return job;
   }
 

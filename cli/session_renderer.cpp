@@ -81,24 +81,36 @@ void SessionRenderer::render(const SessionRequest& request) {
     times.build = prepared.build_seconds;
     ResolvedSettings settings = resolve_settings(prepared, options);
     uint32_t total = uint32_t(settings.spp);
-    auto image_of = [&](const Film& film) {
+    auto image_of = [&](const Film& film, const RenderResult& so_far) {
       OutputImage image = film_to_image(film, job.options.aovs);
       set_output_encoding(image, job.options, settings);
+      if (job.write_metadata)
+        image.metadata = render_metadata(render_record(request.scene_path, job.command_line, job.options.seed, so_far));
       return image;
     };
+    auto start = Clock::now();
     // Each pass short of the last replaces the image, so a viewer that reloads shows it sharpen;
     // the finished render is written below, with its statistics.
     options.on_pass = [&](const Film& film, uint32_t samples) {
       if (samples >= total || stop_) return;
+      RenderResult so_far;  // rays are counted when the render ends: a pass records none
+      so_far.settings = settings;
+      so_far.settings.spp = int(samples);
+      so_far.stats.render_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+      OutputImage image = image_of(film, so_far);
+      std::erase_if(image.metadata, [](const auto& attribute) { return attribute.first.rfind("radiant:rays", 0) == 0; });
+      if (job.write_metadata)
+        image.metadata.emplace_back("radiant:partial", "progressive pass: " + std::to_string(samples) + " of " +
+                                                           std::to_string(total) + " samples per pixel");
       OutputSet outputs;
-      write_image(outputs.create(job.output), image_of(film));
+      write_image(outputs.create(job.output), image);
       outputs.commit();
     };
     RenderResult result = render_prepared(prepared, options);
     if (result.stats.interrupted) return;  // a newer request replaced it
     times.render = result.stats.render_seconds;
     FinishedRender finished;
-    finished.image = image_of(result.film);
+    finished.image = image_of(result.film, result);
     auto write_start = Clock::now();
     OutputSet outputs;
     write_image(outputs.create(job.output), finished.image);

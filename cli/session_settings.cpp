@@ -65,20 +65,23 @@ void SessionSettings::set_from_arguments(const std::vector<std::string>& argumen
 
 RenderJob SessionSettings::job(const std::string& output, const std::filesystem::path& base) const {
   std::vector<std::string> words = {"render", "-o", output};
-  for (const auto& [name, values] : flags_) {
-    words.push_back("--" + name);
-    words.insert(words.end(), values.begin(), values.end());
-  }
+  for (const std::string& word : flag_words()) words.push_back(word);
   return parse_render_line(words, base);
 }
 
 std::string SessionSettings::flags() const {
   std::string text;
-  for (const auto& [name, values] : flags_) {
-    text += (text.empty() ? "--" : " --") + name;
-    for (const std::string& value : values) text += " " + value;
-  }
+  for (const std::string& word : flag_words()) text += (text.empty() ? "" : " ") + word;
   return text;
+}
+
+std::vector<std::string> SessionSettings::flag_words() const {
+  std::vector<std::string> words;
+  for (const auto& [name, values] : flags_) {
+    words.push_back("--" + name);
+    words.insert(words.end(), values.begin(), values.end());
+  }
+  return words;
 }
 
 }  // namespace radiant::cli

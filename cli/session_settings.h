@@ -26,8 +26,9 @@ class SessionSettings {
 
   // The render these settings ask for, writing `output`; relative paths resolve against `base`.
   RenderJob job(const std::string& output, const std::filesystem::path& base) const;
-  // The settings as `render` flags, in name order ("--mode path --spp 64").
+  // The settings as `render` flags, in name order ("--mode path --spp 64"), as text and as words.
   std::string flags() const;
+  std::vector<std::string> flag_words() const;
 
  private:
   std::map<std::string, std::vector<std::string>> flags_;  // name without dashes -> values

@@ -65,7 +65,11 @@ def main():
     axes.grid(True, which="both", linewidth=0.3)
     axes.legend(fontsize=8)
     figure.tight_layout()
-    figure.savefig(png_path, format="png")
+    # How the chart was made (radiant's Software, Comment and radiant:* keys) as PNG text chunks,
+    # which matplotlib writes as tEXt: Latin-1, so other characters become '?'.
+    metadata = {name: value.encode("latin-1", "replace").decode("latin-1")
+                for name, value in (report.get("metadata") or {}).items()}
+    figure.savefig(png_path, format="png", metadata=metadata)
     return 0
 
 

@@ -39,9 +39,9 @@ printf '%s\n' "$cases" | while IFS='|' read -r name check scene flags golden_spp
   echo "$name: radiant render $scene $flags --spp $golden_spp --seed $golden_seed $aov"
   # shellcheck disable=SC2086 # flags are a list of words
   (cd "$root" && "$radiant" render "$scene" -o "$scratch/$name.exr" $flags \
-    --spp "$golden_spp" --seed "$golden_seed" $aov --quiet)
-  # No software, temporary path or date (oiiotool stamps the time unless given one): regenerating
-  # an unchanged image changes no byte.
+    --spp "$golden_spp" --seed "$golden_seed" $aov --quiet --no-metadata)
+  # No software, temporary path, render time or date (radiant records none with --no-metadata,
+  # oiiotool stamps the time unless given one): regenerating an unchanged image changes no byte.
   oiiotool --nosoftwareattrib "$scratch/$name.exr" --ch "$channels" \
     --attrib DateTime "1970:01:01 00:00:00" \
     -d "$format" --compression zip \

@@ -39,6 +39,7 @@ PixelType pixel_type(OIIO::TypeDesc type) {
   if (type == OIIO::TypeDesc::HALF) return PixelType::half;
   if (type == OIIO::TypeDesc::FLOAT) return PixelType::float32;
   if (type == OIIO::TypeDesc::UINT32) return PixelType::uint32;
+  if (type == OIIO::TypeDesc::UINT16) return PixelType::uint16;
   return PixelType::other;
 }
 

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "image/image_io.h"
+#include "image/render_metadata.h"
 
 namespace radiant {
 
@@ -161,7 +162,8 @@ ShardInfo parse_shard_metadata(const ImageMetadata& metadata) {
   return info;
 }
 
-void write_shard(TemporaryFile& file, const Film& film, const ShardInfo& info, MemoryBudget* budget) {
+void write_shard(TemporaryFile& file, const Film& film, const ShardInfo& info, const ImageMetadata& record,
+                 MemoryBudget* budget) {
   bool with_aovs = !film.aovs.empty();
   ImageWriteSpec spec;
   spec.width = film.width, spec.height = film.height;
@@ -173,6 +175,7 @@ void write_shard(TemporaryFile& file, const Film& film, const ShardInfo& info, M
   spec.color_space = "Linear";
   spec.zip = true;
   spec.metadata = shard_metadata(info);
+  add_missing_attributes(spec.metadata, record);  // seed, spp and sampler are the shard's own
   size_t stride = spec.channel_names.size();
   MemoryCharge memory(budget, saturating_multiply(film.pixels.size(), stride * sizeof(uint32_t)),
                       file.target() + ": the shard's channels");

@@ -44,9 +44,11 @@ struct ShardInfo {
 ImageMetadata shard_metadata(const ShardInfo& info);
 ShardInfo parse_shard_metadata(const ImageMetadata& metadata);
 
-// Writes `film` (its window and AOV sums as made) with `info`'s metadata, charging `budget` for
-// the channels first. Throws like write_image_file, and MemoryLimitError.
-void write_shard(TemporaryFile& file, const Film& film, const ShardInfo& info, MemoryBudget* budget);
+// Writes `film` (its window and AOV sums as made) with `info`'s metadata and the attributes of
+// `record` it does not hold already (image/render_metadata.h: how the render was made), charging
+// `budget` for the channels first. Throws like write_image_file, and MemoryLimitError.
+void write_shard(TemporaryFile& file, const Film& film, const ShardInfo& info, const ImageMetadata& record,
+                 MemoryBudget* budget);
 
 // The metadata of the shard at `path`, checked against its windows. Throws std::runtime_error
 // "path: why" for a file that is not a shard radiant can merge.

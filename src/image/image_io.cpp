@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "image/exr_header_check.h"
+#include "image/packed_metadata.h"
 #include "image/png_reader.h"
 #include "image/png_writer.h"
 
@@ -79,14 +80,26 @@ std::unique_ptr<ImageSource> open_image_file(const std::string& path, std::strin
   return image_io_module().open(path, error);
 }
 
+ImageHeader read_image_header(const std::string& path) {
+  std::string error;
+  std::unique_ptr<ImageSource> source = open_image_file(path, error);
+  if (!source) throw std::runtime_error(path + ": " + error);
+  ImageHeader header = source->header();
+  header.metadata = unpacked_metadata(header.metadata);
+  return header;
+}
+
 void write_image_file(TemporaryFile& file, const ImageWriteSpec& spec, const void* pixels) {
   std::string error;
   if (writes_as_png(file.target(), spec)) {
     std::vector<unsigned char> bytes = encode_png(spec, static_cast<const float*>(pixels), error);
     if (error.empty()) file.write(bytes.data(), bytes.size());
   } else {
+    // Only EXR keeps every attribute: other formats get them packed into their description.
+    ImageWriteSpec stored = spec;
+    if (lowercase_extension(file.target()) != ".exr") stored.metadata = packed_metadata(spec.metadata);
     // The temporary's name keeps the target's extension, which names the format.
-    error = image_io_module().write(file.descriptor(), file.path(), spec, pixels);
+    error = image_io_module().write(file.descriptor(), file.path(), stored, pixels);
     // Name the file the user asked for, not the temporary one.
     for (size_t at; (at = error.find(file.path())) != std::string::npos;) error.replace(at, file.path().size(), file.target());
   }

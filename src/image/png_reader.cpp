@@ -83,9 +83,9 @@ class PngSource final : public ImageSource {
       default: header_.channel_names = {"R", "G", "B", "A"}, header_.alpha_channel = 3; break;
     }
     header_.full_width = header_.width, header_.full_height = header_.height;
-    header_.channel_types.assign(size_t(header_.channels), PixelType::uint8);
+    header_.channel_types.assign(size_t(header_.channels), sixteen_bits_ ? PixelType::uint16 : PixelType::uint8);
     header_.color_space = color_space_of(png, info);
-    // Text chunks before the pixels (radiant writes its own there: radiant:partial, ...).
+    // Text chunks (tEXt, zTXt, iTXt) before the pixels: radiant writes its own there.
     png_textp text = nullptr;
     int count = 0;
     png_get_text(png, info, &text, &count);

@@ -14,7 +14,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// An 8x8 PNG of the plane takes about 190 bytes and its --stats JSON about 870.
+// An 8x8 PNG of the plane without metadata (--no-metadata) takes about 190 bytes and its --stats
+// JSON about 870.
 constexpr rlim_t room_for_the_image_only = 500;
 
 ChildSetup full_disk(rlim_t bytes) {
@@ -38,7 +39,7 @@ TEST_CASE("checked writes: --stats on a full disk exits 1, and neither the stats
   fs::path scene = dir.write("plane.scene", lit_plane_scene);
   fs::path image = dir.write("out.png", "old image"), stats = dir.write("stats.json", "old stats");
   CommandResult r = run_radiant_with({"render", scene, "-o", image, "--stats", stats, "--width", "8", "--height", "8",
-                                      "--spp", "1", "--quiet"},
+                                      "--spp", "1", "--quiet", "--no-metadata"},
                                      full_disk(room_for_the_image_only));
   CHECK(r.exit_code == 1);
   CHECK(r.err.find("stats.json") != std::string::npos);
@@ -82,7 +83,7 @@ TEST_CASE("checked writes: a batch line's --stats on a full disk stops the batch
   fs::path stats = dir.write("stats.json", "old stats");
   fs::path script = dir.write("views.txt",
                               "scene plane.scene\n"
-                              "render -o a.png --width 8 --height 8 --spp 1 --quiet --stats stats.json\n");
+                              "render -o a.png --width 8 --height 8 --spp 1 --quiet --no-metadata --stats stats.json\n");
   CommandResult r = run_radiant_with({"batch", script}, full_disk(room_for_the_image_only));
   CHECK(r.exit_code == 1);
   CHECK(r.err.find("views.txt:2:") != std::string::npos);

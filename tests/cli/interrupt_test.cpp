@@ -10,7 +10,6 @@
 #include <filesystem>
 #include <thread>
 
-#include "image/image_io.h"
 #include "support/child_process.h"
 #include "support/test_scenes.h"
 
@@ -47,15 +46,6 @@ CommandResult interrupt(const std::vector<std::string>& args, int signal, const 
   return child.wait(30);
 }
 
-std::string metadata(const fs::path& file, const std::string& name) {
-  std::string error;
-  auto image = open_image_file(file.string(), error);
-  REQUIRE_MESSAGE(image, error);
-  for (const auto& [key, value] : image->header().metadata)
-    if (key == name) return value;
-  return "";
-}
-
 std::vector<std::string> args_with(std::vector<std::string> args, const std::vector<std::string>& more) {
   args.insert(args.end(), more.begin(), more.end());
   return args;
@@ -70,7 +60,7 @@ TEST_CASE("interrupt: SIGINT mid-render writes the PNG so far marked partial, th
   CommandResult r = interrupt(args_with({"render", scene, "-o", out, "--stats", stats}, slow_render), SIGINT);
   CHECK(r.exit_code == 130);
   CHECK(r.err.find("interrupted by SIGINT") != std::string::npos);
-  CHECK(metadata(out, "radiant:partial") == "interrupted by SIGINT");
+  CHECK(image_attribute(out, "radiant:partial") == "interrupted by SIGINT");
   CHECK(read_image(out).width == 32);
   CHECK(read_bytes(stats).find("\"interrupted\": true") != std::string::npos);
   CHECK(hidden_files(dir.path).empty());
@@ -82,7 +72,7 @@ TEST_CASE("interrupt: SIGTERM mid-render writes the EXR so far with its per-pixe
   fs::path out = dir.file("out.exr");
   CommandResult r = interrupt(args_with({"render", scene, "-o", out}, slow_render), SIGTERM);
   CHECK(r.exit_code == 143);
-  CHECK(metadata(out, "radiant:partial") == "interrupted by SIGTERM");
+  CHECK(image_attribute(out, "radiant:partial") == "interrupted by SIGTERM");
   TestImage image = read_image(out);
   REQUIRE(image.channel_names.back() == "spp");
   float fewest = 1e9f, most = 0;
@@ -104,7 +94,7 @@ TEST_CASE("interrupt: SIGINT during a batch writes the view in progress as parti
   fs::path script = dir.write("views.txt", "scene closed.scene\nrender -o a.png" + flags + "\nrender -o b.png" + flags + "\n");
   CommandResult r = interrupt({"batch", script}, SIGINT);
   CHECK(r.exit_code == 130);
-  CHECK(metadata(dir.file("a.png"), "radiant:partial") == "interrupted by SIGINT");
+  CHECK(image_attribute(dir.file("a.png"), "radiant:partial") == "interrupted by SIGINT");
   CHECK_FALSE(fs::exists(dir.file("b.png")));
   CHECK(hidden_files(dir.path).empty());
 }

@@ -2,7 +2,6 @@
 // merges to the pixels of one render, bit for bit; what cannot merge is refused and writes nothing.
 #include <doctest/doctest.h>
 
-#include <cstring>
 #include <filesystem>
 #include <sstream>
 #include <string>
@@ -17,7 +16,6 @@ using namespace radiant::test;
 namespace fs = std::filesystem;
 
 namespace {
-
 
 // A scene and the flags of a tiny render of it in one mode.
 struct Case {
@@ -59,16 +57,6 @@ void in_process_ok(std::vector<std::string> words) {
   REQUIRE(r.exit_code == 0);
 }
 
-// Same size, channel names and every float's bits.
-void require_same_pixels(const fs::path& a, const fs::path& b) {
-  TestImage x = read_image(a), y = read_image(b);
-  REQUIRE(x.width == y.width);
-  REQUIRE(x.height == y.height);
-  REQUIRE(x.channel_names == y.channel_names);
-  REQUIRE(x.pixels.size() == y.pixels.size());
-  CHECK(std::memcmp(x.pixels.data(), y.pixels.data(), x.pixels.size() * sizeof(float)) == 0);
-}
-
 ImageHeader header_of(const fs::path& file) {
   std::string error;
   auto source = open_image_file(file.string(), error);
@@ -98,17 +86,36 @@ TEST_CASE("merge cli: tiles, sample ranges and both merge to a single render's p
     for (const char* split : {"tiles", "samples", "both"}) {
       CAPTURE(split);
       std::vector<std::string> shards;
+      std::vector<fs::path> shard_files;
       for (int i = 0; i < 4; ++i) {
         std::string shard = dir.file(std::string(c.name) + "-" + split + "-" + std::to_string(i) + ".exr");
         in_process_ok(with(with({"render"}, base),
                            with({"-o", shard, "--shard", std::to_string(i) + "/4", "--split", split}, aovs)));
         shards.insert(shards.begin(), shard);  // merged in another order than rendered
+        shard_files.push_back(shard);
       }
       std::string merged_exr = dir.file("merged.exr"), merged_png = dir.file("merged.png");
       in_process_ok(with(with({"merge"}, shards), {"-o", merged_exr}));
       in_process_ok(with(with({"merge"}, shards), {"-o", merged_png}));
-      require_same_pixels(single_exr, merged_exr);
-      CHECK(read_bytes(single_png) == read_bytes(merged_png));
+      CHECK(same_pixels(single_exr, merged_exr));
+      CHECK(same_pixels(single_png, merged_png));
+      // The merged image records the render the shards made together.
+      for (const char* field : {"radiant:scene", "radiant:mode", "radiant:sampler", "radiant:spp", "radiant:seed"})
+        CHECK(image_attribute(merged_png, field) == image_attribute(single_png, field));
+      CHECK(image_attribute(merged_png, "radiant:shards") == "4");
+      std::string shards_words;
+      for (const std::string& shard : shards) shards_words += shard + " ";
+      CHECK(image_attribute(merged_png, "Comment") == "radiant merge " + shards_words + "-o " + merged_png + " --quiet");
+      CHECK(image_attribute(merged_png, "radiant:shard_command").rfind("radiant render ", 0) == 0);
+      double seconds = 0;
+      uint64_t rays = 0;
+      for (const fs::path& shard : shard_files) {
+        seconds += std::stod(image_attribute(shard, "radiant:render_seconds"));
+        rays += std::stoull(image_attribute(shard, "radiant:rays"));
+      }
+      CHECK(std::stod(image_attribute(merged_png, "radiant:render_seconds")) == doctest::Approx(seconds).epsilon(1e-5));
+      CHECK(std::stoull(image_attribute(merged_png, "radiant:rays")) == rays);
+      CHECK(image_attribute(merged_png, "radiant:rays") == image_attribute(single_png, "radiant:rays"));
     }
   }
 }
@@ -127,7 +134,7 @@ TEST_CASE("merge cli: --keep-accum merges part of the shards into a shard that m
   fs::path half = dir.file("half.exr"), merged = dir.file("merged.exr");
   radiant_ok("merge " + shard[1] + " " + shard[0] + " -o " + quoted(half) + " --keep-accum");
   radiant_ok("merge " + quoted(half) + " " + shard[3] + " " + shard[2] + " -o " + quoted(merged));
-  require_same_pixels(single, merged);
+  CHECK(same_pixels(single, merged));
   // Shards 0 and 3 (a range of each tile) make no region x sample range: nothing to keep.
   fs::path refused = dir.file("refused.exr");
   CommandResult r = run_radiant("merge " + shard[0] + " " + shard[3] + " -o " + quoted(refused) + " --keep-accum");
@@ -145,7 +152,7 @@ TEST_CASE("merge cli: a sobol render of samples 0:4 extended by samples 4:16 of 
   radiant_ok("render " + scene + " -o " + quoted(early) + base + " --sampler sobol --spp 4 --sample-range 0:4");
   radiant_ok("render " + scene + " -o " + quoted(later) + base + " --sampler sobol --spp 16 --sample-range 4:16");
   radiant_ok("merge " + quoted(early) + " " + quoted(later) + " -o " + quoted(merged));
-  require_same_pixels(single, merged);
+  CHECK(same_pixels(single, merged));
 
   radiant_ok("render " + scene + " -o " + quoted(early) + base + " --sampler jittered --spp 4 --sample-range 0:4");
   radiant_ok("render " + scene + " -o " + quoted(later) + base + " --sampler jittered --spp 16 --sample-range 4:16");

@@ -69,8 +69,21 @@ TEST_CASE("converge cli: path and naive ladders write a well-formed CSV and JSON
   CHECK(report["references"][0]["mode"] == "path");
   CHECK(report["references"][0]["file"] == "");
   CHECK(report["references"][0]["spp"] == 32);
-  if (fs::exists(dir.file("converge.png"))) CHECK(read_bytes(dir.file("converge.png")).substr(1, 3) == "PNG");
-  else CHECK(r.err.find("warning: no chart") != std::string::npos);
+  // What the chart records about how it was made.
+  nlohmann::json metadata = report["metadata"];
+  CHECK(metadata["Software"] == "radiant " RADIANT_VERSION);
+  CHECK(metadata["Comment"].get<std::string>().rfind("radiant converge " + source_path("assets/cornell.gltf").string(), 0) == 0);
+  CHECK(metadata["radiant:mode"] == "path,naive");
+  CHECK(metadata["radiant:spp"] == "1,2,4");
+  CHECK(metadata["radiant:seed"] == "0");
+  CHECK(std::stod(metadata["radiant:render_seconds"].get<std::string>()) > 0);
+  if (fs::exists(dir.file("converge.png"))) {
+    CHECK(read_bytes(dir.file("converge.png")).substr(1, 3) == "PNG");
+    CHECK(image_attribute(dir.file("converge.png"), "Software") == "radiant " RADIANT_VERSION);
+    CHECK(image_attribute(dir.file("converge.png"), "radiant:spp") == "1,2,4");
+  } else {
+    CHECK(r.err.find("warning: no chart") != std::string::npos);
+  }
 }
 
 TEST_CASE("converge cli: --supersampling measures each sampler at edges, in time multiples of 1 spp") {

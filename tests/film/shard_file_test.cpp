@@ -2,11 +2,13 @@
 // not shards radiant wrote are refused naming the file and the place.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
 #include "film/shard_file.h"
 #include "image/image_io.h"
+#include "image/render_metadata.h"
 #include "output/output_set.h"
 #include "support/test_support.h"
 
@@ -49,10 +51,16 @@ TEST_CASE("shard file: every exact sum, sample count, window and metadata field 
   std::string path = dir.file("shard.exr").string();
   Film film = window_film();
   ShardInfo info = window_info();
+  RenderRecord record{"9.9", "radiant render s.gltf -o shard.exr --shard 1/4", "s.gltf", "path", "sobol", 64, 7, 2.5, 123456};
   OutputSet outputs;
-  write_shard(outputs.create(path), film, info, nullptr);
+  write_shard(outputs.create(path), film, info, render_metadata(record), nullptr);
   outputs.commit();
   CHECK(read_shard_info(path) == info);
+  // The render's record beside the shard's own fields; what both hold (spp, seed, sampler) once.
+  ImageMetadata metadata = read_image_header(path).metadata;
+  CHECK(parse_render_metadata(metadata) == record);
+  for (const char* shared : {"radiant:spp", "radiant:seed", "radiant:sampler"})
+    CHECK(std::count_if(metadata.begin(), metadata.end(), [&](const auto& a) { return a.first == shared; }) == 1);
   LoadedShard loaded = read_shard_film(path, info, nullptr);
   REQUIRE(loaded.film.pixels.size() == film.pixels.size());
   CHECK(loaded.film.x == 5);
@@ -84,7 +92,7 @@ TEST_CASE("shard file: an EXR without radiant's metadata, or with a sum no rende
   film.pixels[0].sum[0] = ExactSum();
   ShardInfo info = window_info();
   OutputSet outputs;
-  write_shard(outputs.create(path), film, info, nullptr);
+  write_shard(outputs.create(path), film, info, {}, nullptr);
   outputs.commit();
   std::string error;
   auto source = open_image_file(path, error);

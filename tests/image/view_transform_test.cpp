@@ -74,8 +74,9 @@ TEST_CASE("view transforms: the flags, the .scene setting, 16-bit PNG and half E
   REQUIRE(run_radiant(render + quoted(dir.file("linear.png")) + " --view linear").exit_code == 0);
   REQUIRE(run_radiant(render + quoted(dir.file("dark.png")) + " --view linear --exposure -1").exit_code == 0);
   REQUIRE(run_radiant(render + quoted(dir.file("deep.png")) + " --bit-depth 16").exit_code == 0);
-  REQUIRE(run_radiant(render + quoted(dir.file("half.exr")) + " --half").exit_code == 0);
-  REQUIRE(run_radiant(render + quoted(dir.file("full.exr"))).exit_code == 0);
+  // No metadata: the sizes compare the pixels' storage, not the command lines and times recorded.
+  REQUIRE(run_radiant(render + quoted(dir.file("half.exr")) + " --half --no-metadata").exit_code == 0);
+  REQUIRE(run_radiant(render + quoted(dir.file("full.exr")) + " --no-metadata").exit_code == 0);
   float linear = center(dir.file("full.exr"));
   REQUIRE(linear > 0.05f);
   REQUIRE(linear < 0.9f);
@@ -88,7 +89,7 @@ TEST_CASE("view transforms: the flags, the .scene setting, 16-bit PNG and half E
   // The scene's own setting, which a flag overrides.
   fs::path classic = dir.write("classic.scene", plane + "@render\nview linear\n");
   REQUIRE(run_radiant("render " + quoted(classic) + " --width 8 --height 8 --spp 1 --quiet -o " + quoted(dir.file("c.png"))).exit_code == 0);
-  CHECK(read_bytes(dir.file("c.png")) == read_bytes(dir.file("linear.png")));
+  CHECK(same_pixels(dir.file("c.png"), dir.file("linear.png")));
   CommandResult bad = run_radiant(render + quoted(dir.file("x.png")) + " --view vivid");
   CHECK(bad.exit_code == 2);
   CHECK(bad.err.find("unknown view 'vivid' (standard, linear, filmic or agx)") != std::string::npos);

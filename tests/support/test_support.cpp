@@ -7,6 +7,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <random>
@@ -16,6 +17,7 @@
 
 #include "commands.h"
 #include "image/image_io.h"
+#include "image/render_metadata.h"
 #include "output/output_set.h"
 
 namespace radiant::test {
@@ -135,6 +137,17 @@ TestImage read_image(const fs::path& file) {
   if (!input->read(img.channels, PixelType::float32, img.pixels.data()))
     throw std::runtime_error("cannot read image " + file.string() + ": " + input->error());
   return img;
+}
+
+bool same_pixels(const fs::path& a, const fs::path& b) {
+  TestImage first = read_image(a), second = read_image(b);
+  return first.width == second.width && first.height == second.height && first.channel_names == second.channel_names &&
+         first.pixels.size() == second.pixels.size() &&
+         std::memcmp(first.pixels.data(), second.pixels.data(), first.pixels.size() * sizeof(float)) == 0;
+}
+
+std::string image_attribute(const fs::path& file, const std::string& name) {
+  return find_attribute(read_image_header(file.string()).metadata, name).value_or("");
 }
 
 void write_test_image(const fs::path& path, int width, int height, const std::vector<std::string>& names,

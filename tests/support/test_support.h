@@ -80,6 +80,15 @@ void write_texel_bytes(const std::filesystem::path& path, int width, int height,
 // Whole file contents as bytes, for byte-identity checks.
 std::string read_bytes(const std::filesystem::path& file);
 
+// Whether two image files hold the same pixels: size, channel names and every value, bit for
+// bit. Renders record how they were made (times, command lines), so their bytes differ where
+// their pixels do not.
+bool same_pixels(const std::filesystem::path& a, const std::filesystem::path& b);
+
+// The metadata attribute `name` of the image at `file` (as read_image_header unpacks it), or ""
+// when it has none.
+std::string image_attribute(const std::filesystem::path& file, const std::string& name);
+
 // A path as one shell word, for run_radiant's command lines.
 inline std::string quoted(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
 
