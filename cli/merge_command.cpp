@@ -63,11 +63,15 @@ void merge_shards(const std::vector<std::string>& paths, const std::string& outp
   std::vector<NamedShard> shards;
   for (const std::string& path : paths) shards.push_back({path, read_shard_info(path)});
   ShardInfo merged = check_shards(shards, !keep_accum);
+  if (merged.transparent && !keep_accum && !stores_alpha(output))
+    throw std::runtime_error("the shards are of a --transparent render: -o needs an output with alpha: PNG, TIFF or EXR "
+                             "(got '" + output + "')");
   bool with_aovs = !merged.aovs.empty();
   int width = merged.x1 - merged.x0, height = merged.y1 - merged.y0;
-  MemoryCharge image_memory(&budget, render_image_bytes(width, height, output_channel_names(merged.aovs).size(), with_aovs),
+  size_t channels = output_channel_names(merged.aovs, merged.transparent).size();
+  MemoryCharge image_memory(&budget, render_image_bytes(width, height, channels, with_aovs, merged.transparent),
                             output + ": the merged " + std::to_string(width) + "x" + std::to_string(height) + " film and image");
-  Film film = make_film(width, height, with_aovs);
+  Film film = make_film(width, height, with_aovs, merged.transparent);
   film.x = merged.x0, film.y = merged.y0, film.full_width = merged.full_width, film.full_height = merged.full_height;
   for (const NamedShard& shard : shards) add_shard(film, read_shard_film(shard.path, shard.info, &budget).film);
   ImageMetadata record = metadata ? merged_metadata(shards, merged, command_line) : ImageMetadata{};

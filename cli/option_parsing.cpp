@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "image/view_transform.h"
+#include "sampling/pixel_filter.h"
 #include "lights/light_table.h"
 #include "scene/coordinate_range.h"
 
@@ -302,12 +303,19 @@ void RenderFlags::bind(CLI::App& app, bool image_flags) {
     app.add_flag("--no-metadata", no_metadata,
                  "Record nothing about the render in the image (version, command, times...): the same render "
                  "then writes the same bytes");
+    app.add_flag("--transparent", transparent,
+                 "RGBA with alpha = coverage of geometry; the background is not seen but still lights the scene "
+                 "(EXR premultiplied, PNG/TIFF straight alpha)");
   }
   app.add_option("--mode", mode, "Integrator: whitted, path, naive or auto (default auto)");
   app.add_option("--max-depth", max_depth, "Surface interactions that gather light (1 = direct only)")->check(CLI::Range(1, 1000));
   app.add_option("--threads", options.threads, "Worker threads (default: all cores); never changes the image")->check(CLI::Range(0, 1024));
   app.add_option("--seed", options.seed, "Random seed");
   app.add_option("--sampler", sampler, "grid, random, jittered (Whitted default) or sobol (path default)");
+  app.add_option("--filter", filter, "Pixel filter: box (default), triangle, gaussian, mitchell or blackman-harris");
+  app.add_option("--filter-width", filter_width,
+                 "The filter's full width in pixels (default: box 1, gaussian 3, triangle, mitchell, blackman-harris 4)")
+      ->check(positive_number(max_filter_width));
   app.add_option("--light-sampler", light_sampler,
                  "How the path tracer chooses a light: power, bvh (by estimated contribution) or auto (bvh from " +
                      std::to_string(light_bvh_min_lights) + " lights with a position; default)");
@@ -349,6 +357,15 @@ void RenderFlags::finish() {
       throw CLI::ValidationError("--view", e.what());
     }
   }
+  if (transparent) options.transparent = true;
+  if (!filter.empty()) {
+    try {
+      options.filter = parse_pixel_filter(filter);
+    } catch (const std::invalid_argument& e) {
+      throw CLI::ValidationError("--filter", e.what());
+    }
+  }
+  if (filter_width > 0) options.filter_width = filter_width;
   if (!light_sampler.empty()) options.light_sampler = parse_light_sampler("--light-sampler", light_sampler);
   if (!env_color.empty()) {
     vec3 c = parse_vec3("--env-color", env_color);

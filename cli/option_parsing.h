@@ -54,13 +54,15 @@ const char* sampler_name(SamplerKind kind);
 struct RenderFlags {
   RenderOptions options;
   std::string mode, sampler, light_sampler, env_color, crop, aovs, look_from, look_at, up, view, camera_type, variant;
-  std::string shard, split, sample_range;
+  std::string shard, split, sample_range, filter;
   int width = 0, height = 0, spp = 0, max_depth = 0, gltf_scene = -1;
   float fov = 0;
+  float filter_width = 0;  // unset: 0
   float lens_radius = -1, focus_distance = 0;  // unset: -1, 0
   int blades = -1;                             // unset: -1
   bool allow_external_files = false;
   bool no_metadata = false;                 // --no-metadata (image flags only)
+  bool transparent = false;
   std::string max_memory;                   // GiB, as given
   std::optional<uint64_t> max_memory_bytes;  // set by finish() when --max-memory is given
   void bind(CLI::App& app, bool image_flags);

@@ -36,6 +36,8 @@ void check_render_job_outputs(const RenderJob& job) {
     throw std::invalid_argument("--half needs an EXR output (got '" + format + "')");
   if (job.options.bit_depth == 16 && extension != ".png" && extension != ".tif" && extension != ".tiff")
     throw std::invalid_argument("--bit-depth 16 needs a PNG or TIFF output (got '" + format + "')");
+  if (job.options.transparent.value_or(false) && !stores_alpha(format))
+    throw std::invalid_argument("--transparent needs an output with alpha: PNG, TIFF or EXR (got '" + format + "')");
   for (const NamedFile& output : render_job_outputs(job)) check_output_place(output.path);
 }
 

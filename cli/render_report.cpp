@@ -7,6 +7,7 @@
 
 #include "json_output.h"
 #include "option_parsing.h"
+#include "sampling/pixel_filter.h"
 
 namespace radiant::cli {
 
@@ -69,6 +70,8 @@ std::string render_stats_json(const std::string& scene_path, const std::string& 
   j["mode_reason"] = s.mode_reason;
   j["sampler"] = sampler_name(s.sampler);
   j["light_sampler"] = s.light_sampler == LightSampler::bvh ? "bvh" : "power";
+  j["filter"] = {{"name", pixel_filter_name(s.filter)}, {"width", 2 * s.filter_radius}};
+  j["transparent"] = s.transparent;
   j["spp"] = s.spp;
   j["max_depth"] = s.max_depth;
   j["effects"] = effect_names(s.effects);

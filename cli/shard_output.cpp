@@ -36,6 +36,7 @@ ShardInfo make_shard_info(const PreparedScene& prepared, const ResolvedSettings&
   info.x0 = s.window.x0, info.y0 = s.window.y0, info.x1 = s.window.x1, info.y1 = s.window.y1;
   info.full_width = s.width, info.full_height = s.height;
   info.aovs = options.aovs;
+  info.transparent = s.transparent;
   if (options.shard) {
     info.shard_index = options.shard->index, info.shard_count = options.shard->count;
     info.split = split_name(options.shard->split);

@@ -7,7 +7,8 @@ namespace radiant::scene_format {
 
 static const std::vector<AttributeName> render_names = {{"mode", ""},      {"spp", ""},   {"sampler", ""},
                                                         {"max-depth", ""}, {"width", ""}, {"height", ""},
-                                                        {"background", ""}, {"view", ""}};
+                                                        {"background", ""}, {"view", ""},  {"transparent", ""},
+                                                        {"filter", ""}, {"filter-width", ""}};
 
 void build_render_block(BuildContext& context, const Block& block) {
   expect_block_arguments(context, block, 0);
@@ -24,6 +25,16 @@ void build_render_block(BuildContext& context, const Block& block) {
   // Same order as ViewTransform.
   if (auto* a = find(attributes, "view"))
     settings.view = ViewTransform(read_choice(context, *a, {"standard", "linear", "filmic", "agx"}));
+  // Same order as PixelFilterKind.
+  if (auto* a = find(attributes, "filter"))
+    settings.filter = PixelFilterKind(read_choice(context, *a, {"box", "triangle", "gaussian", "mitchell", "blackman-harris"}));
+  if (auto* a = find(attributes, "filter-width")) {
+    float width = read_positive(context, *a);
+    if (width > max_filter_width)
+      fail(context, a->arguments[0], "filter-width " + a->arguments[0].text + " is wider than 64 pixels");
+    settings.filter_width = width;
+  }
+  if (auto* a = find(attributes, "transparent")) settings.transparent = read_boolean(context, *a);
   if (auto* a = find(attributes, "background")) context.scene.environment.color = radiance_from_scene(read_color(context, *a));
 }
 

@@ -168,6 +168,10 @@ std::string write_image(int descriptor, const std::string& path, const ImageWrit
   // Alpha by name only (the constructor guesses channel 3 of four, which may be an AOV).
   auto alpha = std::find(spec.channel_names.begin(), spec.channel_names.end(), "A");
   file_spec.alpha_channel = alpha == spec.channel_names.end() ? -1 : int(alpha - spec.channel_names.begin());
+  // radiant gives display formats (8 and 16 bits) straight alpha, as PNG and TIFF's unassociated
+  // alpha store it: OpenImageIO would otherwise take it as associated and divide the color again.
+  bool display = spec.channel_types.empty() && (spec.type == PixelType::uint8 || spec.type == PixelType::uint16);
+  if (file_spec.alpha_channel >= 0 && display) file_spec.attribute("oiio:UnassociatedAlpha", 1);
   // No time stamp: the same render must give the same bytes.
   file_spec.attribute("DateTime", "");
   if (!spec.color_space.empty()) file_spec.attribute("oiio:ColorSpace", spec.color_space);

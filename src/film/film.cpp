@@ -5,7 +5,7 @@
 
 namespace radiant {
 
-Film make_film(int width, int height, bool with_aovs) {
+Film make_film(int width, int height, bool with_aovs, bool with_alpha) {
   Film film;
   film.width = width;
   film.height = height;
@@ -13,6 +13,7 @@ Film make_film(int width, int height, bool with_aovs) {
   film.full_height = height;
   film.pixels.resize(size_t(width) * height);
   if (with_aovs) film.aovs.resize(film.pixels.size());
+  if (with_alpha) film.alpha.resize(film.pixels.size());
   return film;
 }
 
@@ -22,6 +23,7 @@ void add_pixel(FilmPixel& to, const FilmPixel& from) {
     to.sum_squares[c].add(from.sum_squares[c]);
   }
   to.samples += from.samples;
+  to.negative_samples += from.negative_samples;
 }
 
 void add_aovs(FilmAovs& to, const FilmAovs& from) {
@@ -33,19 +35,28 @@ void add_aovs(FilmAovs& to, const FilmAovs& from) {
 }
 
 color3 pixel_mean(const FilmPixel& p) {
-  if (p.samples == 0) return {0, 0, 0};
-  double n = p.samples;
-  return {float(p.sum[0].value() / n), float(p.sum[1].value() / n), float(p.sum[2].value() / n)};
+  double weight = pixel_weight(p);  // the sample count, exactly, without negative weights
+  if (weight == 0) return {0, 0, 0};
+  return {float(p.sum[0].value() / weight), float(p.sum[1].value() / weight), float(p.sum[2].value() / weight)};
+}
+
+float pixel_alpha(const Film& film, size_t i) {
+  double weight = pixel_weight(film.pixels[i]);
+  return weight != 0 ? float(film.alpha[i].value() / weight) : 0.0f;
 }
 
 color3 pixel_mean_variance(const FilmPixel& p) {
   if (p.samples < 2) return {0, 0, 0};
-  double n = p.samples;
+  double n = p.samples, weight = pixel_weight(p);
+  if (weight == 0) return color3{1, 1, 1} * std::numeric_limits<float>::max();  // no mean to be sure of
+  // The mean divides by the weight, not the count: its variance grows by (n / weight)^2 (exactly
+  // 1 without negative weights).
+  double scale = (n / weight) * (n / weight);
   color3 v;
   for (int c = 0; c < 3; ++c) {
     double mean = p.sum[c].value() / n;
     double sample_variance = std::max(0.0, (p.sum_squares[c].value() - n * mean * mean) / (n - 1));
-    v[c] = float(std::min(sample_variance / n, double(std::numeric_limits<float>::max())));
+    v[c] = float(std::min(sample_variance / n * scale, double(std::numeric_limits<float>::max())));
   }
   return v;
 }

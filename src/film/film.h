@@ -1,6 +1,7 @@
-// The film: per-pixel exact sums of radiance samples and their squares, plus first-hit AOVs.
-// The sums are ExactSum: any partition of a pixel's samples (passes, sample-range shards) summed
-// apart and merged gives the same bits as one render.
+// The film: per-pixel exact sums of radiance samples and their squares, plus first-hit AOVs and,
+// in a transparent render, the coverage (alpha). The sums are ExactSum: any partition of a
+// pixel's samples (passes, sample-range shards) summed apart and merged gives the same bits as
+// one render.
 #pragma once
 
 #include <cstdint>
@@ -11,10 +12,14 @@
 
 namespace radiant {
 
+// A pixel filter's samples have weights of one magnitude and either sign (src/sampling/
+// pixel_filter.h): the weighted mean sum(w L) / sum(w) of pbrt-v4's film is then
+// sum(±L) / (samples - 2 negative_samples), which the pixel keeps exactly without the weights.
 struct FilmPixel {
-  ExactSum sum[3];
+  ExactSum sum[3];          // of the samples, each negated where its weight is negative
   ExactSum sum_squares[3];
   uint32_t samples = 0;
+  uint32_t negative_samples = 0;  // samples of negative weight (only Mitchell's lobes make them)
 };
 
 // First-hit auxiliary values, summed exactly like the radiance (and in double range: float sums
@@ -31,35 +36,49 @@ struct Film {
   int x = 0, y = 0, full_width = 0, full_height = 0;
   std::vector<FilmPixel> pixels;
   std::vector<FilmAovs> aovs;  // one per pixel when the render keeps AOVs, else empty
+  // The sum of each sample's coverage (1 where the camera ray met geometry, 0 where it saw the
+  // background), one per pixel in a transparent render, else empty.
+  std::vector<ExactSum> alpha;
   FilmPixel& at(int x, int y) { return pixels[size_t(y) * width + x]; }
   const FilmPixel& at(int x, int y) const { return pixels[size_t(y) * width + x]; }
 };
 
-// A film of black pixels without samples, the whole image; `with_aovs` also makes the AOV sums.
-Film make_film(int width, int height, bool with_aovs = false);
+// A film of black pixels without samples, the whole image; `with_aovs` also makes the AOV sums,
+// `with_alpha` the coverage sums.
+Film make_film(int width, int height, bool with_aovs = false, bool with_alpha = false);
 
-inline void add_sample(FilmPixel& p, color3 radiance) {
+// Adds a sample; `negative`: its filter weight is negative.
+inline void add_sample(FilmPixel& p, color3 radiance, bool negative = false) {
+  color3 value = negative ? -radiance : radiance;
   for (int c = 0; c < 3; ++c) {
-    p.sum[c].add(radiance[c]);
-    p.sum_squares[c].add(double(radiance[c]) * radiance[c]);  // exact: a float's square fits a double
+    p.sum[c].add(value[c]);
+    p.sum_squares[c].add(double(value[c]) * value[c]);  // exact: a float's square fits a double
   }
   p.samples++;
+  p.negative_samples += negative;
 }
+
+// The sum of a pixel's weights over their magnitude: its samples less twice the negative ones.
+inline double pixel_weight(const FilmPixel& p) { return double(p.samples) - 2.0 * double(p.negative_samples); }
 
 // Adds every sample of `from` to `to` (merging shards of the same pixel).
 void add_pixel(FilmPixel& to, const FilmPixel& from);
 void add_aovs(FilmAovs& to, const FilmAovs& from);
 
-// Mean radiance of a pixel (black without samples).
+// Weighted mean radiance of a pixel (black without samples, or when its weights cancel).
 color3 pixel_mean(const FilmPixel& p);
-// Variance of the pixel mean (sample variance / samples), per channel. It saturates at the
-// largest float, which only pixels whose mean exceeds ~1.8e19 reach: the value written is
-// always finite, and a smaller variance only makes a comparison stricter.
+// Variance of the pixel mean (sample variance / samples, over the mean weight squared when a
+// filter weighs the samples), per channel. It saturates at the largest float, which only pixels
+// whose mean exceeds ~1.8e19 (or whose weights cancel) reach: the value written is always
+// finite, and a smaller variance only makes a comparison stricter.
 color3 pixel_mean_variance(const FilmPixel& p);
 
-// Bytes a film of one pixel takes, with or without AOVs (for the memory budget).
-constexpr uint64_t film_pixel_bytes(bool with_aovs) {
-  return sizeof(FilmPixel) + (with_aovs ? sizeof(FilmAovs) : 0);
+// Weighted mean coverage of pixel `i` of a transparent film (0 as pixel_mean).
+float pixel_alpha(const Film& film, size_t i);
+
+// Bytes a film of one pixel takes, with or without AOVs and coverage (for the memory budget).
+constexpr uint64_t film_pixel_bytes(bool with_aovs, bool with_alpha = false) {
+  return sizeof(FilmPixel) + (with_aovs ? sizeof(FilmAovs) : 0) + (with_alpha ? sizeof(ExactSum) : 0);
 }
 
 }  // namespace radiant

@@ -16,19 +16,20 @@ namespace {
 
 constexpr const char* shard_format = "radiant shard 1";
 constexpr int words_per_sum = 5;  // top bin, high bin in two halves, low bin in two halves
-constexpr int color_channels = 3, count_channels = 1;
-constexpr int max_sums = 13;
+constexpr int color_channels = 3, count_channels = 2;  // samples, negative_samples
+constexpr int max_sums = 14;
 
-// The exact sums of one pixel in channel order: color sums, squares, then the AOV sums.
+// The exact sums of one pixel in channel order: color sums, squares, coverage, then the AOV sums.
 struct PixelSums {
   std::array<ExactSum*, max_sums> sums{};
   int count = 0;
 };
 
-PixelSums pixel_sums(FilmPixel& p, FilmAovs* a) {
+PixelSums pixel_sums(FilmPixel& p, ExactSum* alpha, FilmAovs* a) {
   PixelSums s;
   for (ExactSum& sum : p.sum) s.sums[s.count++] = &sum;
   for (ExactSum& sum : p.sum_squares) s.sums[s.count++] = &sum;
+  if (alpha) s.sums[s.count++] = alpha;
   if (a) {
     for (ExactSum& sum : a->albedo) s.sums[s.count++] = &sum;
     for (ExactSum& sum : a->normal) s.sums[s.count++] = &sum;
@@ -37,10 +38,11 @@ PixelSums pixel_sums(FilmPixel& p, FilmAovs* a) {
   return s;
 }
 
-std::vector<std::string> channel_names(bool with_aovs) {
+std::vector<std::string> channel_names(bool with_alpha, bool with_aovs) {
   std::vector<std::string> sums = {"sum.R", "sum.G", "sum.B", "sum2.R", "sum2.G", "sum2.B"};
+  if (with_alpha) sums.push_back("alpha.A");
   if (with_aovs) sums.insert(sums.end(), {"albedo.R", "albedo.G", "albedo.B", "normal.X", "normal.Y", "normal.Z", "depth.Z"});
-  std::vector<std::string> names = {"R", "G", "B", "samples"};
+  std::vector<std::string> names = {"R", "G", "B", "samples", "negative_samples"};
   for (const std::string& sum : sums)
     for (const char* word : {".t", ".h0", ".h1", ".l0", ".l1"}) names.push_back(sum + word);
   return names;
@@ -112,6 +114,7 @@ ImageMetadata shard_metadata(const ShardInfo& info) {
       {"radiant:request_hash", info.request_hash},
       {"radiant:inputs", join(info.inputs, '\n')},
   };
+  if (info.transparent) m.emplace_back("radiant:transparent", "1");
   if (!info.partial.empty()) m.emplace_back("radiant:partial", info.partial);
   return m;
 }
@@ -156,6 +159,10 @@ ShardInfo parse_shard_metadata(const ImageMetadata& metadata) {
     info.shard_index = int(index[0]), info.shard_count = int(index[1]);
   }
   info.split = find("split", false);
+  std::string transparent = find("transparent", false);
+  if (!transparent.empty() && transparent != "1")
+    throw std::runtime_error("radiant:transparent '" + transparent + "' is not 1");
+  info.transparent = transparent == "1";
   info.partial = find("partial", false);
   info.request_hash = find("request_hash", false);
   info.inputs = split(find("inputs", false), '\n');
@@ -164,11 +171,11 @@ ShardInfo parse_shard_metadata(const ImageMetadata& metadata) {
 
 void write_shard(TemporaryFile& file, const Film& film, const ShardInfo& info, const ImageMetadata& record,
                  MemoryBudget* budget) {
-  bool with_aovs = !film.aovs.empty();
+  bool with_aovs = !film.aovs.empty(), with_alpha = !film.alpha.empty();
   ImageWriteSpec spec;
   spec.width = film.width, spec.height = film.height;
   spec.x = film.x, spec.y = film.y, spec.full_width = film.full_width, spec.full_height = film.full_height;
-  spec.channel_names = channel_names(with_aovs);
+  spec.channel_names = channel_names(with_alpha, with_aovs);
   spec.type = PixelType::float32;
   spec.channel_types.assign(spec.channel_names.size(), PixelType::uint32);
   for (int c = 0; c < color_channels; ++c) spec.channel_types[size_t(c)] = PixelType::float32;
@@ -184,10 +191,12 @@ void write_shard(TemporaryFile& file, const Film& film, const ShardInfo& info, c
     uint32_t* out = &words[i * stride];
     FilmPixel pixel = film.pixels[i];
     FilmAovs aovs = with_aovs ? film.aovs[i] : FilmAovs{};
+    ExactSum alpha = with_alpha ? film.alpha[i] : ExactSum{};
     color3 mean = pixel_mean(pixel);
     for (int c = 0; c < color_channels; ++c) *out++ = std::bit_cast<uint32_t>(mean[c]);
     *out++ = pixel.samples;
-    PixelSums sums = pixel_sums(pixel, with_aovs ? &aovs : nullptr);
+    *out++ = pixel.negative_samples;
+    PixelSums sums = pixel_sums(pixel, with_alpha ? &alpha : nullptr, with_aovs ? &aovs : nullptr);
     for (int s = 0; s < sums.count; ++s) {
       const ExactSum& sum = *sums.sums[size_t(s)];
       uint64_t high = uint64_t(sum.high()), low = uint64_t(sum.low());
@@ -225,7 +234,7 @@ LoadedShard read_shard_film(const std::string& path, const ShardInfo& info, Memo
   check(source != nullptr, path, error);
   const ImageHeader& header = source->header();
   bool with_aovs = !info.aovs.empty();
-  std::vector<std::string> names = channel_names(with_aovs);
+  std::vector<std::string> names = channel_names(info.transparent, with_aovs);
   // Where each channel radiant needs lies in the file (EXR stores channels sorted by name).
   std::vector<int> file_channel(names.size());
   for (size_t n = color_channels; n < names.size(); ++n) {
@@ -243,11 +252,12 @@ LoadedShard read_shard_film(const std::string& path, const ShardInfo& info, Memo
   uint64_t pixels = uint64_t(width) * uint64_t(height);
   MemoryCharge read_memory(budget, saturating_multiply(pixels, uint64_t(header.channels) * sizeof(uint32_t)),
                            path + ": the shard's channels");
-  MemoryCharge film_memory(budget, saturating_multiply(pixels, film_pixel_bytes(with_aovs)), path + ": the shard's film");
+  MemoryCharge film_memory(budget, saturating_multiply(pixels, film_pixel_bytes(with_aovs, info.transparent)),
+                           path + ": the shard's film");
   std::vector<uint32_t> words(pixels * size_t(header.channels));
   check(source->read_channels(0, header.channels, PixelType::uint32, words.data()), path, source->error());
 
-  Film film = make_film(width, height, with_aovs);
+  Film film = make_film(width, height, with_aovs, info.transparent);
   film.x = info.x0, film.y = info.y0, film.full_width = info.full_width, film.full_height = info.full_height;
   uint32_t range = info.sample_end - info.sample_begin;
   for (size_t i = 0; i < film.pixels.size(); ++i) {
@@ -260,7 +270,9 @@ LoadedShard read_shard_film(const std::string& path, const ShardInfo& info, Memo
     FilmPixel& pixel = film.pixels[i];
     pixel.samples = word(color_channels);
     if (pixel.samples > range) check(false, path, place() + " holds more samples than its sample range");
-    PixelSums sums = pixel_sums(pixel, with_aovs ? &film.aovs[i] : nullptr);
+    pixel.negative_samples = word(color_channels + 1);
+    if (pixel.negative_samples > pixel.samples) check(false, path, place() + " holds more negative samples than samples");
+    PixelSums sums = pixel_sums(pixel, info.transparent ? &film.alpha[i] : nullptr, with_aovs ? &film.aovs[i] : nullptr);
     for (int s = 0; s < sums.count; ++s) {
       size_t first = color_channels + count_channels + size_t(s) * words_per_sum;
       int64_t high = int64_t(uint64_t(word(first + 1)) | uint64_t(word(first + 2)) << 32);

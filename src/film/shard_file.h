@@ -1,7 +1,8 @@
 // A shard file: an EXR holding a film's exact accumulators (not its resolved pixels), placed in
 // the full image by its data and display windows, with the metadata `radiant merge` checks.
-// Channels: R, G, B (the mean, as float, for viewers), `samples` (uint32) and, for every exact
-// sum (sum.R, sum2.R, ... and the AOV sums albedo.R, normal.X, depth.Z when kept), five uint32
+// Channels: R, G, B (the mean, as float, for viewers), `samples` and `negative_samples` (uint32,
+// src/film/film.h) and, for every exact sum (sum.R, sum2.R, ..., the coverage alpha.A of a
+// transparent render and the AOV sums albedo.R, normal.X, depth.Z when kept), five uint32
 // channels: its top bin (.t) and its high and low bins as two 32-bit halves each (.h0 .h1 .l0 .l1).
 #pragma once
 
@@ -28,6 +29,7 @@ struct ShardInfo {
   int x0 = 0, y0 = 0, x1 = 0, y1 = 0;     // its region of the full image, half-open
   int full_width = 0, full_height = 0;
   std::vector<std::string> aovs;  // the AOVs of the render's output (merge writes them)
+  bool transparent = false;       // holds coverage sums; merge writes RGBA
   int shard_index = 0, shard_count = 0;  // I and K of --shard I/K; K = 0 for --crop/--sample-range
   std::string split;                     // tiles, samples or both with --shard
   std::string partial;            // why the render stopped early ("" when complete)
@@ -44,9 +46,10 @@ struct ShardInfo {
 ImageMetadata shard_metadata(const ShardInfo& info);
 ShardInfo parse_shard_metadata(const ImageMetadata& metadata);
 
-// Writes `film` (its window and AOV sums as made) with `info`'s metadata and the attributes of
-// `record` it does not hold already (image/render_metadata.h: how the render was made), charging
-// `budget` for the channels first. Throws like write_image_file, and MemoryLimitError.
+// Writes `film` (its window, coverage and AOV sums as made) with `info`'s metadata and the
+// attributes of `record` it does not hold already (image/render_metadata.h: how the render was
+// made), charging `budget` for the channels first. Throws like write_image_file, and
+// MemoryLimitError.
 void write_shard(TemporaryFile& file, const Film& film, const ShardInfo& info, const ImageMetadata& record,
                  MemoryBudget* budget);
 
@@ -60,7 +63,8 @@ struct LoadedShard {
   MemoryCharge memory;
 };
 
-// The film of the shard at `path` (with AOV sums when its info lists AOVs), charging `budget`
+// The film of the shard at `path` (with AOV sums when its info lists AOVs, coverage sums when
+// it is transparent), charging `budget`
 // for it and for the read buffer first. Throws std::runtime_error "path: why" (a pixel names
 // itself) and MemoryLimitError.
 LoadedShard read_shard_film(const std::string& path, const ShardInfo& info, MemoryBudget* budget);

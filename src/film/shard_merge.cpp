@@ -35,6 +35,8 @@ void check_belong(const NamedShard& first, const NamedShard& s) {
   require_same(first, s, "radiant version", a.version, b.version, "rendered by different versions");
   require_same(first, s, "Embree ISA", a.isa, b.isa, "Embree's kernels for different ISAs may round intersections differently");
   require_same(first, s, "scene hash", a.scene_hash, b.scene_hash, "rendered from different scene files");
+  require_same(first, s, "alpha", a.transparent ? "transparent" : "opaque", b.transparent ? "transparent" : "opaque",
+               "rendered with and without --transparent");
   require_same(first, s, "settings hash", a.settings_hash, b.settings_hash, "rendered with different settings");
   require_same(first, s, "sampler", a.sampler, b.sampler, "rendered with different samplers");
   require_same(first, s, "seed", std::to_string(a.seed), std::to_string(b.seed), "rendered with different seeds");
@@ -142,12 +144,14 @@ ShardInfo check_shards(const std::vector<NamedShard>& shards, bool whole_image) 
 
 void add_shard(Film& merged, const Film& shard) {
   bool aovs = !merged.aovs.empty() && !shard.aovs.empty();
+  bool alpha = !merged.alpha.empty() && !shard.alpha.empty();
   for (int y = 0; y < shard.height; ++y)
     for (int x = 0; x < shard.width; ++x) {
       size_t from = size_t(y) * shard.width + x;
       size_t to = size_t(shard.y - merged.y + y) * merged.width + size_t(shard.x - merged.x + x);
       add_pixel(merged.pixels[to], shard.pixels[from]);
       if (aovs) add_aovs(merged.aovs[to], shard.aovs[from]);
+      if (alpha) merged.alpha[to].add(shard.alpha[from]);
     }
 }
 

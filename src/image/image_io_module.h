@@ -56,7 +56,9 @@ struct ImageWriteSpec {
   // Where the pixels lie in the full image (EXR data and display windows); a full size of 0 is
   // the image itself.
   int x = 0, y = 0, full_width = 0, full_height = 0;
-  std::vector<std::string> channel_names;  // one per channel of the pixels given
+  // One per channel of the pixels given. "A" is alpha: straight (unassociated) in 8- and 16-bit
+  // images, as PNG and TIFF store it; associated (premultiplied) in float ones, as EXR's.
+  std::vector<std::string> channel_names;
   PixelType type = PixelType::uint8;       // what the file stores (values quantized as given)
   // When set, one per channel, float32 or uint32: the pixels are 4-byte values of these types,
   // stored as they are (a shard's exact accumulators beside its float color), and `type` is unused.

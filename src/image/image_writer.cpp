@@ -11,14 +11,17 @@ namespace radiant {
 
 namespace {
 
+// Whether the image's fourth channel is the alpha of a transparent render.
+bool has_alpha(const OutputImage& image) { return image.channels.size() >= 4 && image.channels[3] == "A"; }
+
 // How `image` is stored in `path`: every channel as linear float in a float format, otherwise
-// the first three sRGB-encoded in 8 bits.
+// the color display-encoded in 8 or 16 bits, with its alpha when it has one.
 ImageWriteSpec output_spec(const std::string& path, const OutputImage& image) {
   bool as_float = is_float_format(path);
   ImageWriteSpec spec;
   spec.width = image.width;
   spec.height = image.height;
-  int channels = as_float ? int(image.channels.size()) : 3;
+  int channels = as_float ? int(image.channels.size()) : has_alpha(image) ? 4 : 3;
   spec.channel_names.assign(image.channels.begin(), image.channels.begin() + channels);
   if (as_float) spec.type = image.half ? PixelType::half : PixelType::float32;
   else spec.type = image.bit_depth == 16 ? PixelType::uint16 : PixelType::uint8;
@@ -41,12 +44,19 @@ void write_image(TemporaryFile& file, const OutputImage& image) {
   const float* source = image.pixels.data();
   if (!as_float) {
     // The display values of the color channels; the writer quantizes them to 8 or 16 bits.
-    size_t stride = image.channels.size();
-    data.resize(size_t(image.width) * image.height * 3);
+    // Float formats keep the film's associated (premultiplied) color, as OpenEXR defines it;
+    // display formats store straight alpha, as PNG defines it: the color is divided by its
+    // alpha before it is encoded (where alpha is 0 there is no color to divide).
+    size_t stride = image.channels.size(), out_stride = spec.channel_names.size();
+    bool alpha = out_stride == 4;
+    data.resize(size_t(image.width) * image.height * out_stride);
     for (size_t i = 0; i < size_t(image.width) * image.height; ++i) {
       const float* p = &image.pixels[i * stride];
-      color3 shown = display_encode({p[0], p[1], p[2]}, image.display);
-      for (int c = 0; c < 3; ++c) data[i * 3 + c] = shown[c];
+      color3 color = {p[0], p[1], p[2]};
+      if (alpha && p[3] > 0) color = color / p[3];
+      color3 shown = display_encode(color, image.display);
+      for (int c = 0; c < 3; ++c) data[i * out_stride + c] = shown[c];
+      if (alpha) data[i * out_stride + 3] = std::clamp(p[3], 0.0f, 1.0f);
     }
     source = data.data();
   }
@@ -56,6 +66,11 @@ void write_image(TemporaryFile& file, const OutputImage& image) {
 bool is_float_format(const std::string& path) {
   std::string ext = lowercase_extension(path);
   return ext == ".exr" || ext == ".hdr";
+}
+
+bool stores_alpha(const std::string& path) {
+  std::string ext = lowercase_extension(path);
+  return ext == ".png" || ext == ".tif" || ext == ".tiff" || ext == ".exr";
 }
 
 float linear_to_srgb(float v) {

@@ -10,7 +10,8 @@
 
 namespace radiant {
 
-// A float image with named channels ("R", "G", "B", then AOVs such as "albedo.R").
+// A float image with named channels ("R", "G", "B", "A" in a transparent render, then AOVs such
+// as "albedo.R"). With "A", R, G, B are associated (premultiplied) by it.
 struct OutputImage {
   int width = 0, height = 0;
   // Its place in the full image, kept by float formats (EXR data and display windows); a full
@@ -28,6 +29,9 @@ struct OutputImage {
 // chosen; PFM has no writer in OpenImageIO 2.4).
 bool is_float_format(const std::string& path);
 
+// True for the formats radiant writes with an alpha channel (--transparent): PNG, TIFF, EXR.
+bool stores_alpha(const std::string& path);
+
 // Checks, before any work, that an image can be written to `path`: its extension names a format
 // radiant writes (std::invalid_argument, a usage error, when not). Loads now whatever writing it
 // will need (the OpenImageIO module for any format but PNG), so that a missing module fails
@@ -35,8 +39,9 @@ bool is_float_format(const std::string& path);
 void check_image_output(const std::string& path);
 
 // Writes `image` to `file`, which is renamed onto its target when committed. Formats without
-// float storage get the first three channels through the exposure and view transform, in 8 or
-// 16 bits; float formats get every channel as linear radiance. Throws
+// float storage get the color through the exposure and view transform, in 8 or 16 bits, and the
+// alpha (when the image has one) straight, unassociated; float formats get every channel as
+// linear radiance, the color associated with the alpha. Throws
 // std::runtime_error naming the target and the writer's reason.
 void write_image(TemporaryFile& file, const OutputImage& image);
 

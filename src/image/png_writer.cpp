@@ -67,7 +67,7 @@ constexpr size_t after_header = 33;
 
 bool writes_as_png(const std::string& path, const ImageWriteSpec& spec) {
   size_t channels = spec.channel_names.size();
-  return spec.type == PixelType::uint8 && spec.channel_types.empty() && (channels == 1 || channels == 3) &&
+  return spec.type == PixelType::uint8 && spec.channel_types.empty() && (channels == 1 || channels == 3 || channels == 4) &&
          lowercase_extension(path) == ".png";
 }
 
@@ -81,7 +81,8 @@ std::vector<unsigned char> encode_png(const ImageWriteSpec& spec, const float* p
   image.version = PNG_IMAGE_VERSION;
   image.width = png_uint_32(spec.width);
   image.height = png_uint_32(spec.height);
-  image.format = channels == 1 ? PNG_FORMAT_GRAY : PNG_FORMAT_RGB;
+  // libpng's 8-bit formats with alpha take it straight (not premultiplied), as PNG stores it.
+  image.format = channels == 1 ? PNG_FORMAT_GRAY : channels == 4 ? PNG_FORMAT_RGBA : PNG_FORMAT_RGB;
   std::vector<unsigned char> bytes(PNG_IMAGE_PNG_SIZE_MAX(image));
   png_alloc_size_t size = bytes.size();
   if (!png_image_write_to_memory(&image, bytes.data(), &size, 0, values.data(), 0, nullptr)) {

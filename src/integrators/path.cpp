@@ -131,7 +131,8 @@ struct PathVariant {
       if (enabled<E>(ctx.effects, effect_absorption) && medium >= 0 && id.valid())
         throughput *= exp(ctx.absorption[size_t(medium)] * -(id.t * length(ray.direction)));
       if (!id.valid()) {
-        if (enabled<E>(ctx.effects, effect_environment)) {
+        // Depth 0 is the camera ray, also after it passed alpha cutouts.
+        if (enabled<E>(ctx.effects, effect_environment) && !(depth == 0 && ctx.transparent_background)) {
           color3 background = eval_environment(lights, normalize(ray.direction));
           float weight = 1;
           // The environment has a selection slot only when it exists (--effects=all can switch
@@ -156,7 +157,7 @@ struct PathVariant {
         continue;
       }
       HitShading f = make_hit_shading<E>(ctx.effects, hit, m, ray.direction);
-      if (first_hit && depth == 0) *first_hit = {bsdf_albedo(m), f.normal, id.t * length(ray.direction)};
+      if (first_hit && depth == 0) *first_hit = {bsdf_albedo(m), f.normal, id.t * length(ray.direction), 1};
 
       if (enabled<E>(ctx.effects, effect_emission) && !is_black(m.emission)) {
         const MaterialDesc& authored = ctx.scene->materials[hit.material];

@@ -28,11 +28,14 @@ struct RayCounts {
   }
 };
 
-// First-hit values for the albedo, normal and depth AOVs.
+// First-hit values for the albedo, normal and depth AOVs, and the coverage of a transparent
+// render: 1 where the camera ray met geometry (what an alpha cutout lets through does not count),
+// 0 where it saw the background; a fraction where Whitted blends a partly opaque surface.
 struct FirstHit {
   color3 albedo;
   vec3 normal;
   float depth = 0;
+  float coverage = 0;
 };
 inline bool is_finite(const FirstHit& hit) {
   return is_finite(hit.albedo) && is_finite(hit.normal) && std::isfinite(hit.depth);
@@ -49,6 +52,9 @@ struct RenderContext {
   uint32_t effects = effect_all;
   int max_depth = 8;
   float contribution_cutoff = 0.001f;
+  // A transparent render: camera rays that escape see black (the environment still lights what
+  // they hit, and is seen in reflections and through glass).
+  bool transparent_background = false;
 };
 
 // Radiance along a camera ray for one sample; `first_hit` (optional) receives AOV values.

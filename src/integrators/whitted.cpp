@@ -45,12 +45,16 @@ color3 trace(const RenderContext& ctx, const Ray& ray, int depth, color3 weight,
     case RayKind::refraction: counts.refraction++; break;
   }
   HitId id = intersect_nearest(*ctx.accel, ray);
-  if (!id.valid()) return background_radiance<E>(ctx, ray.direction);
+  if (!id.valid()) {
+    // A camera ray (also one through a partly opaque surface) sees no background when transparent.
+    if (kind == RayKind::camera && ctx.transparent_background) return {0, 0, 0};
+    return background_radiance<E>(ctx, ray.direction);
+  }
   SurfaceHit hit = make_surface_hit(*ctx.accel, ray, id);
   SurfaceMaterial resolved;
   const SurfaceMaterial& m = material_at<E>(ctx, hit, resolved);
   HitShading f = make_hit_shading<E>(ctx.effects, hit, m, ray.direction);
-  if (first_hit) *first_hit = {bsdf_albedo(m), f.normal, id.t * length(ray.direction)};
+  if (first_hit) *first_hit = {bsdf_albedo(m), f.normal, id.t * length(ray.direction), 1};
 
   color3 radiance;
   if (enabled<E>(ctx.effects, effect_emission)) radiance += m.emission;
@@ -82,8 +86,10 @@ color3 trace(const RenderContext& ctx, const Ray& ray, int depth, color3 weight,
   if (enabled<E>(ctx.effects, effect_alpha)) {
     if (m.opacity < 1) {
       Ray through = spawn_ray(hit, ray.direction);
-      radiance = radiance * m.opacity +
-                 (1 - m.opacity) * trace<E>(ctx, through, depth, weight * (1 - m.opacity), kind, counts, nullptr);
+      FirstHit behind;  // only its coverage is kept: the AOVs are the first surface's
+      radiance = radiance * m.opacity + (1 - m.opacity) * trace<E>(ctx, through, depth, weight * (1 - m.opacity), kind,
+                                                                   counts, first_hit ? &behind : nullptr);
+      if (first_hit) first_hit->coverage = m.opacity + (1 - m.opacity) * behind.coverage;
     }
   }
   return radiance;

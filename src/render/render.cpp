@@ -20,6 +20,7 @@
 #include "materials/volume_absorption.h"
 #include "render/camera.h"
 #include "render/progress_meter.h"
+#include "sampling/pixel_filter.h"
 
 namespace radiant {
 
@@ -49,6 +50,7 @@ RenderContext make_context(const PreparedScene& prepared, const ResolvedSettings
   ctx.effects = s.effects;
   ctx.max_depth = s.max_depth;
   ctx.contribution_cutoff = options.contribution_cutoff;
+  ctx.transparent_background = s.transparent;
   return ctx;
 }
 
@@ -98,7 +100,9 @@ struct PassRunner {
   const ResolvedSettings& s;
   RadianceFunction radiance;
   CameraFrame frame;
+  const PixelFilter& filter;
   bool want_aovs;
+  bool want_coverage;  // a transparent render
   uint32_t seed;
   Film& film;
   tbb::enumerable_thread_specific<RayCounts>& counts;
@@ -110,19 +114,23 @@ struct PassRunner {
     RayCounts& c = counts.local();
     for (uint32_t index = first; index < end; ++index) {
       SampleContext sample{s.sampler, uint32_t(y) * uint32_t(s.width) + uint32_t(x), index, uint32_t(s.spp), seed};
-      vec2 offset = sample_pixel(sample);
+      // The pixel pair warped by the filter: the box of one pixel keeps it as it is.
+      FilterSample placed = sample_filter(filter, sample_pixel(sample));
       vec2 lens = frame.lens_radius > 0 ? sample_2d(sample, lens_dimension) : vec2{0.5f, 0.5f};
-      std::optional<Ray> ray = generate_camera_ray(frame, float(x) + offset.x, float(y) + offset.y, lens);
+      std::optional<Ray> ray = generate_camera_ray(frame, float(x) + placed.position.x, float(y) + placed.position.y, lens);
       FirstHit first_hit;
       // Where the projection sees nothing (outside a fisheye's circle) the sample is black.
-      color3 value = ray ? radiance(ctx, *ray, sample, c, want_aovs ? &first_hit : nullptr) : color3{};
+      color3 value = ray ? radiance(ctx, *ray, sample, c, want_aovs || want_coverage ? &first_hit : nullptr) : color3{};
       if (!is_finite(value) || (want_aovs && !is_finite(first_hit))) {
         c.nonfinite_samples++;  // dropped, AOVs and all: never reaches the film
         continue;
       }
-      add_sample(p, value);
+      bool negative = placed.weight < 0;  // the weight's magnitude is one for the whole filter
+      add_sample(p, value, negative);
+      size_t film_index = size_t(y - s.window.y0) * film.width + (x - s.window.x0);
+      if (want_coverage) film.alpha[film_index].add(negative ? -first_hit.coverage : first_hit.coverage);
       if (want_aovs) {
-        FilmAovs& a = film.aovs[size_t(y - s.window.y0) * film.width + (x - s.window.x0)];
+        FilmAovs& a = film.aovs[film_index];
         for (int k = 0; k < 3; ++k) {
           a.albedo[k].add(first_hit.albedo[k]);
           a.normal[k].add(first_hit.normal[k]);
@@ -208,9 +216,9 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
   ResolvedSettings& s = result.settings;
   s = resolve_settings(prepared, options);
   int width = s.window.x1 - s.window.x0, height = s.window.y1 - s.window.y0;
-  size_t channels = output_channel_names(options.aovs).size();
+  size_t channels = output_channel_names(options.aovs, s.transparent).size();
   bool want_aovs = !options.aovs.empty();
-  result.image_memory = MemoryCharge(options.memory, render_image_bytes(width, height, channels, want_aovs),
+  result.image_memory = MemoryCharge(options.memory, render_image_bytes(width, height, channels, want_aovs, s.transparent),
                                      prepared.scene->source_path + ": a " + std::to_string(width) + "x" +
                                          std::to_string(height) + " render with " + std::to_string(channels) +
                                          " channels (film, AOVs and output image)");
@@ -224,7 +232,7 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
                                 prepared.scene->source_path + ": the materials prepared for shading");
   RenderContext ctx = make_context(prepared, s, lights, options);
 
-  result.film = make_film(width, height, want_aovs);
+  result.film = make_film(width, height, want_aovs, s.transparent);
   result.film.x = s.window.x0, result.film.y = s.window.y0;
   result.film.full_width = s.width, result.film.full_height = s.height;
   tbb::enumerable_thread_specific<RayCounts> counts;
@@ -240,8 +248,9 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
   uint64_t pixels = uint64_t(width) * uint64_t(height);
   ProgressMeter progress(options.progress && !options.quiet, pixels * uint64_t(s.samples.end - s.samples.begin),
                          stop.deadline);
-  PassRunner runner{ctx, s, select_integrator(s), make_camera_frame(s.camera, s.width, s.height),
-                    want_aovs, options.seed, result.film, counts, stop, progress};
+  PixelFilter filter = make_pixel_filter(s.filter, s.filter_radius);
+  PassRunner runner{ctx, s, select_integrator(s), make_camera_frame(s.camera, s.width, s.height), filter,
+                    want_aovs, s.transparent, options.seed, result.film, counts, stop, progress};
 
   // More threads than TBB's limit (the cores) are not started anyway, and asking prints a warning.
   int cores = tbb::this_task_arena::max_concurrency();
@@ -320,16 +329,19 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
   return result;
 }
 
-uint64_t render_image_bytes(int width, int height, size_t channels, bool with_aovs) {
-  // A film pixel (with its AOV sums when kept), a sample count and an activity byte; the output
-  // image's floats; for 8-bit formats three more floats and three bytes a pixel.
-  uint64_t per_pixel =
-      film_pixel_bytes(with_aovs) + sizeof(uint32_t) + 1 + channels * sizeof(float) + 3 * sizeof(float) + 3;
+uint64_t render_image_bytes(int width, int height, size_t channels, bool with_aovs, bool with_alpha) {
+  // A film pixel (with its AOV and coverage sums when kept), a sample count and an activity
+  // byte; the output image's floats; for 8-bit formats three more floats and three bytes a pixel
+  // (four with alpha).
+  uint64_t display_channels = with_alpha ? 4 : 3;
+  uint64_t per_pixel = film_pixel_bytes(with_aovs, with_alpha) + sizeof(uint32_t) + 1 + channels * sizeof(float) +
+                       display_channels * (sizeof(float) + 1);
   return saturating_multiply(uint64_t(std::max(width, 0)) * uint64_t(std::max(height, 0)), per_pixel);
 }
 
-std::vector<std::string> output_channel_names(const std::vector<std::string>& aovs) {
+std::vector<std::string> output_channel_names(const std::vector<std::string>& aovs, bool with_alpha) {
   std::vector<std::string> channels = {"R", "G", "B"};
+  if (with_alpha) channels.push_back("A");
   for (const std::string& aov : aovs) {
     if (aov == "albedo") channels.insert(channels.end(), {"albedo.R", "albedo.G", "albedo.B"});
     else if (aov == "normal") channels.insert(channels.end(), {"N.X", "N.Y", "N.Z"});
@@ -352,7 +364,8 @@ OutputImage film_to_image(const Film& film, const std::vector<std::string>& aovs
   image.height = film.height;
   image.x = film.x, image.y = film.y;
   image.full_width = film.full_width, image.full_height = film.full_height;
-  image.channels = output_channel_names(aovs);
+  bool with_alpha = !film.alpha.empty();
+  image.channels = output_channel_names(aovs, with_alpha);
   size_t stride = image.channels.size();
   image.pixels.resize(size_t(film.width) * film.height * stride);
   for (size_t i = 0; i < film.pixels.size(); ++i) {
@@ -360,6 +373,7 @@ OutputImage film_to_image(const Film& film, const std::vector<std::string>& aovs
     float* out = &image.pixels[i * stride];
     color3 mean = pixel_mean(p);
     *out++ = mean.x, *out++ = mean.y, *out++ = mean.z;
+    if (with_alpha) *out++ = pixel_alpha(film, i);
     double n = p.samples ? double(p.samples) : 1.0;
     static const FilmAovs no_aovs;  // a film made without AOV sums gives black AOVs
     const FilmAovs& a = film.aovs.empty() ? no_aovs : film.aovs[i];

@@ -42,6 +42,9 @@ struct ResolvedSettings {
   std::string mode_reason;  // why auto picked the mode ("" when given)
   SamplerKind sampler = SamplerKind::jittered;
   ViewTransform view = ViewTransform::standard;
+  bool transparent = false;  // RGBA with coverage as alpha, the background not seen
+  PixelFilterKind filter = PixelFilterKind::box;
+  float filter_radius = 0.5f;  // pixels: half the filter's width
   LightSampler light_sampler = LightSampler::power;  // as the light table resolved `automatic`
   CameraDesc camera;
   bool camera_framed = false;  // no camera in the file: one frames the scene
@@ -84,14 +87,17 @@ struct RenderResult {
 RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions& options);
 
 // What a render of `width` x `height` pixels with `channels` output channels allocates per
-// image: the film (with AOV sums when `with_aovs`), the sample counts and activity masks, the
-// output image and its 8-bit conversion for PNG.
-uint64_t render_image_bytes(int width, int height, size_t channels, bool with_aovs);
+// image: the film (with AOV sums when `with_aovs`, coverage sums when `with_alpha`), the sample
+// counts and activity masks, the output image and its 8-bit conversion for PNG.
+uint64_t render_image_bytes(int width, int height, size_t channels, bool with_aovs, bool with_alpha);
 
-// The channels film_to_image makes: R, G, B, then those of each AOV ("albedo.R", "N.X", "Z", ...).
-std::vector<std::string> output_channel_names(const std::vector<std::string>& aovs);
+// The channels film_to_image makes: R, G, B, A when `with_alpha`, then those of each AOV
+// ("albedo.R", "N.X", "Z", ...).
+std::vector<std::string> output_channel_names(const std::vector<std::string>& aovs, bool with_alpha);
 
 // The film as an image with the requested AOV channels (a cropped render's film is the window).
+// A film with coverage sums gives an A channel: R, G, B are then associated (premultiplied) by
+// it already, the background having added nothing.
 OutputImage film_to_image(const Film& film, const std::vector<std::string>& aovs);
 // How the image is to be stored, as the options ask: exposure, the resolved view transform, bit
 // depth and half floats (src/image/view_transform.h).

@@ -80,6 +80,13 @@ struct RenderOptions {
   std::optional<ViewTransform> view;
   int bit_depth = 8;
   bool half_float = false;
+  // --transparent: RGBA output whose alpha is the coverage of geometry; camera rays that miss
+  // see no background (the environment still lights the scene), as Cycles' transparent film.
+  std::optional<bool> transparent;
+  // --filter and --filter-width: the pixel filter and its full width in pixels (twice pbrt's
+  // radius); unset: the scene's, then box, and each filter's own default width.
+  std::optional<PixelFilterKind> filter;
+  std::optional<float> filter_width;
   float noise_threshold = 0;      // 0 = off
   float contribution_cutoff = 0.001f;  // Whitted: stop recursing below this weight
   bool quiet = false;

@@ -6,6 +6,7 @@
 #include "render/camera.h"
 #include "render/render.h"
 #include "render/shard_plan.h"
+#include "sampling/pixel_filter.h"
 
 namespace radiant {
 
@@ -105,6 +106,12 @@ ResolvedSettings resolve_settings(const PreparedScene& prepared, const RenderOpt
   if (r.max_depth < 1) throw std::invalid_argument("--max-depth must be at least 1");
 
   r.view = options.view ? *options.view : scene.settings.view.value_or(ViewTransform::standard);
+  r.transparent = options.transparent ? *options.transparent : scene.settings.transparent.value_or(false);
+  r.filter = options.filter ? *options.filter : scene.settings.filter.value_or(PixelFilterKind::box);
+  std::optional<float> width = options.filter_width ? options.filter_width : scene.settings.filter_width;
+  r.filter_radius = width ? *width / 2 : default_filter_radius(r.filter);
+  if (!(r.filter_radius > 0 && r.filter_radius <= max_filter_width / 2))
+    throw std::invalid_argument("--filter-width must be in (0, " + std::to_string(int(max_filter_width)) + "] pixels");
   r.environment_color = options.env_color ? *options.env_color : scene.environment.color;
   r.environment_map = options.env_map.empty() ? scene.environment.map_path : options.env_map;
 

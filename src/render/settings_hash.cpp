@@ -60,6 +60,8 @@ std::string settings_hash(const ResolvedSettings& s, const RenderOptions& option
   text << s.environment_map << '\n' << s.effects << ' ' << s.compiled_variant << ' ';
   put(text, options.contribution_cutoff);
   text << (options.aovs.empty() ? "no-aov-sums" : "aov-sums");
+  text << (s.transparent ? " transparent " : " opaque ") << int(s.filter) << ' ';
+  put(text, s.filter_radius);
   return text_hash(text.str());
 }
 

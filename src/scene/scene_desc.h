@@ -215,6 +215,10 @@ enum class RenderMode { auto_select, whitted, path, naive };
 enum class SamplerKind { grid, random, jittered, sobol };
 // How radiance becomes a displayed value in 8- and 16-bit images (src/image/view_transform.h).
 enum class ViewTransform { standard, linear, filmic, agx };
+// The pixel reconstruction filter (src/sampling/pixel_filter.h), and the widest one accepted, in
+// pixels (a radius of 32).
+enum class PixelFilterKind { box, triangle, gaussian, mitchell, blackman_harris };
+constexpr float max_filter_width = 64;
 // How the path tracer chooses the light to sample at a point: in proportion to power, by a light
 // BVH's estimate of each light's contribution there, or the BVH when there are many lights.
 enum class LightSampler { automatic, power, bvh };
@@ -225,6 +229,9 @@ struct SceneSettings {
   std::optional<RenderMode> mode;
   std::optional<SamplerKind> sampler;
   std::optional<ViewTransform> view;
+  std::optional<bool> transparent;  // RGBA output, the background not seen (RenderOptions::transparent)
+  std::optional<PixelFilterKind> filter;
+  std::optional<float> filter_width;  // pixels; default per filter
 };
 
 // ---------------------------------------------------------------- the scene

@@ -26,17 +26,20 @@ ShardInfo window_info() {
   info.aovs = {"albedo", "variance"};
   info.shard_index = 1, info.shard_count = 4, info.split = "both";
   info.request_hash = "0011223344556677", info.inputs = {"/scenes/a b,c.bin", "/scenes/tex.png"};
+  info.transparent = true;
   return info;
 }
 
-// A 3x2 film at (5, 1) of a 10x4 image, with AOV sums, of values that use every bin and sign.
+// A 3x2 film at (5, 1) of a 10x4 image, with AOV and coverage sums, of values that use every
+// bin and sign, some of them negatively weighted.
 Film window_film() {
-  Film film = make_film(3, 2, true);
+  Film film = make_film(3, 2, true, true);
   film.x = 5, film.y = 1, film.full_width = 10, film.full_height = 4;
   for (size_t i = 0; i < film.pixels.size(); ++i)
     for (int s = 0; s < 16; ++s) {
       float v = float(i + 1) * (s % 3 ? 0.37f : 3.0e30f) + float(s) * 1e-30f;
-      add_sample(film.pixels[i], {v, v * 0.5f, 1e-40f * float(s)});
+      add_sample(film.pixels[i], {v, v * 0.5f, 1e-40f * float(s)}, s % 5 == 0);
+      film.alpha[i].add(s % 5 == 0 ? -0.75 : 1.0);
       FilmAovs& a = film.aovs[i];
       for (int k = 0; k < 3; ++k) a.albedo[k].add(0.25 * k), a.normal[k].add(k == 1 ? -0.9 : 0.1 * s);
       a.depth.add(1e38);
@@ -69,6 +72,8 @@ TEST_CASE("shard file: every exact sum, sample count, window and metadata field 
   for (size_t i = 0; i < film.pixels.size(); ++i) {
     CAPTURE(i);
     CHECK(loaded.film.pixels[i].samples == film.pixels[i].samples);
+    CHECK(loaded.film.pixels[i].negative_samples == 4);
+    CHECK(loaded.film.alpha[i] == film.alpha[i]);
     for (int c = 0; c < 3; ++c) {
       CHECK(loaded.film.pixels[i].sum[c] == film.pixels[i].sum[c]);
       CHECK(loaded.film.pixels[i].sum_squares[c] == film.pixels[i].sum_squares[c]);
@@ -114,4 +119,13 @@ TEST_CASE("shard file: an EXR without radiant's metadata, or with a sum no rende
   rewrite.commit();
   CHECK_THROWS_WITH_AS(read_shard_film(path, info, nullptr),
                        (path + ": pixel (5, 1): channel sum.R.t holds a sum no render makes").c_str(), std::runtime_error);
+
+  // More negatively weighted samples than its 16 samples (checked before the sums).
+  for (size_t c = 0; c < header.channel_names.size(); ++c)
+    if (header.channel_names[c] == "negative_samples") words[c] = 17;  // pixel (5, 1)
+  OutputSet again;
+  write_image_file(again.create(path), spec, words.data());
+  again.commit();
+  CHECK_THROWS_WITH_AS(read_shard_film(path, info, nullptr), (path + ": pixel (5, 1) holds more negative samples than samples").c_str(),
+                       std::runtime_error);
 }

@@ -112,14 +112,14 @@ TEST_CASE("image files: radiant's PNG reader agrees with OpenImageIO's, alpha re
   }
   // Partly transparent: OpenImageIO premultiplies on reading; the file's own values are unassociated.
   fs::path file = dir.file("half.png");
-  // OpenImageIO's writer unpremultiplies: the file stores 0.2 / 0.4 = 0.5 (127) and alpha 102.
+  // A display image's alpha is written straight, as given: the file stores 0.2 (51) and alpha 102.
   write_test_image(file, 1, 1, {"R", "G", "B", "A"}, {0.2f, 0.2f, 0.2f, 0.4f});
   std::string error;
   auto input = open_image_file(file.string(), error);
   REQUIRE(input);
   std::vector<unsigned char> bytes(4);
   REQUIRE(input->read(4, PixelType::uint8, bytes.data()));
-  CHECK(bytes == std::vector<unsigned char>{127, 127, 127, 102});
+  CHECK(bytes == std::vector<unsigned char>{51, 51, 51, 102});
 }
 
 TEST_CASE("image files: a truncated PNG fails with libpng's reason and prints nothing") {
