@@ -187,19 +187,6 @@ void decode_primitive(tinygltf::Model& model, GltfContext& context, tinygltf::Pr
   primitive.extensions.erase(draco_extension);
 }
 
-// The GLB `bytes` with its JSON chunk replaced by `json` (padded with spaces, as GLB asks).
-std::string with_json_chunk(const std::string& bytes, std::string json) {
-  uint32_t old_length = 0;
-  std::memcpy(&old_length, bytes.data() + 12, 4);
-  while (json.size() % 4) json += ' ';
-  std::string rest = bytes.substr(20 + size_t(old_length));
-  auto u32 = [](uint64_t v) {
-    uint32_t value = uint32_t(v);
-    return std::string(reinterpret_cast<const char*>(&value), 4);
-  };
-  return "glTF" + u32(2) + u32(20 + json.size() + rest.size()) + u32(json.size()) + "JSON" + json + rest;
-}
-
 }  // namespace
 
 bool with_draco_index_views(const std::string& file_bytes, bool binary, std::string& rewritten) {
@@ -225,7 +212,7 @@ bool with_draco_index_views(const std::string& file_bytes, bool binary, std::str
     }
   }
   if (!changed) return false;
-  rewritten = binary ? with_json_chunk(file_bytes, document.dump()) : document.dump();
+  rewritten = binary ? glb_with_json_chunk(file_bytes, document.dump()) : document.dump();
   return true;
 }
 

@@ -15,6 +15,7 @@
 #include "gltf/gltf_variants.h"
 #include "gltf/gltf_memory.h"
 #include "gltf/gltf_meshes.h"
+#include "gltf/gltf_meshopt.h"
 #include "gltf/gltf_nodes.h"
 
 namespace radiant {
@@ -27,7 +28,7 @@ const std::vector<std::string> supported_extensions = {
     "KHR_materials_specular",     "KHR_materials_clearcoat",        "KHR_materials_sheen",
     "KHR_materials_volume",       "KHR_materials_variants",         "KHR_materials_iridescence",
     "KHR_materials_anisotropy",   "KHR_mesh_quantization",          "KHR_draco_mesh_compression",
-    "EXT_texture_webp"};
+    "EXT_texture_webp",           "EXT_meshopt_compression"};
 
 bool is_supported(const std::string& name) {
   return std::find(supported_extensions.begin(), supported_extensions.end(), name) != supported_extensions.end();
@@ -40,12 +41,15 @@ std::string read_gltf_file(const std::string& path, const LoadOptions& options) 
 }
 
 // Refuses what must be refused before tinygltf allocates anything, and charges the buffers it
-// will allocate: each declared length, and once more for a data URI's decoded copy.
-void check_declarations(const GltfDeclarations& declared, const std::string& path, const LoadOptions& options) {
+// will allocate: each declared length, and once more for a data URI's decoded copy. A meshopt
+// placeholder buffer is never allocated; its bufferViews are charged as they are decoded.
+void check_declarations(const GltfDeclarations& declared, const std::string& path, const LoadOptions& options,
+                        bool binary, bool uses_meshopt) {
   for (const std::string& name : declared.extensions_required)
     if (!is_supported(name))
       throw LoadError(path + ": extensionsRequired: unsupported extension " + name);
   for (size_t i = 0; i < declared.buffer_byte_lengths.size(); ++i) {
+    if (uses_meshopt && is_meshopt_placeholder(declared, i, binary)) continue;
     uint64_t length = declared.buffer_byte_lengths[i];
     bool data_uri = i < declared.buffer_uris.size() && declared.buffer_uris[i] == data_uri_marker;
     charge_load(options, data_uri ? saturating_multiply(length, 2) : length,
@@ -66,7 +70,8 @@ tinygltf::Model parse(const std::string& path, const std::string& bytes, const L
   charge_load(options, gltf_model_bytes(counts, json.size()),
               path + ": the JSON document (" + std::to_string(counts.values) + " values)");
   GltfDeclarations declared = read_gltf_declarations(json, path);
-  check_declarations(declared, path, options);
+  bool uses_meshopt = json.find(meshopt_extension) != std::string::npos;
+  check_declarations(declared, path, options, binary, uses_meshopt);
   GltfFileAccess access;
   access.base_dir = std::filesystem::absolute(path).parent_path();
   access.file = path;
@@ -81,8 +86,15 @@ tinygltf::Model parse(const std::string& path, const std::string& bytes, const L
   if (json.find("KHR_draco_mesh_compression") != std::string::npos)
     charge_load(options, saturating_add(gltf_model_bytes(counts, json.size()), bytes.size()),
                 path + ": the JSON document, rewritten for Draco");
-  std::string rewritten;
-  const std::string& document = with_draco_index_views(bytes, binary, rewritten) ? rewritten : bytes;
+  std::string with_views, with_placeholders;
+  const std::string* rewritten = with_draco_index_views(bytes, binary, with_views) ? &with_views : &bytes;
+  // Meshopt files are rewritten the same way, with the same charge.
+  if (uses_meshopt)
+    charge_load(options, saturating_add(gltf_model_bytes(counts, json.size()), rewritten->size()),
+                path + ": the JSON document, rewritten for " + meshopt_extension);
+  if (uses_meshopt && with_meshopt_placeholders(*rewritten, binary, declared, with_placeholders))
+    rewritten = &with_placeholders;
+  const std::string& document = *rewritten;
   const auto* data = reinterpret_cast<const unsigned char*>(document.data());
   bool ok = false;
   try {
@@ -114,6 +126,7 @@ SceneDesc load_gltf(const std::string& path, const LoadOptions& given) {
   context.variant = selected_variant(context);
   for (const std::string& name : model.extensionsUsed)
     if (!is_supported(name)) context.warn("extension " + name + " is not supported and is ignored");
+  decode_meshopt_views(model, context);
   convert_textures(context);
   convert_materials(context);
   if (options.animation_time) {
