@@ -19,6 +19,10 @@ struct RenderJob {
   std::string format = "png";  // the extension that names the format of `-o -`
   std::optional<uint64_t> max_memory_bytes;  // a batch render line's own --max-memory
   bool skip_existing = false;  // a shard already complete at `output` is not rendered again
+  std::optional<FrameNote> frame;  // an animation frame, noted in the stats
+  // A batch line's moment of the scene's animation (--time, --frame): unset = the loaded scene.
+  std::optional<double> animation_time;
+  std::string animation;
 };
 
 // A name whose extension names the image format: the output, or for `-o -` "-.FORMAT".

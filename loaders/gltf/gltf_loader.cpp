@@ -113,33 +113,72 @@ tinygltf::Model parse(const std::string& path, const std::string& bytes, const L
   return model;
 }
 
+// The animation writes into a document's nodes; their rest pose is put back when the scene at
+// that time is made (or fails), so that the next time sampled starts from the file's own state.
+struct RestPose {
+  tinygltf::Model& model;
+  std::vector<tinygltf::Node> nodes;
+  bool saved;
+  ~RestPose() {
+    if (saved) model.nodes = std::move(nodes);
+  }
+};
+
 }  // namespace
 
-SceneDesc load_gltf(const std::string& path, const LoadOptions& given) {
+std::shared_ptr<GltfDocument> read_gltf_document(const std::string& path, const LoadOptions& given) {
   BudgetedLoadOptions budgeted(given);
   const LoadOptions& options = budgeted.options;
-  std::string bytes = read_gltf_file(path, options);
+  auto document = std::make_shared<GltfDocument>();
+  document->path = path;
+  SceneDesc reading;  // collects the warnings of reading and decoding
+  {
+    std::string bytes = read_gltf_file(path, options);
+    document->model = parse(path, bytes, options, reading);
+  }
+  GltfContext context{document->model, path, options, reading, {}, {}, -1};
+  decode_meshopt_views(document->model, context);
+  decode_draco_primitives(document->model, context);
+  document->warnings = std::move(reading.warnings);
+  return document;
+}
+
+SceneDesc gltf_scene(GltfDocument& document, const LoadOptions& given) {
+  BudgetedLoadOptions budgeted(given);
+  const LoadOptions& options = budgeted.options;
+  tinygltf::Model& model = document.model;
   SceneDesc scene;
-  scene.name = std::filesystem::path(path).stem().string();
-  tinygltf::Model model = parse(path, bytes, options, scene);
-  GltfContext context{model, path, options, scene, {}, {}, -1};
+  scene.name = std::filesystem::path(document.path).stem().string();
+  scene.warnings = document.warnings;
+  GltfContext context{model, document.path, options, scene, {}, {}, -1};
   context.variant = selected_variant(context);
   for (const std::string& name : model.extensionsUsed)
     if (!is_supported(name)) context.warn("extension " + name + " is not supported and is ignored");
-  decode_meshopt_views(model, context);
   convert_textures(context);
   convert_materials(context);
+  RestPose rest_pose{model, {}, false};
   if (options.animation_time) {
     int animation = find_animation(context, options.animation);
-    if (animation < 0) context.warn("--time: the file has no animations; its static state is shown");
-    else apply_animation(model, context, animation, *options.animation_time);
+    if (animation < 0) {
+      context.warn("--time: the file has no animations; its static state is shown");
+    } else {
+      context.charge(saturating_multiply(model.nodes.size(), sizeof(tinygltf::Node)), "the nodes' rest pose");
+      rest_pose.nodes = model.nodes;
+      rest_pose.saved = true;
+      apply_animation(model, context, animation, *options.animation_time);
+    }
   }
-  decode_draco_primitives(model, context);
   convert_meshes(context);
   convert_nodes(context);
   if (scene.degenerate_triangles_dropped > 0)
     context.warn(std::to_string(scene.degenerate_triangles_dropped) + " degenerate triangles dropped");
   return scene;
+}
+
+SceneDesc load_gltf(const std::string& path, const LoadOptions& given) {
+  BudgetedLoadOptions budgeted(given);
+  std::shared_ptr<GltfDocument> document = read_gltf_document(path, budgeted.options);
+  return gltf_scene(*document, budgeted.options);
 }
 
 }  // namespace radiant
