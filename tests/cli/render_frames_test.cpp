@@ -119,7 +119,7 @@ TEST_CASE("batch: render lines at frames of their own reuse the scene file, read
   REQUIRE(alone.exit_code == 0);
   CHECK(read_bytes(dir.file("alone.png")) == read_bytes(dir.file("b1.png")));
   CHECK(read_bytes(dir.file("b1.png")) != read_bytes(dir.file("b3.png")));
-  fs::path many = dir.write("many.txt", "scene slide.gltf\nrender -o m-#.png --frames 0-2" + noisy + "\n");
+  fs::path many = dir.write("many.txt", "scene slide.gltf\nrender -o m.png --frames 0-2" + noisy + "\n");
   CommandResult refused = run_radiant("batch " + quoted(many));
   CHECK(refused.exit_code == 1);
   CHECK(refused.err.find("give one render line per frame") != std::string::npos);
