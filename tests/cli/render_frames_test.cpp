@@ -75,7 +75,7 @@ TEST_CASE("render --frames: the noise changes from frame to frame unless --same-
   CHECK(read_bytes(dir.file("t.png")) == read_bytes(dir.file("s-1.png")));
 }
 
-TEST_CASE("render --frames: usage errors exit 2; a failing frame is named, and the frames before it stay") {
+TEST_CASE("render --frames: usage errors exit 2, and a failing frame is named while the frames before it stay") {
   ScratchDir dir("render-frames-errors");
   fs::path scene = dir.write("slide.gltf", sliding_triangle());
   CommandResult no_run = run_radiant("render " + quoted(scene) + noisy + " --frames 0-2 -o " + quoted(dir.file("out.png")));
