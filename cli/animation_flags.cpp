@@ -13,16 +13,30 @@ void AnimationFlags::bind(CLI::App& app) {
                     ->check(number_in(-largest_time, largest_time));
   frame_option = app.add_option("--frame", frame, "glTF: sample the animation at frame N (with --fps)")
                      ->check(CLI::Range(0LL, 1000000000LL));
-  fps_option = app.add_option("--fps", fps, "Frames per second of --frame")->check(positive_number(1e6));
+  frames_option = app.add_option("--frames", frames_text,
+                                 "glTF: render frames A-B in one process; -o holds # for the frame number");
+  fps_option = app.add_option("--fps", fps, "Frames per second of --frame (and of --frames, default 24)")
+                   ->check(positive_number(1e6));
   app.add_option("--animation", animation, "glTF animation by name or index (default: the first)");
+  same_noise_option = app.add_flag("--same-noise", same_noise,
+                                   "Every frame with the noise of --seed itself (Cycles: Animated Seed off)");
 }
 
-void AnimationFlags::finish(LoadOptions& load) const {
-  if (*time_option && *frame_option) throw CLI::ValidationError("--time", "give --time or --frame, not both");
+void AnimationFlags::finish(LoadOptions& load) {
+  if (int(bool(*time_option)) + int(bool(*frame_option)) + int(bool(*frames_option)) > 1)
+    throw CLI::ValidationError("--time", "give one of --time, --frame and --frames");
   if (*frame_option && !*fps_option) throw CLI::ValidationError("--frame", "needs --fps");
-  if (*fps_option && !*frame_option) throw CLI::ValidationError("--fps", "only applies with --frame");
+  if (*fps_option && !*frame_option && !*frames_option)
+    throw CLI::ValidationError("--fps", "only applies with --frame or --frames");
+  if (*same_noise_option && !*frame_option && !*frames_option)
+    throw CLI::ValidationError("--same-noise", "only applies with --frame or --frames");
   if (*time_option) load.animation_time = time;
-  if (*frame_option) load.animation_time = double(frame) / fps;
+  if (*frame_option) load.animation_time = frame_time(frame);
+  if (*frames_option) {
+    frames = parse_frame_range("--frames", frames_text);
+    if (!*fps_option) fps = default_frames_fps;
+    load.animation_time = frame_time(frames->first);
+  }
   if (!animation.empty() && !load.animation_time) load.animation_time = 0.0;
   load.animation = animation;
 }

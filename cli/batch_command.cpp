@@ -70,7 +70,7 @@ std::vector<BatchStep> parse_script(std::istream& in, const std::string& name, c
         have_scene = true;
       } else if (words[0] == "render") {
         if (!have_scene) throw std::invalid_argument("'render' before any 'scene' line");
-        step.job = parse_render_line(words, base);
+        step.job = parse_render_line(words, base, true);
       } else {
         throw std::invalid_argument("unknown command '" + words[0] + "' (expected scene or render)");
       }
@@ -87,21 +87,25 @@ std::vector<BatchStep> parse_script(std::istream& in, const std::string& name, c
 namespace {
 
 // A scene of the script, loaded and prepared while the script is checked, and kept until its
-// views are done.
+// views are done. When a view samples the animation at a moment of its own (--time, --frame),
+// the file is kept read and parsed too, so that every such view reuses it.
 struct LoadedScene {
   std::string path;
   std::unique_ptr<PreparedScene> prepared;  // its accelerator holds its own charge
+  std::unique_ptr<SceneFile> file;          // kept for views at moments of their own
+  int file_reads = 0;                       // how often the file was read and parsed (stats)
   uint64_t scene_memory = 0;                // what loading charged to the budget
   double load_seconds = 0;                  // loading and building, paid by its first view
 
   void release(MemoryBudget& budget) {
     prepared.reset();
+    file.reset();
     budget.release(scene_memory);
     scene_memory = 0;
   }
 };
 
-LoadedScene load_batch_scene(const BatchStep& step, bool allow_external, MemoryBudget& budget) {
+LoadedScene load_batch_scene(const BatchStep& step, bool allow_external, bool keep_file, MemoryBudget& budget) {
   auto start = std::chrono::steady_clock::now();
   LoadOptions options;
   options.allow_external_files = allow_external;
@@ -112,13 +116,48 @@ LoadedScene load_batch_scene(const BatchStep& step, bool allow_external, MemoryB
   LoadedScene loaded;
   loaded.path = path;
   uint64_t used_before = budget.used();
-  SceneDesc scene = load_scene(path, options);
+  SceneDesc scene;
+  loaded.file_reads = 1;
+  if (keep_file) {
+    loaded.file = std::make_unique<SceneFile>(read_scene_file(path, options));
+    scene = scene_from_file(*loaded.file, options);
+  } else {
+    scene = load_scene(path, options);
+  }
   loaded.scene_memory = budget.used() - used_before;
   RenderOptions render_options;
   render_options.memory = &budget;
   loaded.prepared = std::make_unique<PreparedScene>(prepare_scene(std::move(scene), render_options));
   loaded.load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return loaded;
+}
+
+// True when a render line after scene step `index` (and before the next scene) has a moment of
+// its own.
+bool views_sample_animation(const std::vector<BatchStep>& steps, size_t index) {
+  for (size_t i = index + 1; i < steps.size() && steps[i].scene.empty(); ++i)
+    if (steps[i].job.animation_time) return true;
+  return false;
+}
+
+// Renders `job` at its own moment of `loaded`'s file: the scene made from the parsed file at that
+// time, prepared, rendered, and given back.
+void render_at_moment(LoadedScene& loaded, RenderJob job, PhaseTimes& times) {
+  MemoryBudget& budget = *job.options.memory;
+  uint64_t used_before = budget.used();
+  {
+    auto start = std::chrono::steady_clock::now();
+    LoadOptions options;
+    options.budget = &budget;
+    options.animation_time = job.animation_time;
+    options.animation = job.animation;
+    SceneDesc scene = scene_from_file(*loaded.file, options);
+    if (job.frame) job.frame->scene_reads = loaded.file_reads;
+    times.load += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    PreparedScene prepared = prepare_scene(std::move(scene), job.options);
+    run_render_job(loaded.path, prepared, job, times);
+  }
+  budget.release(budget.used() - used_before);
 }
 
 // Everything about a view that can be known before rendering: its settings (size, crop, camera,
@@ -173,7 +212,8 @@ void run_script(const std::vector<BatchStep>& steps, const std::string& script_n
   for (size_t i = 0; i < steps.size(); ++i) {
     const BatchStep& step = steps[i];
     try {
-      if (!step.scene.empty()) scenes.push_back(load_batch_scene(step, settings.allow_external_files, budget));
+      if (!step.scene.empty())
+        scenes.push_back(load_batch_scene(step, settings.allow_external_files, views_sample_animation(steps, i), budget));
       else check_view(scenes.back(), jobs[i]);
     } catch (const std::bad_alloc&) {
       throw at_line(step, out_of_memory_message(step.scene.empty() ? scenes.back().path : step.scene, "loading", budget));
@@ -206,7 +246,8 @@ void run_script(const std::vector<BatchStep>& steps, const std::string& script_n
       PhaseTimes times;
       times.load = load_seconds;
       load_seconds = 0;  // the load is paid once, by the first view
-      run_render_job(loaded.path, *loaded.prepared, job, times);
+      if (job.animation_time) render_at_moment(loaded, job, times);
+      else run_render_job(loaded.path, *loaded.prepared, job, times);
     } catch (const std::bad_alloc&) {
       throw at_line(step, out_of_memory_message(loaded.path, "rendering", budget));
     } catch (const std::exception& e) {

@@ -10,6 +10,7 @@
 #include "commands.h"
 #include "load_scene.h"
 #include "option_parsing.h"
+#include "render_frames.h"
 #include "render_job.h"
 #include "shard_output.h"
 #include "shard_request.h"
@@ -31,7 +32,21 @@ const char* render_examples =
     "  radiant render scene.gltf -o preview.png --effects=-shadows,-indirect --width 320\n"
     "  cat room.scene | radiant render - -o room.png --mode path --spp 256 --threads 2\n"
     "  radiant render scene.gltf -o - --format exr --stats stats.json | oiiotool - -o out.tif\n"
-    "  radiant render scene.gltf -o shard-3.exr --shard 3/8 --split both   # then: radiant merge shard-*.exr -o out.exr\n";
+    "  radiant render scene.gltf -o shard-3.exr --shard 3/8 --split both   # then: radiant merge shard-*.exr -o out.exr\n"
+    "  radiant render walk.glb --frames 0-99 --fps 24 -o out/frame-####.png\n";
+
+// What is wrong with --frames and the outputs, or "".
+std::string frames_usage_problem(const std::string& output, const std::string& stats_path, const RenderOptions& options) {
+  if (!has_frame_placeholder(output))
+    return "--frames writes one image a frame: -o needs a run of # for the frame number (e.g. out/frame-####.png), got '" +
+           output + "'";
+  if (!stats_path.empty() && !has_frame_placeholder(stats_path))
+    return "--frames writes --stats once a frame: it needs a run of # too (e.g. stats-####.json), got '" + stats_path + "'";
+  if (writes_shard(options))
+    return "--frames renders whole frames and cannot be combined with --shard or --sample-range: give each job its own "
+           "frames (--frames A-B, or --frame N with --shard)";
+  return "";
+}
 
 // What is wrong with the shard flags, or "".
 std::string shard_usage_problem(const std::string& scene_path, const std::string& output, const RenderOptions& options,
@@ -103,9 +118,21 @@ int render_main(int argc, char** argv) {
     std::cerr << "radiant render: --aov needs an EXR output (got '" << image_format_name(job) << "')\n";
     return exit_usage;
   }
+  if (animation.frames) {
+    if (std::string problem = frames_usage_problem(output, stats_path, options); !problem.empty()) {
+      std::cerr << "radiant render: " << problem << "\n";
+      return exit_usage;
+    }
+    job.output = frame_path(output, animation.frames->first);  // checked like one render's outputs
+    if (!stats_path.empty()) job.stats_path = frame_path(stats_path, animation.frames->first);
+  }
   if (std::string problem = shard_usage_problem(scene_path, output, options, skip_existing); !problem.empty()) {
     std::cerr << "radiant render: " << problem << "\n";
     return exit_usage;
+  }
+  if (*animation.frame_option) {
+    job.options.seed = animation.seed_of_frame(options.seed, animation.frame);
+    job.frame = FrameNote{animation.frame, 1};
   }
 
   MemoryBudget budget = flags.memory_budget();
@@ -133,11 +160,12 @@ int render_main(int argc, char** argv) {
     report_shard_skipped(output, options.quiet);
     return exit_ok;
   }
+  load_options.allow_external_files = flags.allow_external_files;
+  load_options.budget = &budget;
+  load_options.gltf_scene = flags.gltf_scene;
+  load_options.material_variant = flags.variant;
+  if (animation.frames) return render_frames({scene_path, output, stats_path, job, load_options, start}, animation);
   try {
-    load_options.allow_external_files = flags.allow_external_files;
-    load_options.budget = &budget;
-    load_options.gltf_scene = flags.gltf_scene;
-    load_options.material_variant = flags.variant;
     SceneDesc scene = load_scene(scene_path, load_options);
     times.load = seconds_since(start);
     if (!options.quiet)

@@ -109,7 +109,7 @@ void run_render_job(const std::string& scene_path, PreparedScene& prepared, cons
   }
   times.write = std::chrono::duration<double>(Clock::now() - write_start).count();
   if (!job.stats_path.empty())
-    output_file(outputs, job.stats_path, "json").write(render_stats_json(scene_path, job.output, result, times));
+    output_file(outputs, job.stats_path, "json").write(render_stats_json(scene_path, job.output, result, times, job.frame ? &*job.frame : nullptr));
   outputs.commit();
   std::string written = is_standard_output(job.output) ? "standard output" : job.output;
   if (!job.options.quiet) std::cerr << "radiant: " << render_summary(written, result, times) << "\n";

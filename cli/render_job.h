@@ -22,6 +22,10 @@ struct RenderJob {
   std::string shard_request_hash;  // of the command line, recorded in a shard (shard_request.h)
   std::string command_line;        // what asked for this render, recorded in the image
   bool write_metadata = true;      // --no-metadata: no record in the image, for identical bytes
+  std::optional<FrameNote> frame;  // an animation frame, noted in the stats
+  // A batch line's moment of the scene's animation (--time, --frame): unset = the loaded scene.
+  std::optional<double> animation_time;
+  std::string animation;
 };
 
 // A name whose extension names the image format: the output, or for `-o -` "-.FORMAT".

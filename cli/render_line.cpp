@@ -1,5 +1,6 @@
 #include "render_line.h"
 
+#include "animation_flags.h"
 #include "option_parsing.h"
 
 namespace radiant::cli {
@@ -37,10 +38,12 @@ std::vector<std::string> split_words(const std::string& line) {
   return words;
 }
 
-RenderJob parse_render_line(std::vector<std::string> words, const fs::path& base) {
+RenderJob parse_render_line(std::vector<std::string> words, const fs::path& base, bool with_animation) {
   CLI::App app{"render"};
   RenderFlags flags;
+  AnimationFlags animation;
   RenderJob job;
+  if (with_animation) animation.bind(app);
   app.add_option("-o,--output", job.output)->required();
   flags.bind(app, true);
   app.add_option("--stats", job.stats_path);
@@ -56,6 +59,17 @@ RenderJob parse_render_line(std::vector<std::string> words, const fs::path& base
                                   "(in a batch script, on the 'scene' line: scene PATH " + flag + " ...)");
   flags.finish();
   job.options = flags.options;
+  if (with_animation) {
+    LoadOptions moment;
+    animation.finish(moment);
+    if (animation.frames) throw std::invalid_argument("--frames renders many images: give one render line per frame (--frame N)");
+    job.animation_time = moment.animation_time;
+    job.animation = moment.animation;
+    if (*animation.frame_option) {
+      job.options.seed = animation.seed_of_frame(job.options.seed, animation.frame);
+      job.frame = FrameNote{animation.frame, 1};
+    }
+  }
   job.max_memory_bytes = flags.max_memory_bytes;
   job.write_metadata = !flags.no_metadata;
   if (fs::path(job.output).is_relative()) job.output = (base / job.output).string();

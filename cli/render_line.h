@@ -23,8 +23,11 @@ bool read_command_line(std::istream& in, std::string& line);
 std::vector<std::string> split_words(const std::string& line);
 
 // `render -o OUT [flags]` as words (the first is the command name and is skipped). Relative
-// paths resolve against `base`. Throws CLI::ParseError or std::invalid_argument, the latter also
-// for --scene and --variant, which choose what is loaded and so belong where the scene loads.
-RenderJob parse_render_line(std::vector<std::string> words, const std::filesystem::path& base);
+// paths resolve against `base`. `with_animation` also takes --time, --frame, --fps, --animation
+// and --same-noise (batch scripts: each line one moment). Throws CLI::ParseError or
+// std::invalid_argument, the latter also for --scene and --variant, which choose what is loaded
+// and so belong where the scene loads.
+RenderJob parse_render_line(std::vector<std::string> words, const std::filesystem::path& base,
+                            bool with_animation = false);
 
 }  // namespace radiant::cli

@@ -57,13 +57,14 @@ RenderRecord render_record(const std::string& scene_path, const std::string& com
 }
 
 std::string render_stats_json(const std::string& scene_path, const std::string& output, const RenderResult& r,
-                              const PhaseTimes& t) {
+                              const PhaseTimes& t, const FrameNote* frame) {
   const ResolvedSettings& s = r.settings;
   const RayCounts& rays = r.stats.rays;
   double rays_per_second = r.stats.render_seconds > 0 ? double(rays.total()) / r.stats.render_seconds : 0;
   Json j;
   j["scene"] = scene_path;
   j["output"] = output;
+  if (frame) j["frame"] = {{"number", frame->frame}, {"scene_reads", frame->scene_reads}};
   j["width"] = r.film.width;
   j["height"] = r.film.height;
   j["mode"] = mode_name(s.mode);

@@ -12,11 +12,19 @@ struct PhaseTimes {
   double load = 0, build = 0, render = 0, write = 0;
 };
 
+// A frame of an animation (--frame, --frames): its number and how many times the command has
+// read and parsed the scene file by then (1 for every frame of --frames: the file is read once).
+struct FrameNote {
+  long long frame = 0;
+  int scene_reads = 0;
+};
+
 // "wrote out.png: 800x800, 81 spp (jittered), whitted, 12.3 s, 4.56 M rays/s"
 std::string render_summary(const std::string& output, const RenderResult& result, const PhaseTimes& times);
 // The --stats JSON document.
+// With `frame`, it names the frame and counts the reads of the scene file.
 std::string render_stats_json(const std::string& scene_path, const std::string& output, const RenderResult& result,
-                              const PhaseTimes& times);
+                              const PhaseTimes& times, const FrameNote* frame = nullptr);
 // What the image of this render records about it (image/render_metadata.h): `command_line`
 // made it from `scene_path` with `seed`.
 RenderRecord render_record(const std::string& scene_path, const std::string& command_line, uint32_t seed,

@@ -9,6 +9,7 @@ find_package(CLI11 REQUIRED)
 find_package(nlohmann_json 3 REQUIRED)
 find_package(doctest REQUIRED)
 find_package(draco REQUIRED)  # KHR_draco_mesh_compression
+find_package(meshoptimizer REQUIRED)  # EXT_meshopt_compression
 
 # Debian's OpenImageIO config lists /usr/include/opencv4, which exists only with libopencv-dev;
 # CMake refuses a missing include path, so drop it rather than install OpenCV.

@@ -76,22 +76,26 @@ static SceneDesc load_by_extension(const std::string& path, const LoadOptions& o
   throw LoadError(path + ": unknown scene format '" + ext + "' (expected .scene, .gltf, .glb or .obj)");
 }
 
-SceneDesc load_scene(const std::string& path, const LoadOptions& given) {
-  BudgetedLoadOptions budgeted(given);
-  std::vector<std::string> files_read;
-  budgeted.options.files_read = &files_read;
-  const LoadOptions& options = budgeted.options;
+// Names the scene by its file, records the files it read and validates it.
+static void finish_scene(SceneDesc& scene, const std::string& path, const LoadOptions& options,
+                         std::vector<std::string> files_read) {
+  scene.source_path = path == "-" ? "<stdin>" : path;
+  std::string ext = lowercase_extension(path);
+  if (options.animation_time && ext != ".gltf" && ext != ".glb")
+    scene.warnings.push_back(scene.source_path + ": --time/--frame/--animation apply to glTF animations only");
+  scene.input_files = std::move(files_read);
+  validate_scene(scene);
+}
+
+// Runs `make` (which loads a scene) with what loading charges given back afterwards, when
+// only the scene stays in memory, or on failure.
+template <typename Make>
+static SceneDesc with_transient_charges(const LoadOptions& options, Make make) {
   MemoryBudget& budget = *options.budget;
   uint64_t used_before = budget.used();
   SceneDesc scene;
   try {
-    scene = load_by_extension(path, options);
-    scene.source_path = path == "-" ? "<stdin>" : path;
-    std::string ext = lowercase_extension(path);
-    if (options.animation_time && ext != ".gltf" && ext != ".glb")
-      scene.warnings.push_back(scene.source_path + ": --time/--frame/--animation apply to glTF animations only");
-    scene.input_files = std::move(files_read);
-    validate_scene(scene);
+    scene = make();
   } catch (...) {
     budget.release(budget.used() - used_before);
     throw;
@@ -101,6 +105,44 @@ SceneDesc load_scene(const std::string& path, const LoadOptions& given) {
   budget.release(budget.used() - used_before);
   charge_load(options, scene_memory_bytes(scene), scene.source_path + ": the loaded scene");
   return scene;
+}
+
+SceneDesc load_scene(const std::string& path, const LoadOptions& given) {
+  BudgetedLoadOptions budgeted(given);
+  std::vector<std::string> files_read;
+  budgeted.options.files_read = &files_read;
+  const LoadOptions& options = budgeted.options;
+  return with_transient_charges(options, [&] {
+    SceneDesc scene = load_by_extension(path, options);
+    finish_scene(scene, path, options, std::move(files_read));
+    return scene;
+  });
+}
+
+SceneFile read_scene_file(const std::string& path, const LoadOptions& given) {
+  LoadOptions options = given;
+  SceneFile file;
+  file.path = path;
+  options.files_read = &file.files_read;
+  std::string ext = lowercase_extension(path);
+  if (path != "-" && (ext == ".gltf" || ext == ".glb")) {
+    check_input_file(path, path, options);
+    file.gltf = read_gltf_document(path, options);
+  } else {
+    file.scene = std::make_shared<const SceneDesc>(load_by_extension(path, options));
+  }
+  return file;
+}
+
+SceneDesc scene_from_file(SceneFile& file, const LoadOptions& given) {
+  BudgetedLoadOptions budgeted(given);
+  const LoadOptions& options = budgeted.options;
+  return with_transient_charges(options, [&] {
+    if (file.scene) charge_load(options, scene_memory_bytes(*file.scene), file.path + ": a copy of the scene");
+    SceneDesc scene = file.gltf ? gltf_scene(*file.gltf, options) : *file.scene;
+    finish_scene(scene, file.path, options, file.files_read);
+    return scene;
+  });
 }
 
 }  // namespace radiant

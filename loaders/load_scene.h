@@ -3,6 +3,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -61,5 +62,24 @@ std::string escaped(const std::string& text);
 // the budget holds the loaded scene's own size: what loading needed only while it ran is given
 // back. Throws LoadError.
 SceneDesc load_scene(const std::string& path, const LoadOptions& options = {});
+
+struct GltfDocument;  // gltf/gltf_loader.h
+
+// A scene file read once, to make scenes from at many animation times (`render --frames`): a
+// glTF's parsed and decoded document, or any other format's loaded scene, which time does not
+// change. What reading it charged to the budget stays charged while it is held.
+struct SceneFile {
+  std::string path;
+  std::shared_ptr<GltfDocument> gltf;      // .gltf and .glb
+  std::shared_ptr<const SceneDesc> scene;  // the other formats
+  std::vector<std::string> files_read;
+};
+
+// Reads (and for glTF parses) `path`; options.budget must be set. Throws LoadError.
+SceneFile read_scene_file(const std::string& path, const LoadOptions& options);
+
+// The scene of `file` at options.animation_time, validated, as load_scene gives it: afterwards
+// the budget holds this scene's size besides the file's. Throws LoadError.
+SceneDesc scene_from_file(SceneFile& file, const LoadOptions& options);
 
 }  // namespace radiant

@@ -300,4 +300,15 @@ std::string glb_json_chunk(const std::string& bytes, const std::string& file) {
   return bytes.substr(20, chunk_length);
 }
 
+std::string glb_with_json_chunk(const std::string& bytes, std::string json) {
+  uint32_t old_length = read_u32(bytes, 12);
+  while (json.size() % 4) json += ' ';
+  std::string rest = bytes.substr(20 + size_t(old_length));
+  auto u32 = [](uint64_t v) {
+    uint32_t value = uint32_t(v);
+    return std::string(reinterpret_cast<const char*>(&value), 4);
+  };
+  return "glTF" + u32(2) + u32(20 + json.size() + rest.size()) + u32(json.size()) + "JSON" + json + rest;
+}
+
 }  // namespace radiant

@@ -38,4 +38,8 @@ GltfDeclarations read_gltf_declarations(const std::string& json, const std::stri
 // The JSON chunk of a GLB file; throws LoadError when the header is malformed.
 std::string glb_json_chunk(const std::string& bytes, const std::string& file);
 
+// The GLB `bytes` with its JSON chunk replaced by `json` (padded with spaces, as GLB asks), for
+// the loaders that rewrite a document before tinygltf reads it.
+std::string glb_with_json_chunk(const std::string& bytes, std::string json);
+
 }  // namespace radiant

@@ -55,9 +55,15 @@ struct DracoHeaderReader {
   }
 };
 
-// The triangle count a Draco mesh stream declares, read before decoding (the decoder allocates by
-// it), or "" on success with the reason it cannot be read.
-std::string declared_triangles(const unsigned char* data, size_t length, uint64_t& triangles) {
+// The counts a Draco mesh stream declares, which the decoder allocates by.
+struct DracoCounts {
+  uint64_t triangles = 0;
+  uint64_t vertices = 0;  // sequential: its points; edgebreaker: its encoded vertices
+};
+
+// Reads a Draco mesh stream's header up to its counts, before decoding; "" on success, else the
+// reason it cannot be read.
+std::string declared_counts(const unsigned char* data, size_t length, DracoCounts& counts) {
   DracoHeaderReader r{data, length};
   if (length < 11 || std::memcmp(data, "DRACO", 5) != 0) return "not a Draco stream";
   r.at = 5;
@@ -71,9 +77,16 @@ std::string declared_triangles(const unsigned char* data, size_t length, uint64_
     for (uint64_t count = r.varint(); r.ok && count > 0; --count) r.varint(), r.skip_metadata(0);
     r.skip_metadata(0);
   }
-  if (method == 1) r.byte(), r.varint();  // edgebreaker: traversal type, encoded vertices
-  else if (method != 0) return "unknown Draco encoding method " + std::to_string(method);
-  triangles = r.varint();
+  if (method == 1) {  // edgebreaker: traversal type, encoded vertices, faces
+    r.byte();
+    counts.vertices = r.varint();
+    counts.triangles = r.varint();
+  } else if (method == 0) {  // sequential: faces, points
+    counts.triangles = r.varint();
+    counts.vertices = r.varint();
+  } else {
+    return "unknown Draco encoding method " + std::to_string(method);
+  }
   return r.ok ? "" : "the Draco header ends early";
 }
 
@@ -125,31 +138,33 @@ void decode_primitive(tinygltf::Model& model, GltfContext& context, tinygltf::Pr
   if (!primitive.attributes.count("POSITION")) context.fail(where + ".attributes", "no POSITION attribute");
   uint64_t points = accessor_count(context, primitive.attributes.at("POSITION"), where + ".attributes.POSITION");
   uint64_t corners = accessor_count(context, primitive.indices, where + ".indices");
-  // Charged from the accessors' counts before the decoder allocates: a stream whose header
-  // declares another triangle count is refused before decoding, one that decodes to other
-  // counts after.
-  uint64_t attribute_bytes = 0;
+  uint64_t point_bytes = 0;  // the decoded floats of one point, all attributes
   for (const std::string& name : ids.Keys()) {
     auto found = primitive.attributes.find(name);
     if (found == primitive.attributes.end())
       context.fail(at + ".attributes." + name, "not among the primitive's attributes");
     accessor_count(context, found->second, where + ".attributes." + name);  // checks the index
     const tinygltf::Accessor& accessor = model.accessors[size_t(found->second)];
-    int components = std::max(0, tinygltf::GetNumComponentsInType(uint32_t(accessor.type)));
-    attribute_bytes = saturating_add(attribute_bytes, saturating_multiply(points, uint64_t(components) * 4));
+    point_bytes += uint64_t(std::max(0, tinygltf::GetNumComponentsInType(uint32_t(accessor.type)))) * 4;
   }
-  uint64_t output_bytes = saturating_add(attribute_bytes, saturating_multiply(corners, 4));
-  context.charge(saturating_add(output_bytes, draco_decoder_bytes(attribute_bytes, corners / 3, points, ids.Keys().size())),
-                 at + ": decoding " + std::to_string(points) + " points and " + std::to_string(corners / 3) + " triangles");
-
   size_t length = 0;
   const unsigned char* data = buffer_view_bytes(context, view, at + ".bufferView", length);
-  uint64_t declared = 0;
-  std::string unreadable = declared_triangles(data, length, declared);
+  DracoCounts declared;
+  std::string unreadable = declared_counts(data, length, declared);
   if (!unreadable.empty()) context.fail(at, unreadable);
-  if (declared * 3 != corners)
-    context.fail(at, "declares " + std::to_string(declared) + " triangles, but the indices accessor has " +
+  if (declared.triangles * 3 != corners)
+    context.fail(at, "declares " + std::to_string(declared.triangles) + " triangles, but the indices accessor has " +
                          std::to_string(corners) + " indices");
+  // Charged before the decoder allocates: the output by the accessors' counts, the decoder's own
+  // copy by the larger of those and the vertex count the header declares (a stream decoding to
+  // other counts than the accessors' is refused after).
+  uint64_t decoder_points = std::max(points, declared.vertices);
+  uint64_t output_bytes = saturating_add(saturating_multiply(points, point_bytes), saturating_multiply(corners, 4));
+  uint64_t decoder_bytes =
+      draco_decoder_bytes(saturating_multiply(decoder_points, point_bytes), corners / 3, decoder_points, ids.Keys().size());
+  context.charge(saturating_add(output_bytes, decoder_bytes),
+                 at + ": decoding " + std::to_string(decoder_points) + " points and " + std::to_string(corners / 3) +
+                     " triangles");
   draco::DecoderBuffer buffer;
   buffer.Init(reinterpret_cast<const char*>(data), length);
   draco::Decoder decoder;
@@ -187,19 +202,6 @@ void decode_primitive(tinygltf::Model& model, GltfContext& context, tinygltf::Pr
   primitive.extensions.erase(draco_extension);
 }
 
-// The GLB `bytes` with its JSON chunk replaced by `json` (padded with spaces, as GLB asks).
-std::string with_json_chunk(const std::string& bytes, std::string json) {
-  uint32_t old_length = 0;
-  std::memcpy(&old_length, bytes.data() + 12, 4);
-  while (json.size() % 4) json += ' ';
-  std::string rest = bytes.substr(20 + size_t(old_length));
-  auto u32 = [](uint64_t v) {
-    uint32_t value = uint32_t(v);
-    return std::string(reinterpret_cast<const char*>(&value), 4);
-  };
-  return "glTF" + u32(2) + u32(20 + json.size() + rest.size()) + u32(json.size()) + "JSON" + json + rest;
-}
-
 }  // namespace
 
 bool with_draco_index_views(const std::string& file_bytes, bool binary, std::string& rewritten) {
@@ -225,7 +227,7 @@ bool with_draco_index_views(const std::string& file_bytes, bool binary, std::str
     }
   }
   if (!changed) return false;
-  rewritten = binary ? with_json_chunk(file_bytes, document.dump()) : document.dump();
+  rewritten = binary ? glb_with_json_chunk(file_bytes, document.dump()) : document.dump();
   return true;
 }
 

@@ -15,6 +15,7 @@
 #include "gltf/gltf_variants.h"
 #include "gltf/gltf_memory.h"
 #include "gltf/gltf_meshes.h"
+#include "gltf/gltf_meshopt.h"
 #include "gltf/gltf_nodes.h"
 
 namespace radiant {
@@ -27,7 +28,7 @@ const std::vector<std::string> supported_extensions = {
     "KHR_materials_specular",     "KHR_materials_clearcoat",        "KHR_materials_sheen",
     "KHR_materials_volume",       "KHR_materials_variants",         "KHR_materials_iridescence",
     "KHR_materials_anisotropy",   "KHR_mesh_quantization",          "KHR_draco_mesh_compression",
-    "EXT_texture_webp"};
+    "EXT_texture_webp",           "EXT_meshopt_compression"};
 
 bool is_supported(const std::string& name) {
   return std::find(supported_extensions.begin(), supported_extensions.end(), name) != supported_extensions.end();
@@ -40,12 +41,15 @@ std::string read_gltf_file(const std::string& path, const LoadOptions& options) 
 }
 
 // Refuses what must be refused before tinygltf allocates anything, and charges the buffers it
-// will allocate: each declared length, and once more for a data URI's decoded copy.
-void check_declarations(const GltfDeclarations& declared, const std::string& path, const LoadOptions& options) {
+// will allocate: each declared length, and once more for a data URI's decoded copy. A meshopt
+// placeholder buffer is never allocated; its bufferViews are charged as they are decoded.
+void check_declarations(const GltfDeclarations& declared, const std::string& path, const LoadOptions& options,
+                        bool binary, bool uses_meshopt) {
   for (const std::string& name : declared.extensions_required)
     if (!is_supported(name))
       throw LoadError(path + ": extensionsRequired: unsupported extension " + name);
   for (size_t i = 0; i < declared.buffer_byte_lengths.size(); ++i) {
+    if (uses_meshopt && is_meshopt_placeholder(declared, i, binary)) continue;
     uint64_t length = declared.buffer_byte_lengths[i];
     bool data_uri = i < declared.buffer_uris.size() && declared.buffer_uris[i] == data_uri_marker;
     charge_load(options, data_uri ? saturating_multiply(length, 2) : length,
@@ -66,7 +70,8 @@ tinygltf::Model parse(const std::string& path, const std::string& bytes, const L
   charge_load(options, gltf_model_bytes(counts, json.size()),
               path + ": the JSON document (" + std::to_string(counts.values) + " values)");
   GltfDeclarations declared = read_gltf_declarations(json, path);
-  check_declarations(declared, path, options);
+  bool uses_meshopt = json.find(meshopt_extension) != std::string::npos;
+  check_declarations(declared, path, options, binary, uses_meshopt);
   GltfFileAccess access;
   access.base_dir = std::filesystem::absolute(path).parent_path();
   access.file = path;
@@ -81,8 +86,15 @@ tinygltf::Model parse(const std::string& path, const std::string& bytes, const L
   if (json.find("KHR_draco_mesh_compression") != std::string::npos)
     charge_load(options, saturating_add(gltf_model_bytes(counts, json.size()), bytes.size()),
                 path + ": the JSON document, rewritten for Draco");
-  std::string rewritten;
-  const std::string& document = with_draco_index_views(bytes, binary, rewritten) ? rewritten : bytes;
+  std::string with_views, with_placeholders;
+  const std::string* rewritten = with_draco_index_views(bytes, binary, with_views) ? &with_views : &bytes;
+  // Meshopt files are rewritten the same way, with the same charge.
+  if (uses_meshopt)
+    charge_load(options, saturating_add(gltf_model_bytes(counts, json.size()), rewritten->size()),
+                path + ": the JSON document, rewritten for " + meshopt_extension);
+  if (uses_meshopt && with_meshopt_placeholders(*rewritten, binary, declared, with_placeholders))
+    rewritten = &with_placeholders;
+  const std::string& document = *rewritten;
   const auto* data = reinterpret_cast<const unsigned char*>(document.data());
   bool ok = false;
   try {
@@ -101,32 +113,72 @@ tinygltf::Model parse(const std::string& path, const std::string& bytes, const L
   return model;
 }
 
+// The animation writes into a document's nodes; their rest pose is put back when the scene at
+// that time is made (or fails), so that the next time sampled starts from the file's own state.
+struct RestPose {
+  tinygltf::Model& model;
+  std::vector<tinygltf::Node> nodes;
+  bool saved;
+  ~RestPose() {
+    if (saved) model.nodes = std::move(nodes);
+  }
+};
+
 }  // namespace
 
-SceneDesc load_gltf(const std::string& path, const LoadOptions& given) {
+std::shared_ptr<GltfDocument> read_gltf_document(const std::string& path, const LoadOptions& given) {
   BudgetedLoadOptions budgeted(given);
   const LoadOptions& options = budgeted.options;
-  std::string bytes = read_gltf_file(path, options);
+  auto document = std::make_shared<GltfDocument>();
+  document->path = path;
+  SceneDesc reading;  // collects the warnings of reading and decoding
+  {
+    std::string bytes = read_gltf_file(path, options);
+    document->model = parse(path, bytes, options, reading);
+  }
+  GltfContext context{document->model, path, options, reading, {}, {}, -1};
+  decode_meshopt_views(document->model, context);
+  decode_draco_primitives(document->model, context);
+  document->warnings = std::move(reading.warnings);
+  return document;
+}
+
+SceneDesc gltf_scene(GltfDocument& document, const LoadOptions& given) {
+  BudgetedLoadOptions budgeted(given);
+  const LoadOptions& options = budgeted.options;
+  tinygltf::Model& model = document.model;
   SceneDesc scene;
-  scene.name = std::filesystem::path(path).stem().string();
-  tinygltf::Model model = parse(path, bytes, options, scene);
-  GltfContext context{model, path, options, scene, {}, {}, -1};
+  scene.name = std::filesystem::path(document.path).stem().string();
+  scene.warnings = document.warnings;
+  GltfContext context{model, document.path, options, scene, {}, {}, -1};
   context.variant = selected_variant(context);
   for (const std::string& name : model.extensionsUsed)
     if (!is_supported(name)) context.warn("extension " + name + " is not supported and is ignored");
   convert_textures(context);
   convert_materials(context);
+  RestPose rest_pose{model, {}, false};
   if (options.animation_time) {
     int animation = find_animation(context, options.animation);
-    if (animation < 0) context.warn("--time: the file has no animations; its static state is shown");
-    else apply_animation(model, context, animation, *options.animation_time);
+    if (animation < 0) {
+      context.warn("--time: the file has no animations; its static state is shown");
+    } else {
+      context.charge(saturating_multiply(model.nodes.size(), sizeof(tinygltf::Node)), "the nodes' rest pose");
+      rest_pose.nodes = model.nodes;
+      rest_pose.saved = true;
+      apply_animation(model, context, animation, *options.animation_time);
+    }
   }
-  decode_draco_primitives(model, context);
   convert_meshes(context);
   convert_nodes(context);
   if (scene.degenerate_triangles_dropped > 0)
     context.warn(std::to_string(scene.degenerate_triangles_dropped) + " degenerate triangles dropped");
   return scene;
+}
+
+SceneDesc load_gltf(const std::string& path, const LoadOptions& given) {
+  BudgetedLoadOptions budgeted(given);
+  std::shared_ptr<GltfDocument> document = read_gltf_document(path, budgeted.options);
+  return gltf_scene(*document, budgeted.options);
 }
 
 }  // namespace radiant

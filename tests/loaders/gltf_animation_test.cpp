@@ -118,13 +118,13 @@ TEST_CASE("gltf animation: animations are chosen by name or index, and an unknow
   CHECK(load_error(dir, path, options) == "a.gltf: --animation 'walk': no such animation (2 animations: still, move)");
 }
 
-TEST_CASE("gltf animation: --frame N --fps F renders the image of --time N/F; --frame needs --fps") {
+TEST_CASE("gltf animation: --frame N --fps F --same-noise renders the image of --time N/F; --frame needs --fps") {
   ScratchDir dir("gltf-animation-cli");
   std::string gltf = animated("translation", 0, {0, 1}, {-0.5f, -0.5f, 0, 0.5f, 0, 0}, "LINEAR", "VEC3");
   std::string path = dir.write("a.gltf", gltf).string();
   std::string common = "render " + path + " --animation move --width 16 --height 16 --spp 1 --env-color 1,1,1 --quiet -o ";
   CommandResult by_time = run_radiant(common + dir.file("time.png").string() + " --time 0.5");
-  CommandResult by_frame = run_radiant(common + dir.file("frame.png").string() + " --frame 12 --fps 24");
+  CommandResult by_frame = run_radiant(common + dir.file("frame.png").string() + " --frame 12 --fps 24 --same-noise");
   CommandResult start = run_radiant(common + dir.file("start.png").string() + " --time 0");
   REQUIRE(by_time.exit_code == 0);
   REQUIRE(by_frame.exit_code == 0);

@@ -27,6 +27,7 @@ inline std::string base64(const std::string& bytes) {
 struct GltfBuilder {
   std::string bin;
   std::vector<std::string> views, accessors;
+  std::vector<std::string> more_buffers;  // JSON of buffers after the first (which holds `bin`)
 
   template <typename T>
   static std::string bytes_of(const std::vector<T>& values) {
@@ -64,7 +65,8 @@ struct GltfBuilder {
     std::string uri = buffer_uri.empty() ? "data:application/octet-stream;base64," + base64(bin) : buffer_uri;
     std::string out = "{\"asset\":{\"version\":\"2.0\"}";
     if (!bin.empty()) {
-      out += ",\"buffers\":[{\"byteLength\":" + std::to_string(bin.size()) + ",\"uri\":\"" + uri + "\"}]";
+      out += ",\"buffers\":[{\"byteLength\":" + std::to_string(bin.size()) + ",\"uri\":\"" + uri + "\"}" +
+             later_buffers() + "]";
       out += ",\"bufferViews\":[" + join(views) + "],\"accessors\":[" + join(accessors) + "]";
     }
     return out + (body.empty() ? "" : "," + body) + "}";
@@ -72,7 +74,7 @@ struct GltfBuilder {
   // The same as a GLB: JSON chunk plus the binary chunk.
   std::string glb(const std::string& body) const {
     std::string json = "{\"asset\":{\"version\":\"2.0\"},\"buffers\":[{\"byteLength\":" + std::to_string(bin.size()) +
-                       "}],\"bufferViews\":[" + join(views) + "],\"accessors\":[" + join(accessors) + "]," + body + "}";
+                       "}" + later_buffers() + "],\"bufferViews\":[" + join(views) + "],\"accessors\":[" + join(accessors) + "]," + body + "}";
     while (json.size() % 4) json += ' ';
     std::string data = bin;
     while (data.size() % 4) data += '\0';
@@ -87,6 +89,7 @@ struct GltfBuilder {
     u32(0x004E4942);
     return out + data;
   }
+  std::string later_buffers() const { return more_buffers.empty() ? "" : "," + join(more_buffers); }
   static std::string join(const std::vector<std::string>& items) {
     std::string out;
     for (const auto& item : items) out += (out.empty() ? "" : ",") + item;

@@ -164,3 +164,25 @@ TEST_CASE("gltf draco: a corrupt stream or counts unlike the accessors' are erro
   CHECK(load_error(dir, dir.write("version.gltf", draco_gltf(*mesh, 0, points, corners, &old_version))) ==
         "version.gltf: " + at + "Draco bitstream version 1.3 (only 2.2 is read)");
 }
+
+TEST_CASE("gltf draco: the header's vertex count is charged to the budget before the decoder allocates by it") {
+  ScratchDir dir("gltf-draco-budget");
+  std::unique_ptr<draco::Mesh> mesh = grid_mesh();
+  uint32_t points = mesh->num_points(), corners = mesh->num_faces() * 3;
+  LoadOptions limited;
+  limited.max_memory_bytes = size_t(64) << 20;
+  std::string at = "meshes[0].primitives[0].extensions.KHR_draco_mesh_compression: ";
+  // Sequential headers declaring 32 triangles and then 2^31 - 1 points (varint FF FF FF FF 07),
+  // or edgebreaker ones declaring as many encoded vertices, then no mesh.
+  std::string sequential = std::string("DRACO\x02\x02\x01\x00\x00\x00\x20\xFF\xFF\xFF\xFF\x07", 17) + " no mesh";
+  std::string edgebreaker = std::string("DRACO\x02\x02\x01\x01\x00\x00\x00\xFF\xFF\xFF\xFF\x07\x20", 18) + " no mesh";
+  for (std::string header : {sequential, edgebreaker}) {
+    std::string message = load_error(dir, dir.write("huge.gltf", draco_gltf(*mesh, 0, points, corners, &header)), limited);
+    CHECK(message.rfind("huge.gltf: " + at + "decoding 2147483647 points and 32 triangles", 0) == 0);
+    CHECK(message.find("over the memory limit of 64.0 MiB") != std::string::npos);
+  }
+  // The same counts as the accessors' are within it: the garbage after the header is what fails.
+  std::string honest = std::string("DRACO\x02\x02\x01\x00\x00\x00\x20", 12) + char(points) + " no mesh";
+  CHECK(load_error(dir, dir.write("honest.gltf", draco_gltf(*mesh, 0, points, corners, &honest)), limited)
+            .rfind("honest.gltf: " + at + "cannot decode: ", 0) == 0);
+}

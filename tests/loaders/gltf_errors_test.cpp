@@ -84,9 +84,9 @@ TEST_CASE("gltf errors: non-finite positions and normals") {
 TEST_CASE("gltf errors: a required extension radiant lacks is named, optional ones warn") {
   GltfBuilder b = quad_builder();
   std::string body = std::string(quad_mesh) + placed;
-  CHECK(error_of(b.gltf(body + ",\"extensionsUsed\":[\"EXT_meshopt_compression\"],"
-                               "\"extensionsRequired\":[\"EXT_meshopt_compression\"]")) ==
-        "file.gltf: extensionsRequired: unsupported extension EXT_meshopt_compression");
+  CHECK(error_of(b.gltf(body + ",\"extensionsUsed\":[\"KHR_gaussian_splatting\"],"
+                               "\"extensionsRequired\":[\"KHR_gaussian_splatting\"]")) ==
+        "file.gltf: extensionsRequired: unsupported extension KHR_gaussian_splatting");
   ScratchDir dir("gltf-optional");
   std::string path = dir.write("o.gltf", b.gltf(body + ",\"extensionsUsed\":[\"EXT_fancy\"]")).string();
   SceneDesc scene = load_scene(path);
