@@ -147,7 +147,7 @@ struct PathVariant {
         break;
       }
       SurfaceHit hit = make_surface_hit(*ctx.accel, ray, id);
-      const SurfaceMaterial& m = material_at<E>(ctx, hit, resolved);
+      const SurfaceMaterial& m = material_at<E>(ctx, id, hit, resolved);
       if (enabled<E>(ctx.effects, effect_alpha) && m.opacity < 1 &&
           // Each see-through step at this vertex gets its own dimension, far above any vertex's block.
           sample_1d(sample, dimension(depth, alpha_choice) + 0x10000u * uint32_t(transparent_steps)) >= m.opacity) {

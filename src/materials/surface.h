@@ -7,11 +7,31 @@
 
 namespace radiant {
 
+struct TexturePyramids;
+
+// How a render's lookups filter: the mode of --texture-filter and, for trilinear, the pyramids.
+struct TextureLookup {
+  TextureFilterMode mode = TextureFilterMode::bilinear;
+  const TexturePyramids* pyramids = nullptr;
+};
+
 // Per-hit geometric attributes a material needs for its texture lookups.
 struct SurfaceAttributes {
   vec2 uv[2] = {{0, 0}, {0, 0}};
   vec4 vertex_color = {1, 1, 1, 1};
+  // The change of each uv set across one pixel in x and in y (zero: no footprint, full resolution).
+  vec2 duv_dx[2] = {{0, 0}, {0, 0}}, duv_dy[2] = {{0, 0}, {0, 0}};
+  // The render's filtering; null: each texture's own filter at full resolution.
+  const TextureLookup* lookup = nullptr;
 };
+
+// A material's texture slot and whether resolve_material decodes it as sRGB colour.
+struct TextureSlot {
+  const TextureRef* ref;
+  bool srgb;
+};
+// Every texture slot of `material` (valid or not), with the decoding resolve_material reads it with.
+std::vector<TextureSlot> texture_slots(const MaterialDesc& material);
 
 // A material's parameters at one point: MaterialDesc with every texture applied.
 struct SurfaceMaterial {

@@ -80,6 +80,8 @@ struct RenderOptions {
   std::optional<ViewTransform> view;
   int bit_depth = 8;
   bool half_float = false;
+  // --texture-filter: how texture lookups filter (trilinear: mip-mapped by the pixel's footprint).
+  TextureFilterMode texture_filter = TextureFilterMode::trilinear;
   float noise_threshold = 0;      // 0 = off
   float contribution_cutoff = 0.001f;  // Whitted: stop recursing below this weight
   bool quiet = false;

@@ -49,6 +49,9 @@ struct ImageDesc {
 
 enum class TextureWrap { repeat, clamp_to_edge, mirrored_repeat };
 enum class TextureFilter { linear, nearest };
+// How every lookup of a render filters (--texture-filter): the nearest texel or the texture's own
+// filter at full resolution, or mip-mapped by the pixel's footprint (docs/materials.md).
+enum class TextureFilterMode { point, bilinear, trilinear };
 
 struct TextureDesc {
   int image = -1;
