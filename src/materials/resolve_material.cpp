@@ -73,6 +73,7 @@ SurfaceMaterial resolve_metallic_roughness(const SceneDesc& scene, const Materia
   m.transmission = clamp01(material.transmission * sample_texture(scene, material.transmission_texture,
                                                                    attributes, false).x);
   m.ior = material.ior;
+  m.dispersion = material.dispersion;
   m.specular = clamp01(material.specular * sample_texture(scene, material.specular_strength_texture, attributes,
                                                           false).w);
   m.specular_color = max(material.specular_color * rgb(sample_texture(scene, material.specular_color_texture,

@@ -41,6 +41,7 @@ struct SurfaceMaterial {
   color3 ka, kd, ks, kr, kt;
   float shininess = 1;
   float ior = 1.5f;
+  float dispersion = 0;  // KHR_materials_dispersion: 20 / Abbe number (metallic-roughness transmission)
   // Metallic-roughness, valid when model == metallic_roughness.
   color3 base_color = {1, 1, 1};
   float metallic = 0, roughness = 1, transmission = 0;

@@ -134,6 +134,8 @@ struct MaterialDesc {
   float thickness = 0;
   float attenuation_distance = 0;  // 0 = infinite: no absorption
   color3 attenuation_color = {1, 1, 1};
+  // KHR_materials_dispersion: 20 / the Abbe number (0 = none); the IOR varies with wavelength.
+  float dispersion = 0;
   TextureRef specular_texture;      // linear RGB weight for ks (OBJ map_Ks)
   TextureRef alpha_texture;         // linear, R channel (OBJ map_d)
 
