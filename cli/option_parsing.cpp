@@ -111,6 +111,13 @@ Projection parse_camera_type(const std::string& flag, const std::string& text) {
                                        "' (expected perspective, orthographic, equirect or fisheye)");
 }
 
+TextureFilterMode parse_texture_filter(const std::string& flag, const std::string& text) {
+  if (text == "point") return TextureFilterMode::point;
+  if (text == "bilinear") return TextureFilterMode::bilinear;
+  if (text == "trilinear") return TextureFilterMode::trilinear;
+  throw CLI::ValidationError(flag, "unknown texture filter '" + text + "' (expected point, bilinear or trilinear)");
+}
+
 PixelWindow parse_window(const std::string& flag, const std::string& text) {
   auto parts = split(text, ',');
   if (parts.size() != 4) throw CLI::ValidationError(flag, "expected X0,Y0,X1,Y1 in pixels, got '" + text + "'");
@@ -335,6 +342,9 @@ void RenderFlags::bind(CLI::App& app, bool image_flags) {
   app.add_option("--focus-distance", focus_distance, "Distance in focus along the view (default: to --look-at)")
       ->check(positive_number(max_scene_coordinate));
   app.add_option("--blades", blades, "Aperture blades: a polygonal bokeh (0 = round)")->check(CLI::Range(0, 64));
+  app.add_option("--texture-filter", texture_filter,
+                 "point (nearest texel), bilinear (full resolution) or trilinear (mip-mapped by the pixel's "
+                 "footprint; default)");
   app.add_option("--effects", options.effects, "Switch effects off/on: e.g. -shadows,-indirect, or 'all' (generic integrator)");
   app.add_flag("--allow-external-files", allow_external_files, "Let scene files refer to files outside their folder");
   app.add_option("--max-memory", max_memory,
@@ -366,6 +376,7 @@ void RenderFlags::finish() {
     }
   }
   if (filter_width > 0) options.filter_width = filter_width;
+  if (!texture_filter.empty()) options.texture_filter = parse_texture_filter("--texture-filter", texture_filter);
   if (!light_sampler.empty()) options.light_sampler = parse_light_sampler("--light-sampler", light_sampler);
   if (!env_color.empty()) {
     vec3 c = parse_vec3("--env-color", env_color);

@@ -34,6 +34,7 @@ RenderMode parse_mode(const std::string& flag, const std::string& text);
 SamplerKind parse_sampler(const std::string& flag, const std::string& text);
 LightSampler parse_light_sampler(const std::string& flag, const std::string& text);
 Projection parse_camera_type(const std::string& flag, const std::string& text);
+TextureFilterMode parse_texture_filter(const std::string& flag, const std::string& text);
 PixelWindow parse_window(const std::string& flag, const std::string& text);
 // "I/K" with 0 <= I < K <= 65536, and "A:B" sample indices.
 ShardSpec parse_shard(const std::string& flag, const std::string& text);
@@ -54,6 +55,7 @@ const char* sampler_name(SamplerKind kind);
 struct RenderFlags {
   RenderOptions options;
   std::string mode, sampler, light_sampler, env_color, crop, aovs, look_from, look_at, up, view, camera_type, variant;
+  std::string texture_filter;
   std::string shard, split, sample_range, filter;
   int width = 0, height = 0, spp = 0, max_depth = 0, gltf_scene = -1;
   float fov = 0;

@@ -298,6 +298,9 @@ static MaterialDesc convert_material(const GltfContext& context, const tinygltf:
     convert_iridescence(context, *iridescence, where, material);
   if (const tinygltf::Value* anisotropy = extension(source.extensions, "KHR_materials_anisotropy"))
     convert_anisotropy(context, *anisotropy, where, material);
+  if (const tinygltf::Value* dispersion = extension(source.extensions, "KHR_materials_dispersion"))
+    material.dispersion = non_negative_float(context, number(*dispersion, "dispersion", 0),
+                                             where + ".extensions.KHR_materials_dispersion.dispersion");
   if (const tinygltf::Value* ior = extension(source.extensions, "KHR_materials_ior"))
     material.ior = float(number(*ior, "ior", 1.5));
   material.unlit = extension(source.extensions, "KHR_materials_unlit") != nullptr;

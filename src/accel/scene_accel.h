@@ -81,6 +81,11 @@ struct SurfaceHit {
 
 SurfaceHit make_surface_hit(const SceneAccel& accel, const Ray& ray, const HitId& id);
 
+// Sets hit.attributes' uv footprint (duv_dx, duv_dy of each uv set) from the position footprint
+// dpdx, dpdy at a triangle hit, by least squares in the triangle's plane (pbrt-v4's
+// ComputeDifferentials); analytic shapes keep none (they carry no textures).
+void set_uv_footprint(const SceneAccel& accel, const HitId& id, vec3 dpdx, vec3 dpdy, SurfaceHit& hit);
+
 // A ray leaving `hit` in `direction`, with its origin offset by the error bound.
 inline Ray spawn_ray(const SurfaceHit& hit, vec3 direction) {
   return {offset_ray_origin(hit.position, hit.position_error, hit.geometric_normal, direction), direction};

@@ -11,6 +11,7 @@
 #include "lights/environment_light.h"
 #include "lights/light_selection.h"
 #include "materials/bsdf.h"
+#include "materials/dispersion.h"
 #include "sampling/warp.h"
 
 namespace radiant {
@@ -22,7 +23,7 @@ namespace {
 constexpr uint32_t dimensions_per_vertex = 10;
 enum VertexDimension : uint32_t {
   light_choice = 0, light_point = 1, lobe_choice = 3, bsdf_direction = 4, roulette = 6, alpha_choice = 7,
-  environment_choice = 8
+  environment_choice = 8, dispersion_channel = 9
 };
 constexpr uint32_t dimension(int depth, VertexDimension d) { return 2 + uint32_t(depth) * dimensions_per_vertex + d; }
 constexpr int roulette_start_depth = 3;
@@ -42,6 +43,22 @@ color3 area_light_emission(const RenderContext& ctx, const AreaLight& light, vec
     if (!uvs.empty()) attributes.uv[set] = uvs[tri[0]] * b0 + uvs[tri[1]] * barycentric.x + uvs[tri[2]] * barycentric.y;
   }
   return resolve_material(*ctx.scene, material, attributes).emission;
+}
+
+// KHR_materials_dispersion by a hero channel: from its first dispersive surface on, a path
+// carries one colour channel (chosen uniformly, weight 3) and refracts with that channel's
+// wavelength's IOR. Returns the material to shade with: `m`, or `dispersed` with its IOR set.
+const SurfaceMaterial& dispersive_material(const SurfaceMaterial& m, float u_channel, int& channel, color3& throughput,
+                                           SurfaceMaterial& dispersed) {
+  if (channel < 0) {
+    channel = std::min(2, int(3 * u_channel));
+    color3 only_channel;
+    only_channel[channel] = 3;
+    throughput *= only_channel;
+  }
+  dispersed = m;
+  dispersed.ior = dispersive_ior(m.ior, m.dispersion, channel_wavelengths_nm[channel]);
+  return dispersed;
 }
 
 // Index in the light table of the area light that was hit, or -1.
@@ -123,6 +140,8 @@ struct PathVariant {
     uint64_t* ray_counter = &counts.camera;  // the kind of the next ray traced, counted when traced
     SurfaceMaterial resolved;                // the material at the current hit, when textured
     int medium = -1;  // the absorbing volume the path is inside (a material index), or -1
+    int channel = -1;  // the colour channel the path carries after a dispersive surface, or -1
+    SurfaceMaterial dispersed;  // the material at the current hit with its channel's IOR
     for (int transparent_steps = 0; transparent_steps < 256;) {
       ++*ray_counter;
       HitId id = intersect_nearest(*ctx.accel, ray);
@@ -148,7 +167,7 @@ struct PathVariant {
         break;
       }
       SurfaceHit hit = make_surface_hit(*ctx.accel, ray, id);
-      const SurfaceMaterial& m = material_at<E>(ctx, hit, resolved);
+      const SurfaceMaterial& m = material_at<E>(ctx, id, hit, resolved);
       if (enabled<E>(ctx.effects, effect_alpha) && m.opacity < 1 &&
           // Each see-through step at this vertex gets its own dimension, far above any vertex's block.
           sample_1d(sample, dimension(depth, alpha_choice) + 0x10000u * uint32_t(transparent_steps)) >= m.opacity) {
@@ -180,7 +199,13 @@ struct PathVariant {
       // Vertex `depth` gathers light only below max_depth; the emission above completed the
       // direct light of the previous vertex.
       if (depth >= max_depth) break;
-      Bsdf bsdf = bsdf_at<E>(ctx, hit, m, bsdf_normal(m, f), f.wo);
+      bool dispersive = enabled<E>(ctx.effects, effect_refraction) && m.dispersion > 0 && m.transmission > 0 &&
+                        m.model == MaterialModel::metallic_roughness;
+      vec3 normal = bsdf_normal(m, f);
+      Bsdf bsdf = dispersive ? Bsdf(dispersive_material(m, sample_1d(sample, dimension(depth, dispersion_channel)),
+                                                        channel, throughput, dispersed),
+                                    normal, f.wo, anisotropy_tangent(hit, m, normal))
+                             : bsdf_at<E>(ctx, hit, m, normal, f.wo);
       // The next direction is drawn before the light sample, which does not depend on it: its
       // chain of dependent arithmetic (sampler, warp) then overlaps the shadow ray's traversal
       // in the CPU instead of stalling the next ray. Dimensions are fixed, so the order changes

@@ -11,6 +11,7 @@
 #include "lights/light_table.h"
 #include "materials/bsdf.h"
 #include "materials/surface.h"
+#include "materials/texture_footprint.h"
 #include "sampling/sampler.h"
 #include "scene/effects.h"
 #include "scene/scene_desc.h"
@@ -49,6 +50,8 @@ struct RenderContext {
   std::vector<SurfaceMaterial> flat_materials; // each material resolved once, for untextured renders
   std::vector<BsdfMaterial> flat_bsdf_materials;  // and its BSDF's direction-independent part
   std::vector<color3> absorption;                 // each material's volume sigma (KHR_materials_volume)
+  TextureLookup texture_lookup;  // --texture-filter and its pyramids
+  PixelSpread pixel_spread;      // the camera's, for texture footprints (trilinear only)
   uint32_t effects = effect_all;
   int max_depth = 8;
   float contribution_cutoff = 0.001f;
@@ -61,12 +64,21 @@ struct RenderContext {
 using RadianceFunction = color3 (*)(const RenderContext& ctx, const Ray& ray, const SampleContext& sample,
                                     RayCounts& counts, FirstHit* first_hit);
 
-// The material at a hit: resolved into `resolved` when textures or normal maps are on (both
-// read texels), otherwise the one resolved once per render (no copy per hit).
+// The material at hit `id`: resolved into `resolved` when textures or normal maps are on (both
+// read texels, filtered over the pixel's footprint there), otherwise the one resolved once per
+// render (no copy per hit).
 template <uint32_t E>
-const SurfaceMaterial& material_at(const RenderContext& ctx, const SurfaceHit& hit, SurfaceMaterial& resolved) {
-  if (enabled<E>(ctx.effects, effect_textures) || enabled<E>(ctx.effects, effect_normal_maps))
+const SurfaceMaterial& material_at(const RenderContext& ctx, const HitId& id, SurfaceHit& hit,
+                                   SurfaceMaterial& resolved) {
+  if (enabled<E>(ctx.effects, effect_textures) || enabled<E>(ctx.effects, effect_normal_maps)) {
+    if (ctx.texture_lookup.mode == TextureFilterMode::trilinear) {
+      vec3 dpdx, dpdy;
+      approximate_dp_dxy(ctx.pixel_spread, hit.position, hit.geometric_normal, dpdx, dpdy);
+      set_uv_footprint(*ctx.accel, id, dpdx, dpdy, hit);
+    }
+    hit.attributes.lookup = &ctx.texture_lookup;
     return resolved = resolve_material(*ctx.scene, ctx.scene->materials[hit.material], hit.attributes);
+  }
   return ctx.flat_materials[hit.material];
 }
 

@@ -34,7 +34,7 @@ color3 shadow_transmittance(const RenderContext& ctx, const SurfaceHit& from, ve
       HitId id = intersect_nearest(*ctx.accel, ray);
       if (!id.valid()) return transmittance;
       SurfaceHit hit = make_surface_hit(*ctx.accel, ray, id);
-      transmittance *= occluder_transmittance(material_at<E>(ctx, hit, resolved), any_kt);
+      transmittance *= occluder_transmittance(material_at<E>(ctx, id, hit, resolved), any_kt);
       if (max_component(transmittance) <= 0) return {0, 0, 0};
       ray = infinite ? spawn_ray(hit, direction) : spawn_ray_to(hit, target);
     }

@@ -52,7 +52,7 @@ color3 trace(const RenderContext& ctx, const Ray& ray, int depth, color3 weight,
   }
   SurfaceHit hit = make_surface_hit(*ctx.accel, ray, id);
   SurfaceMaterial resolved;
-  const SurfaceMaterial& m = material_at<E>(ctx, hit, resolved);
+  const SurfaceMaterial& m = material_at<E>(ctx, id, hit, resolved);
   HitShading f = make_hit_shading<E>(ctx.effects, hit, m, ray.direction);
   if (first_hit) *first_hit = {bsdf_albedo(m), f.normal, id.t * length(ray.direction), 1};
 

@@ -73,6 +73,7 @@ SurfaceMaterial resolve_metallic_roughness(const SceneDesc& scene, const Materia
   m.transmission = clamp01(material.transmission * sample_texture(scene, material.transmission_texture,
                                                                    attributes, false).x);
   m.ior = material.ior;
+  m.dispersion = material.dispersion;
   m.specular = clamp01(material.specular * sample_texture(scene, material.specular_strength_texture, attributes,
                                                           false).w);
   m.specular_color = max(material.specular_color * rgb(sample_texture(scene, material.specular_color_texture,
@@ -119,6 +120,18 @@ SurfaceMaterial resolve_phong(const SceneDesc& scene, const MaterialDesc& materi
 }
 
 }  // namespace
+
+std::vector<TextureSlot> texture_slots(const MaterialDesc& m) {
+  return {{&m.base_color_texture, true},         {&m.metallic_roughness_texture, false},
+          {&m.normal_texture, false},            {&m.bump_texture, false},
+          {&m.transmission_texture, false},      {&m.specular_strength_texture, false},
+          {&m.specular_color_texture, true},     {&m.clearcoat_texture, false},
+          {&m.clearcoat_roughness_texture, false}, {&m.sheen_color_texture, true},
+          {&m.sheen_roughness_texture, false},   {&m.anisotropy_texture, false},
+          {&m.iridescence_texture, false},       {&m.iridescence_thickness_texture, false},
+          {&m.specular_texture, false},          {&m.alpha_texture, false},
+          {&m.emission_texture, true}};
+}
 
 SurfaceMaterial resolve_material(const SceneDesc& scene, const MaterialDesc& material,
                                  const SurfaceAttributes& attributes) {

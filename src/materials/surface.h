@@ -7,11 +7,31 @@
 
 namespace radiant {
 
+struct TexturePyramids;
+
+// How a render's lookups filter: the mode of --texture-filter and, for trilinear, the pyramids.
+struct TextureLookup {
+  TextureFilterMode mode = TextureFilterMode::bilinear;
+  const TexturePyramids* pyramids = nullptr;
+};
+
 // Per-hit geometric attributes a material needs for its texture lookups.
 struct SurfaceAttributes {
   vec2 uv[2] = {{0, 0}, {0, 0}};
   vec4 vertex_color = {1, 1, 1, 1};
+  // The change of each uv set across one pixel in x and in y (zero: no footprint, full resolution).
+  vec2 duv_dx[2] = {{0, 0}, {0, 0}}, duv_dy[2] = {{0, 0}, {0, 0}};
+  // The render's filtering; null: each texture's own filter at full resolution.
+  const TextureLookup* lookup = nullptr;
 };
+
+// A material's texture slot and whether resolve_material decodes it as sRGB colour.
+struct TextureSlot {
+  const TextureRef* ref;
+  bool srgb;
+};
+// Every texture slot of `material` (valid or not), with the decoding resolve_material reads it with.
+std::vector<TextureSlot> texture_slots(const MaterialDesc& material);
 
 // A material's parameters at one point: MaterialDesc with every texture applied.
 struct SurfaceMaterial {
@@ -21,6 +41,7 @@ struct SurfaceMaterial {
   color3 ka, kd, ks, kr, kt;
   float shininess = 1;
   float ior = 1.5f;
+  float dispersion = 0;  // KHR_materials_dispersion: 20 / Abbe number (metallic-roughness transmission)
   // Metallic-roughness, valid when model == metallic_roughness.
   color3 base_color = {1, 1, 1};
   float metallic = 0, roughness = 1, transmission = 0;

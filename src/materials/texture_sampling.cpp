@@ -1,8 +1,9 @@
-// Texture lookups: KHR_texture_transform, wrap modes, nearest/bilinear filtering, sRGB decode.
+// Texture lookups: KHR_texture_transform, wrap modes, nearest/bilinear/trilinear filtering, sRGB decode.
 #include <array>
 #include <cmath>
 
 #include "materials/surface.h"
+#include "materials/texture_pyramid.h"
 
 namespace radiant {
 
@@ -68,20 +69,9 @@ int wrap_index(int i, int size, TextureWrap wrap) {
   return 0;
 }
 
-// One texel as linear RGBA; the alpha channel is always linear.
-vec4 fetch_texel(const ImageDesc& image, int x, int y, bool srgb) {
-  size_t base = (size_t(y) * size_t(image.width) + size_t(x)) * size_t(image.channels);
-  float values[4] = {0, 0, 0, 1};
-  for (int c = 0; c < image.channels; ++c) {
-    if (!image.texels8.empty()) {
-      uint8_t byte = image.texels8[base + c];
-      bool is_alpha = image.channels == 2 ? c == 1 : c == 3;
-      values[c] = srgb && !is_alpha ? srgb_to_linear_table()[byte] : byte / 255.0f;
-    } else {
-      values[c] = image.texels_float[base + c];
-    }
-  }
-  switch (image.channels) {
+// RGBA from a texel's channel values (missing channels: RGB repeat the first, A = 1).
+vec4 expand_channels(const float* values, int channels) {
+  switch (channels) {
     case 1: return {values[0], values[0], values[0], 1};
     case 2: return {values[0], values[0], values[0], values[1]};
     case 3: return {values[0], values[1], values[2], 1};
@@ -89,11 +79,77 @@ vec4 fetch_texel(const ImageDesc& image, int x, int y, bool srgb) {
   }
 }
 
+// One texel as linear RGBA; the alpha channel is always linear.
+vec4 fetch_texel(const ImageDesc& image, int x, int y, bool srgb) {
+  float values[4] = {0, 0, 0, 1};
+  for (int c = 0; c < image.channels; ++c) values[c] = texel_value(image, x, y, c, srgb);
+  return expand_channels(values, image.channels);
+}
+
 vec4 mix(vec4 a, vec4 b, float t) {
   return {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t, a.z + (b.z - a.z) * t, a.w + (b.w - a.w) * t};
 }
 
+// One level of a texture to read: level 0 (the image itself) or a pyramid level.
+struct LevelView {
+  const ImageDesc* image = nullptr;
+  const MipLevel* level = nullptr;  // null: level 0
+  int width = 0, height = 0;
+  bool srgb = false;
+
+  vec4 fetch(int x, int y) const {
+    if (!level) return fetch_texel(*image, x, y, srgb);
+    return expand_channels(&level->texels[(size_t(y) * size_t(width) + size_t(x)) * size_t(level->channels)],
+                           level->channels);
+  }
+};
+
+LevelView level_view(const ImageDesc& image, const ImagePyramid* pyramid, int level, bool srgb) {
+  if (level == 0 || !pyramid) return {&image, nullptr, image.width, image.height, srgb};
+  const MipLevel& m = pyramid->levels[size_t(level - 1)];
+  return {&image, &m, m.width, m.height, srgb};
+}
+
+// The nearest texel or the bilinear mean of the four texel centres around uv, on one level.
+vec4 lookup_level(const LevelView& view, const TextureDesc& texture, vec2 uv, bool nearest) {
+  // glTF puts uv (0,0) at the top-left texel, the first row in memory: no vertical flip.
+  float x = reduce_coordinate(uv.x, texture.wrap_s) * float(view.width);
+  float y = reduce_coordinate(uv.y, texture.wrap_t) * float(view.height);
+  if (nearest) {
+    int i = wrap_index(int(std::floor(x)), view.width, texture.wrap_s);
+    int j = wrap_index(int(std::floor(y)), view.height, texture.wrap_t);
+    return view.fetch(i, j);
+  }
+  // Bilinear between the four texel centres around (x, y); centres sit at half-integers.
+  float fx = x - 0.5f, fy = y - 0.5f;
+  int x0 = int(std::floor(fx)), y0 = int(std::floor(fy));
+  float tx = fx - float(x0), ty = fy - float(y0);
+  int i0 = wrap_index(x0, view.width, texture.wrap_s);
+  int i1 = wrap_index(x0 + 1, view.width, texture.wrap_s);
+  int j0 = wrap_index(y0, view.height, texture.wrap_t);
+  int j1 = wrap_index(y0 + 1, view.height, texture.wrap_t);
+  vec4 top = mix(view.fetch(i0, j0), view.fetch(i1, j0), tx);
+  vec4 bottom = mix(view.fetch(i0, j1), view.fetch(i1, j1), tx);
+  return mix(top, bottom, ty);
+}
+
+// KHR_texture_transform's linear part (R * S) applied to a uv difference.
+vec2 transform_uv_difference(const TextureRef& ref, vec2 d) {
+  if (ref.rotation == 0 && ref.scale.x == 1 && ref.scale.y == 1) return d;
+  float c = std::cos(ref.rotation), s = std::sin(ref.rotation);
+  vec2 scaled = {d.x * ref.scale.x, d.y * ref.scale.y};
+  return {c * scaled.x + s * scaled.y, -s * scaled.x + c * scaled.y};
+}
+
 }  // namespace
+
+float texel_value(const ImageDesc& image, int x, int y, int c, bool srgb) {
+  size_t index = (size_t(y) * size_t(image.width) + size_t(x)) * size_t(image.channels) + size_t(c);
+  if (image.texels8.empty()) return image.texels_float[index];
+  uint8_t byte = image.texels8[index];
+  bool is_alpha = image.channels == 2 ? c == 1 : c == 3;
+  return srgb && !is_alpha ? srgb_to_linear_table()[byte] : byte / 255.0f;
+}
 
 vec4 sample_texture(const SceneDesc& scene, const TextureRef& ref, const SurfaceAttributes& attributes,
                     bool srgb) {
@@ -101,25 +157,21 @@ vec4 sample_texture(const SceneDesc& scene, const TextureRef& ref, const Surface
   if (!image || ref.texcoord < 0 || ref.texcoord > 1) return {1, 1, 1, 1};
   const TextureDesc& texture = scene.textures[ref.texture];
   vec2 uv = transform_uv(ref, attributes.uv[ref.texcoord]);
-  // glTF puts uv (0,0) at the top-left texel, the first row in memory: no vertical flip.
-  float x = reduce_coordinate(uv.x, texture.wrap_s) * float(image->width);
-  float y = reduce_coordinate(uv.y, texture.wrap_t) * float(image->height);
-  if (texture.filter == TextureFilter::nearest) {
-    int i = wrap_index(int(std::floor(x)), image->width, texture.wrap_s);
-    int j = wrap_index(int(std::floor(y)), image->height, texture.wrap_t);
-    return fetch_texel(*image, i, j, srgb);
-  }
-  // Bilinear between the four texel centres around (x, y); centres sit at half-integers.
-  float fx = x - 0.5f, fy = y - 0.5f;
-  int x0 = int(std::floor(fx)), y0 = int(std::floor(fy));
-  float tx = fx - float(x0), ty = fy - float(y0);
-  int i0 = wrap_index(x0, image->width, texture.wrap_s);
-  int i1 = wrap_index(x0 + 1, image->width, texture.wrap_s);
-  int j0 = wrap_index(y0, image->height, texture.wrap_t);
-  int j1 = wrap_index(y0 + 1, image->height, texture.wrap_t);
-  vec4 top = mix(fetch_texel(*image, i0, j0, srgb), fetch_texel(*image, i1, j0, srgb), tx);
-  vec4 bottom = mix(fetch_texel(*image, i0, j1, srgb), fetch_texel(*image, i1, j1, srgb), tx);
-  return mix(top, bottom, ty);
+  TextureFilterMode mode = attributes.lookup ? attributes.lookup->mode : TextureFilterMode::bilinear;
+  bool nearest = mode == TextureFilterMode::point || texture.filter == TextureFilter::nearest;
+  const ImagePyramid* pyramid = nullptr;
+  if (mode == TextureFilterMode::trilinear && attributes.lookup->pyramids)
+    pyramid = attributes.lookup->pyramids->find(texture.image, srgb && !image->texels8.empty());
+  if (!pyramid) return lookup_level(level_view(*image, nullptr, 0, srgb), texture, uv, nearest);
+  // Trilinear: the two levels around the footprint's, each read with the texture's own filter.
+  float level = mip_level_for(transform_uv_difference(ref, attributes.duv_dx[ref.texcoord]),
+                              transform_uv_difference(ref, attributes.duv_dy[ref.texcoord]), image->width,
+                              image->height, int(pyramid->levels.size()));
+  int lower = int(level);
+  vec4 value = lookup_level(level_view(*image, pyramid, lower, srgb), texture, uv, nearest);
+  float t = level - float(lower);
+  if (t == 0) return value;
+  return mix(value, lookup_level(level_view(*image, pyramid, lower + 1, srgb), texture, uv, nearest), t);
 }
 
 vec2 sample_texture_slope(const SceneDesc& scene, const TextureRef& ref, const SurfaceAttributes& attributes) {

@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "accel/ray.h"
+#include "materials/texture_footprint.h"
 #include "render/render_options.h"
 #include "scene/scene_desc.h"
 
@@ -25,6 +26,10 @@ CameraFrame make_camera_frame(const CameraDesc& camera, int width, int height);
 // the lens at the point `lens` in [0,1)^2 picks (ignored by a pinhole). nullopt where the
 // projection sees nothing (outside a fisheye's circle).
 std::optional<Ray> generate_camera_ray(const CameraFrame& frame, float x, float y, vec2 lens = {0.5f, 0.5f});
+
+// The smallest spread between neighbouring pixels' rays over the image, searched along its
+// diagonal through the lens centre as pbrt-v4's FindMinimumDifferentials does.
+PixelSpread make_pixel_spread(const CameraFrame& frame);
 
 // The box a framing camera (used when the file has no camera) must show: everything finite, and a
 // point on each infinite plane and tube. False when there is nothing to frame.

@@ -33,7 +33,8 @@ double seconds_since(Clock::time_point start) {
 }
 
 RenderContext make_context(const PreparedScene& prepared, const ResolvedSettings& s, const LightTable& lights,
-                           const RenderOptions& options) {
+                           const RenderOptions& options, const CameraFrame& frame,
+                           const TexturePyramids* pyramids) {
   const SceneDesc& scene = *prepared.scene;
   RenderContext ctx;
   ctx.scene = &scene;
@@ -47,6 +48,8 @@ RenderContext make_context(const PreparedScene& prepared, const ResolvedSettings
   for (const SurfaceMaterial& m : ctx.flat_materials) ctx.flat_bsdf_materials.emplace_back(m);
   ctx.absorption.reserve(scene.materials.size());
   for (const MaterialDesc& m : scene.materials) ctx.absorption.push_back(volume_absorption(m));
+  ctx.texture_lookup = {options.texture_filter, pyramids};
+  ctx.pixel_spread = make_pixel_spread(frame);
   ctx.effects = s.effects;
   ctx.max_depth = s.max_depth;
   ctx.contribution_cutoff = options.contribution_cutoff;
@@ -198,6 +201,8 @@ PreparedScene prepare_scene(SceneDesc scene, const RenderOptions& options) {
   place_at_render_origin(*prepared.scene, prepared.world, prepared.origin);
   build_accel(prepared);
   prepared.effects = analyze_effects(*prepared.scene);
+  if (options.texture_filter == TextureFilterMode::trilinear)
+    prepared.texture_pyramids = std::make_unique<TexturePyramids>(build_texture_pyramids(*prepared.scene, options.memory));
   return prepared;
 }
 
@@ -230,7 +235,15 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
   s.light_sampler = lights.sampler;
   MemoryCharge materials_memory(options.memory, shading_materials_bytes(*prepared.scene),
                                 prepared.scene->source_path + ": the materials prepared for shading");
-  RenderContext ctx = make_context(prepared, s, lights, options);
+  // A scene prepared for another filter builds the mip-maps this render needs for itself.
+  std::unique_ptr<TexturePyramids> own_pyramids;
+  const TexturePyramids* pyramids = prepared.texture_pyramids.get();
+  if (options.texture_filter == TextureFilterMode::trilinear && !pyramids) {
+    own_pyramids = std::make_unique<TexturePyramids>(build_texture_pyramids(*prepared.scene, options.memory));
+    pyramids = own_pyramids.get();
+  }
+  CameraFrame frame = make_camera_frame(s.camera, s.width, s.height);
+  RenderContext ctx = make_context(prepared, s, lights, options, frame, pyramids);
 
   result.film = make_film(width, height, want_aovs, s.transparent);
   result.film.x = s.window.x0, result.film.y = s.window.y0;
@@ -249,8 +262,8 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
   ProgressMeter progress(options.progress && !options.quiet, pixels * uint64_t(s.samples.end - s.samples.begin),
                          stop.deadline);
   PixelFilter filter = make_pixel_filter(s.filter, s.filter_radius);
-  PassRunner runner{ctx, s, select_integrator(s), make_camera_frame(s.camera, s.width, s.height), filter,
-                    want_aovs, s.transparent, options.seed, result.film, counts, stop, progress};
+  PassRunner runner{ctx, s, select_integrator(s), frame, filter, want_aovs, s.transparent, options.seed, result.film, counts, stop,
+                    progress};
 
   // More threads than TBB's limit (the cores) are not started anyway, and asking prints a warning.
   int cores = tbb::this_task_arena::max_concurrency();

@@ -8,6 +8,7 @@
 #include "film/film.h"
 #include "image/image_writer.h"
 #include "integrators/render_context.h"
+#include "materials/texture_pyramid.h"
 #include "render/render_options.h"
 #include "render/render_space.h"
 
@@ -23,11 +24,14 @@ struct PreparedScene {
   double build_seconds = 0;
   MemoryBudget* budget = nullptr;  // what the accelerator is charged to (RenderOptions::memory)
   MemoryCharge accel_memory;       // the accelerator's estimated size, held against the budget
+  // The textures' mip-maps (charged to `budget`), when the options prepared for are trilinear.
+  std::unique_ptr<TexturePyramids> texture_pyramids;
 };
 // Takes a loaded (world-space) scene and builds it in the render space of the view `options`
-// ask for. Charges options.memory (when given) for the accelerator before building it, and
-// rebuilds charge the same budget; throws MemoryLimitError, and std::invalid_argument for a
-// camera that does not exist or a bad view.
+// ask for. Charges options.memory (when given) for the accelerator before building it (rebuilds
+// charge the same budget) and for the textures' mip-maps when options.texture_filter is
+// trilinear; throws MemoryLimitError, and std::invalid_argument for a camera that does not
+// exist or a bad view.
 PreparedScene prepare_scene(SceneDesc scene, const RenderOptions& options = {});
 // Moves `prepared` to the render origin the view of `options` needs, rebuilding the accelerator
 // only when that origin differs from the current one; returns the seconds spent.

@@ -87,6 +87,8 @@ struct RenderOptions {
   // radius); unset: the scene's, then box, and each filter's own default width.
   std::optional<PixelFilterKind> filter;
   std::optional<float> filter_width;
+  // --texture-filter: how texture lookups filter (trilinear: mip-mapped by the pixel's footprint).
+  TextureFilterMode texture_filter = TextureFilterMode::trilinear;
   float noise_threshold = 0;      // 0 = off
   float contribution_cutoff = 0.001f;  // Whitted: stop recursing below this weight
   bool quiet = false;

@@ -59,6 +59,7 @@ std::string settings_hash(const ResolvedSettings& s, const RenderOptions& option
   put(text, s.environment_color);
   text << s.environment_map << '\n' << s.effects << ' ' << s.compiled_variant << ' ';
   put(text, options.contribution_cutoff);
+  text << int(options.texture_filter) << ' ';
   text << (options.aovs.empty() ? "no-aov-sums" : "aov-sums");
   text << (s.transparent ? " transparent " : " opaque ") << int(s.filter) << ' ';
   put(text, s.filter_radius);

@@ -49,6 +49,9 @@ struct ImageDesc {
 
 enum class TextureWrap { repeat, clamp_to_edge, mirrored_repeat };
 enum class TextureFilter { linear, nearest };
+// How every lookup of a render filters (--texture-filter): the nearest texel or the texture's own
+// filter at full resolution, or mip-mapped by the pixel's footprint (docs/materials.md).
+enum class TextureFilterMode { point, bilinear, trilinear };
 
 struct TextureDesc {
   int image = -1;
@@ -131,6 +134,8 @@ struct MaterialDesc {
   float thickness = 0;
   float attenuation_distance = 0;  // 0 = infinite: no absorption
   color3 attenuation_color = {1, 1, 1};
+  // KHR_materials_dispersion: 20 / the Abbe number (0 = none); the IOR varies with wavelength.
+  float dispersion = 0;
   TextureRef specular_texture;      // linear RGB weight for ks (OBJ map_Ks)
   TextureRef alpha_texture;         // linear, R channel (OBJ map_d)
 

@@ -271,6 +271,8 @@ TEST_CASE("gltf errors: clearcoat, sheen and volume factors must be non-negative
         where + "KHR_materials_volume.attenuationDistance: must be positive, got 0");
   CHECK(with_extension("\"KHR_materials_volume\":{\"thicknessFactor\":-2}") ==
         where + "KHR_materials_volume.thicknessFactor: must not be negative, got -2");
+  CHECK(with_extension("\"KHR_materials_dispersion\":{\"dispersion\":-0.5}") ==
+        where + "KHR_materials_dispersion.dispersion: must not be negative, got -0.5");
   CHECK(with_extension("\"KHR_materials_volume\":{\"attenuationColor\":[1,1]}") ==
         where + "KHR_materials_volume.attenuationColor: must be an array of 3 numbers");
   CHECK(with_extension("\"KHR_materials_sheen\":{\"sheenColorFactor\":[1,1,1]},\"KHR_materials_clearcoat\":{},"

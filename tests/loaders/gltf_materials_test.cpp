@@ -39,7 +39,8 @@ TEST_CASE("gltf materials: factors, textures, samplers and the supported extensi
       "\"KHR_materials_volume\":{\"thicknessFactor\":0.05,\"attenuationDistance\":2.5,\"attenuationColor\":[0.9,0.8,0.7]},"
       "\"KHR_materials_iridescence\":{\"iridescenceFactor\":0.6,\"iridescenceIor\":1.8,\"iridescenceThicknessMinimum\":200,"
       "\"iridescenceThicknessMaximum\":700,\"iridescenceThicknessTexture\":{\"index\":0}},"
-      "\"KHR_materials_anisotropy\":{\"anisotropyStrength\":0.7,\"anisotropyRotation\":1.25,\"anisotropyTexture\":{\"index\":0}}}}]";
+      "\"KHR_materials_anisotropy\":{\"anisotropyStrength\":0.7,\"anisotropyRotation\":1.25,\"anisotropyTexture\":{\"index\":0}},"
+      "\"KHR_materials_dispersion\":{\"dispersion\":0.36}}}]";
   SceneDesc scene = load_scene(dir.write("m.gltf", b.gltf(body)).string());
   REQUIRE(scene.materials.size() == 2);
   const MaterialDesc& m = scene.materials[0];
@@ -92,6 +93,8 @@ TEST_CASE("gltf materials: factors, textures, samplers and the supported extensi
   CHECK(m.anisotropy_strength == doctest::Approx(0.7));
   CHECK(m.anisotropy_rotation == doctest::Approx(1.25));
   CHECK(m.anisotropy_texture.texture == 0);
+  CHECK(m.dispersion == doctest::Approx(0.36));
+  CHECK(scene.materials[1].dispersion == 0);
   CHECK(scene.materials[1].clearcoat == 0);
   CHECK(is_black(scene.materials[1].sheen_color));
   CHECK_FALSE(scene.materials[1].specular_color_texture.valid());
