@@ -81,6 +81,9 @@ void merge_shards(const std::vector<std::string>& paths, const std::string& outp
   } else {
     OutputImage image = film_to_image(film, merged.aovs);
     image.metadata = record;
+    image.display = merged.display;  // as the one render would have written it
+    image.bit_depth = merged.bit_depth;
+    image.half = merged.half;
     write_image(outputs.create(output), image);
   }
   outputs.commit();

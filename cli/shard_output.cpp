@@ -37,6 +37,9 @@ ShardInfo make_shard_info(const PreparedScene& prepared, const ResolvedSettings&
   info.full_width = s.width, info.full_height = s.height;
   info.aovs = options.aovs;
   info.transparent = s.transparent;
+  info.display = {options.exposure, s.view};
+  info.bit_depth = options.bit_depth;
+  info.half = options.half_float;
   if (options.shard) {
     info.shard_index = options.shard->index, info.shard_count = options.shard->count;
     info.split = split_name(options.shard->split);

@@ -15,9 +15,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Flags that change where or how loudly a shard is written, or whether it can be, never its bytes.
+// Flags that change where or how loudly a shard is written, or whether it can be, never its
+// bytes. (--exposure, --view, --bit-depth and --half do: the shard records them for merge.)
 const char* const flags_outside_the_shard[] = {"output", "threads", "max-memory", "quiet", "stats", "skip-existing",
-                                                "exposure", "view", "bit-depth", "half", "format"};
+                                                "format"};
 
 }  // namespace
 

@@ -3,6 +3,7 @@
 #include <array>
 #include <bit>
 #include <charconv>
+#include <cmath>
 #include <memory>
 #include <utility>
 #include <stdexcept>
@@ -75,6 +76,13 @@ Number parse_number(const std::string& name, const std::string& text) {
   return value;
 }
 
+// The shortest text that reads back as `value` exactly.
+std::string float_text(float value) {
+  char text[32];
+  auto [end, error] = std::to_chars(text, text + sizeof text, value);
+  return std::string(text, end);
+}
+
 // "A:B" or "X0,Y0,X1,Y1" as numbers.
 std::vector<int64_t> parse_numbers(const std::string& name, const std::string& text, char separator, size_t count) {
   std::vector<int64_t> numbers;
@@ -115,6 +123,10 @@ ImageMetadata shard_metadata(const ShardInfo& info) {
       {"radiant:inputs", join(info.inputs, '\n')},
   };
   if (info.transparent) m.emplace_back("radiant:transparent", "1");
+  m.emplace_back("radiant:view", view_transform_name(info.display.view));
+  if (info.display.exposure != 0) m.emplace_back("radiant:exposure", float_text(info.display.exposure));
+  if (info.bit_depth != 8) m.emplace_back("radiant:bit_depth", std::to_string(info.bit_depth));
+  if (info.half) m.emplace_back("radiant:half", "1");
   if (!info.partial.empty()) m.emplace_back("radiant:partial", info.partial);
   return m;
 }
@@ -163,6 +175,25 @@ ShardInfo parse_shard_metadata(const ImageMetadata& metadata) {
   if (!transparent.empty() && transparent != "1")
     throw std::runtime_error("radiant:transparent '" + transparent + "' is not 1");
   info.transparent = transparent == "1";
+  if (std::string view = find("view", false); !view.empty()) {
+    try {
+      info.display.view = parse_view_transform(view);
+    } catch (const std::invalid_argument& e) {
+      throw std::runtime_error("radiant:view: " + std::string(e.what()));
+    }
+  }
+  if (std::string exposure = find("exposure", false); !exposure.empty()) {
+    info.display.exposure = parse_number<float>("exposure", exposure);
+    if (!std::isfinite(info.display.exposure) || std::abs(info.display.exposure) > 64)
+      throw std::runtime_error("radiant:exposure '" + exposure + "' is not a number of stops in [-64, 64]");
+  }
+  if (std::string depth = find("bit_depth", false); !depth.empty()) {
+    if (depth != "16") throw std::runtime_error("radiant:bit_depth '" + depth + "' is not 16");
+    info.bit_depth = 16;
+  }
+  std::string half = find("half", false);
+  if (!half.empty() && half != "1") throw std::runtime_error("radiant:half '" + half + "' is not 1");
+  info.half = half == "1";
   info.partial = find("partial", false);
   info.request_hash = find("request_hash", false);
   info.inputs = split(find("inputs", false), '\n');

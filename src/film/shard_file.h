@@ -11,6 +11,7 @@
 
 #include "film/film.h"
 #include "image/image_io_module.h"
+#include "image/view_transform.h"
 #include "memory/memory_budget.h"
 #include "output/temporary_file.h"
 
@@ -30,6 +31,12 @@ struct ShardInfo {
   int full_width = 0, full_height = 0;
   std::vector<std::string> aovs;  // the AOVs of the render's output (merge writes them)
   bool transparent = false;       // holds coverage sums; merge writes RGBA
+  // How the render's image is encoded (--exposure, --view or the scene's `view`, --bit-depth,
+  // --half): no pixel of the shard depends on them, but merge writes its image with them, so
+  // that it equals the one render's.
+  DisplaySettings display;
+  int bit_depth = 8;
+  bool half = false;
   int shard_index = 0, shard_count = 0;  // I and K of --shard I/K; K = 0 for --crop/--sample-range
   std::string split;                     // tiles, samples or both with --shard
   std::string partial;            // why the render stopped early ("" when complete)

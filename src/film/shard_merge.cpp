@@ -38,6 +38,12 @@ void check_belong(const NamedShard& first, const NamedShard& s) {
   require_same(first, s, "alpha", a.transparent ? "transparent" : "opaque", b.transparent ? "transparent" : "opaque",
                "rendered with and without --transparent");
   require_same(first, s, "settings hash", a.settings_hash, b.settings_hash, "rendered with different settings");
+  auto encoding = [](const ShardInfo& i) {
+    return std::string(view_transform_name(i.display.view)) + ", exposure " + std::to_string(i.display.exposure) + ", " +
+           std::to_string(i.bit_depth) + " bits" + (i.half ? ", half" : "");
+  };
+  require_same(first, s, "image encoding", encoding(a), encoding(b),
+               "rendered with different --view, --exposure, --bit-depth or --half");
   require_same(first, s, "sampler", a.sampler, b.sampler, "rendered with different samplers");
   require_same(first, s, "seed", std::to_string(a.seed), std::to_string(b.seed), "rendered with different seeds");
   require_same(first, s, "image size", std::to_string(a.full_width) + "x" + std::to_string(a.full_height),

@@ -21,6 +21,7 @@ namespace radiant {
 struct DisplaySettings {
   float exposure = 0;  // stops: each one doubles the radiance before the view transform
   ViewTransform view = ViewTransform::standard;
+  bool operator==(const DisplaySettings&) const = default;
 };
 
 // The display values in [0, 1] of a linear color.

@@ -120,6 +120,34 @@ TEST_CASE("merge cli: tiles, sample ranges and both merge to a single render's p
   }
 }
 
+TEST_CASE("merge cli: the merged PNG is encoded as the render's: the scene's view, --exposure and --bit-depth") {
+  ScratchDir dir("merge-encoding");
+  // first-render.scene chooses `view linear`; a merge that ignored it would write standard sRGB.
+  std::string scene = quoted(source_path("assets/first-render.scene")), base = " --width 12 --height 10 --spp 4";
+  for (std::string encoding : {std::string(""), std::string(" --exposure 1.5 --bit-depth 16")}) {
+    CAPTURE(encoding);
+    fs::path single = dir.file("single.png"), merged = dir.file("merged.png");
+    radiant_ok("render " + scene + " -o " + quoted(single) + base + encoding);
+    std::string shards;
+    for (int i = 0; i < 2; ++i) {
+      std::string shard = quoted(dir.file("s" + std::to_string(i) + ".exr"));
+      radiant_ok("render " + scene + " -o " + shard + base + encoding + " --shard " + std::to_string(i) + "/2");
+      shards += shard + " ";
+    }
+    radiant_ok("merge " + shards + "-o " + quoted(merged));
+    CHECK(same_pixels(single, merged));
+    CHECK(header_of(merged).channel_types == header_of(single).channel_types);
+  }
+  // Shards of one render share its encoding; others are refused.
+  radiant_ok("render " + scene + " -o " + quoted(dir.file("other.exr")) + base + " --view filmic --shard 1/2");
+  fs::path refused = dir.file("refused.png");
+  CommandResult r = run_radiant("merge " + quoted(dir.file("s0.exr")) + " " + quoted(dir.file("other.exr")) + " -o " +
+                                quoted(refused));
+  CHECK(r.exit_code == 1);
+  CHECK(r.err.find("its image encoding 'filmic, exposure 0.000000, 8 bits' differs") != std::string::npos);
+  CHECK_FALSE(fs::exists(refused));
+}
+
 TEST_CASE("merge cli: --keep-accum merges part of the shards into a shard that merges with the rest") {
   ScratchDir dir("merge-hierarchical");
   std::string scene = quoted(source_path("assets/cornell.gltf")), base = " --width 12 --height 10 --spp 8 --max-depth 3";
