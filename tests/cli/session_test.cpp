@@ -63,6 +63,20 @@ TEST_CASE("session: moves and turns give the pixels of the equivalent render lin
   CHECK(same_pixels(dir.file("again.png"), view));
 }
 
+TEST_CASE("session: with set no-metadata the image is the equivalent render line's, byte for byte") {
+  ScratchDir dir("session-bytes");
+  RadiantProcess session(session_args(dir, {"--spp", "4", "--mode", "path"}), piped());
+  session.write_stdin("set no-metadata\nmoveto 300 0 1000\nturnto -300 0 -1200\n");
+  session.close_stdin();
+  CommandResult r = session.wait(120);
+  REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+  CommandResult line = run_radiant("render " + quoted(dir.file("s.scene")) + " -o " + quoted(dir.file("line.png")) +
+                                   " --width 32 --height 32 --spp 4 --mode path --look-from 300,0,1000 --look-at 0,0,-200"
+                                   " --no-metadata --quiet");
+  REQUIRE(line.exit_code == 0);
+  CHECK(read_bytes(dir.file("view.png")) == read_bytes(dir.file("line.png")));
+}
+
 TEST_CASE("session: info prints the view as render flags that reproduce it after turns") {
   ScratchDir dir("session-info");
   RadiantProcess session(session_args(dir, {"--spp", "2"}), piped());
