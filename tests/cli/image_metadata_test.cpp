@@ -7,6 +7,7 @@
 #include <string>
 
 #include "support/test_scenes.h"
+#include "support/radiant_ok.h"
 #include "support/test_support.h"
 
 using namespace radiant;
@@ -16,14 +17,6 @@ namespace fs = std::filesystem;
 namespace {
 
 const char* tiny = " --width 8 --height 8 --spp 2 --seed 7 --mode path --quiet";
-
-CommandResult radiant_ok(const std::string& args) {
-  CommandResult r = run_radiant(args);
-  INFO(args);
-  INFO(r.err);
-  REQUIRE(r.exit_code == 0);
-  return r;
-}
 
 }  // namespace
 

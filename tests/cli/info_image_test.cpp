@@ -9,6 +9,7 @@
 #include "image/image_io.h"
 #include "output/output_set.h"
 #include "support/test_scenes.h"
+#include "support/radiant_ok.h"
 #include "support/test_support.h"
 
 using namespace radiant;
@@ -18,14 +19,6 @@ namespace fs = std::filesystem;
 namespace {
 
 const char* tiny = " --width 8 --height 8 --spp 2 --seed 7 --mode path --quiet";
-
-CommandResult radiant_ok(const std::string& args) {
-  CommandResult r = run_radiant(args);
-  INFO(args);
-  INFO(r.err);
-  REQUIRE(r.exit_code == 0);
-  return r;
-}
 
 }  // namespace
 

@@ -2,11 +2,11 @@
 // setting matches the flag, and bad filters are usage errors.
 #include <doctest/doctest.h>
 
-#include <cstring>
 #include <nlohmann/json.hpp>
 #include <filesystem>
 #include <string>
 
+#include "support/radiant_ok.h"
 #include "support/test_support.h"
 
 using namespace radiant;
@@ -15,19 +15,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-void render_ok(const std::string& args) {
-  CommandResult r = run_radiant(args + " --quiet");
-  INFO(args);
-  INFO(r.err);
-  REQUIRE(r.exit_code == 0);
-}
-
-void require_same_pixels(const fs::path& a, const fs::path& b) {
-  TestImage x = read_image(a), y = read_image(b);
-  REQUIRE(x.channel_names == y.channel_names);
-  REQUIRE(x.pixels.size() == y.pixels.size());
-  CHECK(std::memcmp(x.pixels.data(), y.pixels.data(), x.pixels.size() * sizeof(float)) == 0);
-}
+void render_ok(const std::string& args) { radiant_ok(args + " --quiet"); }
 
 }  // namespace
 
@@ -40,7 +28,7 @@ TEST_CASE("filter cli: Mitchell and Gaussian renders merge from shards of tiles 
     fs::path single = dir.file("single.exr"), one_thread = dir.file("one-thread.exr"), box = dir.file("box.exr");
     render_ok("render " + scene + " -o " + quoted(single) + flags);
     render_ok("render " + scene + " -o " + quoted(one_thread) + flags + " --threads 1");
-    require_same_pixels(single, one_thread);
+    CHECK(same_pixels(single, one_thread));
     std::string shards;
     for (int i = 0; i < 4; ++i) {
       fs::path shard = dir.file("s" + std::to_string(i) + ".exr");
@@ -49,7 +37,7 @@ TEST_CASE("filter cli: Mitchell and Gaussian renders merge from shards of tiles 
     }
     fs::path merged = dir.file("merged.exr");
     render_ok("merge " + shards + " -o " + quoted(merged));
-    require_same_pixels(single, merged);
+    CHECK(same_pixels(single, merged));
     // And the filter changed the image.
     render_ok("render " + scene + " -o " + quoted(box) + " --mode path --width 12 --height 10 --spp 8 --max-depth 3 --aov variance");
     CHECK(read_image(box).pixels != read_image(single).pixels);
@@ -69,7 +57,7 @@ TEST_CASE("filter cli: the .scene filter and filter-width settings render as the
   CHECK(json["transparent"] == false);
   render_ok("render " + quoted(source_path("assets/first-render.scene")) + " -o " + quoted(by_flags) + size +
             " --filter blackman-harris --filter-width 3");
-  require_same_pixels(by_scene, by_flags);
+  CHECK(same_pixels(by_scene, by_flags));
 }
 
 TEST_CASE("filter cli: an unknown filter or a width not above 0 or above 64 is a usage error, writing nothing") {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "image/image_io.h"
+#include "support/radiant_ok.h"
 #include "support/test_support.h"
 
 using namespace radiant;
@@ -30,13 +31,7 @@ const Case cases[] = {
 };
 const char* all_aovs = " --aov albedo,normal,depth,variance,spp";
 
-CommandResult radiant_ok(const std::string& args) {
-  CommandResult r = run_radiant(args + " --quiet");
-  INFO(args);
-  INFO(r.err);
-  REQUIRE(r.exit_code == 0);
-  return r;
-}
+CommandResult quiet_ok(const std::string& args) { return radiant_ok(args + " --quiet"); }
 
 // The words of `text`, split at spaces.
 std::vector<std::string> words_of(const std::string& text) {
@@ -127,19 +122,19 @@ TEST_CASE("merge cli: the merged PNG is encoded as the render's: the scene's vie
   for (std::string encoding : {std::string(""), std::string(" --exposure 1.5 --bit-depth 16")}) {
     CAPTURE(encoding);
     fs::path single = dir.file("single.png"), merged = dir.file("merged.png");
-    radiant_ok("render " + scene + " -o " + quoted(single) + base + encoding);
+    quiet_ok("render " + scene + " -o " + quoted(single) + base + encoding);
     std::string shards;
     for (int i = 0; i < 2; ++i) {
       std::string shard = quoted(dir.file("s" + std::to_string(i) + ".exr"));
-      radiant_ok("render " + scene + " -o " + shard + base + encoding + " --shard " + std::to_string(i) + "/2");
+      quiet_ok("render " + scene + " -o " + shard + base + encoding + " --shard " + std::to_string(i) + "/2");
       shards += shard + " ";
     }
-    radiant_ok("merge " + shards + "-o " + quoted(merged));
+    quiet_ok("merge " + shards + "-o " + quoted(merged));
     CHECK(same_pixels(single, merged));
     CHECK(header_of(merged).channel_types == header_of(single).channel_types);
   }
   // Shards of one render share its encoding; others are refused.
-  radiant_ok("render " + scene + " -o " + quoted(dir.file("other.exr")) + base + " --view filmic --shard 1/2");
+  quiet_ok("render " + scene + " -o " + quoted(dir.file("other.exr")) + base + " --view filmic --shard 1/2");
   fs::path refused = dir.file("refused.png");
   CommandResult r = run_radiant("merge " + quoted(dir.file("s0.exr")) + " " + quoted(dir.file("other.exr")) + " -o " +
                                 quoted(refused));
@@ -152,16 +147,16 @@ TEST_CASE("merge cli: --keep-accum merges part of the shards into a shard that m
   ScratchDir dir("merge-hierarchical");
   std::string scene = quoted(source_path("assets/cornell.gltf")), base = " --width 12 --height 10 --spp 8 --max-depth 3";
   fs::path single = dir.file("single.exr");
-  radiant_ok("render " + scene + " -o " + quoted(single) + base + all_aovs);
+  quiet_ok("render " + scene + " -o " + quoted(single) + base + all_aovs);
   std::string shard[4];
   for (int i = 0; i < 4; ++i) {
     shard[i] = quoted(dir.file("s" + std::to_string(i) + ".exr"));
-    radiant_ok("render " + scene + " -o " + shard[i] + base + all_aovs + " --shard " + std::to_string(i) + "/4 --split both");
+    quiet_ok("render " + scene + " -o " + shard[i] + base + all_aovs + " --shard " + std::to_string(i) + "/4 --split both");
   }
   // --split both of 4: shards 0 and 1 are the two sample ranges of the first tile.
   fs::path half = dir.file("half.exr"), merged = dir.file("merged.exr");
-  radiant_ok("merge " + shard[1] + " " + shard[0] + " -o " + quoted(half) + " --keep-accum");
-  radiant_ok("merge " + quoted(half) + " " + shard[3] + " " + shard[2] + " -o " + quoted(merged));
+  quiet_ok("merge " + shard[1] + " " + shard[0] + " -o " + quoted(half) + " --keep-accum");
+  quiet_ok("merge " + quoted(half) + " " + shard[3] + " " + shard[2] + " -o " + quoted(merged));
   CHECK(same_pixels(single, merged));
   // Shards 0 and 3 (a range of each tile) make no region x sample range: nothing to keep.
   fs::path refused = dir.file("refused.exr");
@@ -176,14 +171,14 @@ TEST_CASE("merge cli: a sobol render of samples 0:4 extended by samples 4:16 of 
   std::string scene = quoted(source_path("assets/cornell.gltf")), base = " --width 10 --height 8 --max-depth 2";
   fs::path single = dir.file("single.exr"), early = dir.file("early.exr"), later = dir.file("later.exr"),
            merged = dir.file("merged.exr");
-  radiant_ok("render " + scene + " -o " + quoted(single) + base + " --sampler sobol --spp 16");
-  radiant_ok("render " + scene + " -o " + quoted(early) + base + " --sampler sobol --spp 4 --sample-range 0:4");
-  radiant_ok("render " + scene + " -o " + quoted(later) + base + " --sampler sobol --spp 16 --sample-range 4:16");
-  radiant_ok("merge " + quoted(early) + " " + quoted(later) + " -o " + quoted(merged));
+  quiet_ok("render " + scene + " -o " + quoted(single) + base + " --sampler sobol --spp 16");
+  quiet_ok("render " + scene + " -o " + quoted(early) + base + " --sampler sobol --spp 4 --sample-range 0:4");
+  quiet_ok("render " + scene + " -o " + quoted(later) + base + " --sampler sobol --spp 16 --sample-range 4:16");
+  quiet_ok("merge " + quoted(early) + " " + quoted(later) + " -o " + quoted(merged));
   CHECK(same_pixels(single, merged));
 
-  radiant_ok("render " + scene + " -o " + quoted(early) + base + " --sampler jittered --spp 4 --sample-range 0:4");
-  radiant_ok("render " + scene + " -o " + quoted(later) + base + " --sampler jittered --spp 16 --sample-range 4:16");
+  quiet_ok("render " + scene + " -o " + quoted(early) + base + " --sampler jittered --spp 4 --sample-range 0:4");
+  quiet_ok("render " + scene + " -o " + quoted(later) + base + " --sampler jittered --spp 16 --sample-range 4:16");
   fs::path refused = dir.file("refused.exr");
   CommandResult r = run_radiant("merge " + quoted(early) + " " + quoted(later) + " -o " + quoted(refused));
   CHECK(r.exit_code == 1);
@@ -195,7 +190,7 @@ TEST_CASE("merge cli: missing shards are listed, mismatched ones named, and noth
   ScratchDir dir("merge-refusals");
   std::string scene = quoted(source_path("assets/cornell.gltf")), base = " --width 8 --height 8 --spp 2 --max-depth 2";
   for (int i : {0, 2})
-    radiant_ok("render " + scene + " -o " + quoted(dir.file("s" + std::to_string(i) + ".exr")) + base + " --shard " +
+    quiet_ok("render " + scene + " -o " + quoted(dir.file("s" + std::to_string(i) + ".exr")) + base + " --shard " +
                std::to_string(i) + "/4");
   fs::path out = dir.file("out.png");
   CommandResult missing = run_radiant("merge " + quoted(dir.file("s0.exr")) + " " + quoted(dir.file("s2.exr")) + " -o " + quoted(out));
@@ -203,8 +198,8 @@ TEST_CASE("merge cli: missing shards are listed, mismatched ones named, and noth
   CHECK(missing.err == "radiant: missing: 1,3 (of --shard I/4 --split tiles)\n");
   CHECK_FALSE(fs::exists(out));
 
-  radiant_ok("render " + scene + " -o " + quoted(dir.file("s1.exr")) + base + " --shard 1/4 --seed 9");
-  radiant_ok("render " + scene + " -o " + quoted(dir.file("s3.exr")) + base + " --shard 3/4");
+  quiet_ok("render " + scene + " -o " + quoted(dir.file("s1.exr")) + base + " --shard 1/4 --seed 9");
+  quiet_ok("render " + scene + " -o " + quoted(dir.file("s3.exr")) + base + " --shard 3/4");
   CommandResult mismatched = run_radiant("merge " + quoted(dir.file("s0.exr")) + " " + quoted(dir.file("s1.exr")) + " " +
                                          quoted(dir.file("s2.exr")) + " " + quoted(dir.file("s3.exr")) + " -o " + quoted(out));
   CHECK(mismatched.exit_code == 1);
@@ -212,7 +207,7 @@ TEST_CASE("merge cli: missing shards are listed, mismatched ones named, and noth
   CHECK_FALSE(fs::exists(out));
 
   fs::path plain = dir.file("plain.exr");
-  radiant_ok("render " + scene + " -o " + quoted(plain) + base);
+  quiet_ok("render " + scene + " -o " + quoted(plain) + base);
   CommandResult not_shard = run_radiant("merge " + quoted(plain) + " -o " + quoted(out));
   CHECK(not_shard.exit_code == 1);
   CHECK(dir.without_path(not_shard.err) == "radiant: plain.exr: not a radiant shard (its radiant:format is not 'radiant shard 1')\n");
@@ -223,8 +218,8 @@ TEST_CASE("render cli: a --crop EXR and a shard carry their region as data windo
   ScratchDir dir("shard-windows");
   std::string scene = quoted(source_path("assets/cornell.gltf")), base = " --width 16 --height 12 --spp 1 --max-depth 1";
   fs::path crop = dir.file("crop.exr"), shard = dir.file("shard.exr");
-  radiant_ok("render " + scene + " -o " + quoted(crop) + base + " --crop 2,3,10,7");
-  radiant_ok("render " + scene + " -o " + quoted(shard) + base + " --shard 3/4");
+  quiet_ok("render " + scene + " -o " + quoted(crop) + base + " --crop 2,3,10,7");
+  quiet_ok("render " + scene + " -o " + quoted(shard) + base + " --shard 3/4");
   for (auto [file, x, y, w, h] : {std::tuple{crop, 2, 3, 8, 4}, {shard, 8, 6, 8, 6}}) {
     CAPTURE(file);
     ImageHeader header = header_of(file);
@@ -257,7 +252,7 @@ TEST_CASE("render cli: splits that cannot be exact are refused as usage errors, 
   CHECK(png.exit_code == 2);
   CHECK(png.err.find("-o must end in .exr") != std::string::npos);
   // Adaptive sampling splits by tiles: each pixel keeps all its samples in one shard.
-  radiant_ok("render " + scene + " -o " + quoted(out) + base + " --noise-threshold 0.1 --shard 0/2 --split tiles");
+  quiet_ok("render " + scene + " -o " + quoted(out) + base + " --noise-threshold 0.1 --shard 0/2 --split tiles");
 }
 
 TEST_CASE("batch cli: --shard I/K renders render lines I, I+K, ... of the script") {
@@ -265,6 +260,6 @@ TEST_CASE("batch cli: --shard I/K renders render lines I, I+K, ... of the script
   std::string script = "scene " + source_path("assets/first-render.scene").string() + "\n";
   for (int i = 0; i < 5; ++i) script += "render -o " + dir.file("v" + std::to_string(i) + ".png").string() + " --width 8 --height 8 --spp 1\n";
   fs::path file = dir.write("views.txt", script);
-  radiant_ok("batch " + quoted(file) + " --shard 1/2");
+  quiet_ok("batch " + quoted(file) + " --shard 1/2");
   for (int i = 0; i < 5; ++i) CHECK(fs::exists(dir.file("v" + std::to_string(i) + ".png")) == (i % 2 == 1));
 }

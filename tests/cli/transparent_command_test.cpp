@@ -8,6 +8,7 @@
 #include <string>
 
 #include "image/image_writer.h"
+#include "support/radiant_ok.h"
 #include "support/test_support.h"
 
 using namespace radiant;
@@ -20,13 +21,6 @@ namespace {
 // The standard view: the scene asks for the linear one, which merge does not know of.
 const std::string sphere_flags = " --width 24 --height 24 --spp 16 --env-color 0.5,0.5,0.5 --view standard --quiet";
 
-void render_ok(const std::string& args) {
-  CommandResult r = run_radiant(args);
-  INFO(args);
-  INFO(r.err);
-  REQUIRE(r.exit_code == 0);
-}
-
 std::string sphere() { return quoted(source_path("assets/first-render.scene")); }
 
 }  // namespace
@@ -34,7 +28,7 @@ std::string sphere() { return quoted(source_path("assets/first-render.scene")); 
 TEST_CASE("transparent cli: PNG holds straight alpha, the EXR's premultiplied color divided by its alpha, encoded") {
   ScratchDir dir("transparent-formats");
   fs::path exr = dir.file("a.exr"), png = dir.file("a.png"), tif = dir.file("a.tif");
-  for (const fs::path& out : {exr, png, tif}) render_ok("render " + sphere() + " -o " + quoted(out) + sphere_flags + " --transparent");
+  for (const fs::path& out : {exr, png, tif}) radiant_ok("render " + sphere() + " -o " + quoted(out) + sphere_flags + " --transparent");
   TestImage linear = read_image(exr), shown = read_image(png), tiff = read_image(tif);
   REQUIRE(linear.channel_names == std::vector<std::string>{"R", "G", "B", "A"});
   REQUIRE(shown.channel_names == std::vector<std::string>{"R", "G", "B", "A"});
@@ -66,14 +60,14 @@ TEST_CASE("transparent cli: PNG holds straight alpha, the EXR's premultiplied co
 TEST_CASE("transparent cli: without --transparent the sky is seen and there is no alpha; .scene's transparent turns it on") {
   ScratchDir dir("transparent-setting");
   fs::path plain = dir.file("plain.exr"), set = dir.file("set.exr"), flag = dir.file("flag.exr");
-  render_ok("render " + sphere() + " -o " + quoted(plain) + sphere_flags);
+  radiant_ok("render " + sphere() + " -o " + quoted(plain) + sphere_flags);
   TestImage image = read_image(plain);
   CHECK(image.channel_names == std::vector<std::string>{"R", "G", "B"});
   CHECK(image.at(0, 0, 0) == doctest::Approx(0.5f));
   std::string text = read_bytes(source_path("assets/first-render.scene")) + "transparent true\n";  // @render is last
   fs::path scene = dir.write("sphere.scene", text);
-  render_ok("render " + quoted(scene) + " -o " + quoted(set) + sphere_flags);
-  render_ok("render " + sphere() + " -o " + quoted(flag) + sphere_flags + " --transparent");
+  radiant_ok("render " + quoted(scene) + " -o " + quoted(set) + sphere_flags);
+  radiant_ok("render " + sphere() + " -o " + quoted(flag) + sphere_flags + " --transparent");
   TestImage a = read_image(set), b = read_image(flag);
   REQUIRE(a.channel_names == b.channel_names);
   CHECK(a.pixels == b.pixels);
@@ -92,17 +86,17 @@ TEST_CASE("transparent cli: shards of a transparent render merge to its pixels a
   ScratchDir dir("transparent-merge");
   std::string flags = sphere_flags + " --transparent --mode path --sampler sobol";
   fs::path single_exr = dir.file("single.exr"), single_png = dir.file("single.png");
-  render_ok("render " + sphere() + " -o " + quoted(single_exr) + flags);
-  render_ok("render " + sphere() + " -o " + quoted(single_png) + flags);
+  radiant_ok("render " + sphere() + " -o " + quoted(single_exr) + flags);
+  radiant_ok("render " + sphere() + " -o " + quoted(single_png) + flags);
   std::string shards;
   for (int i = 0; i < 4; ++i) {
     fs::path shard = dir.file("s" + std::to_string(i) + ".exr");
-    render_ok("render " + sphere() + " -o " + quoted(shard) + flags + " --shard " + std::to_string(i) + "/4 --split both");
+    radiant_ok("render " + sphere() + " -o " + quoted(shard) + flags + " --shard " + std::to_string(i) + "/4 --split both");
     shards = quoted(shard) + " " + shards;
   }
   fs::path merged_exr = dir.file("merged.exr"), merged_png = dir.file("merged.png");
-  render_ok("merge " + shards + " -o " + quoted(merged_exr) + " --quiet");
-  render_ok("merge " + shards + " -o " + quoted(merged_png) + " --quiet");
+  radiant_ok("merge " + shards + " -o " + quoted(merged_exr) + " --quiet");
+  radiant_ok("merge " + shards + " -o " + quoted(merged_png) + " --quiet");
   TestImage x = read_image(single_exr), y = read_image(merged_exr);
   REQUIRE(x.channel_names == std::vector<std::string>{"R", "G", "B", "A"});
   REQUIRE(x.channel_names == y.channel_names);
@@ -117,7 +111,7 @@ TEST_CASE("transparent cli: shards of a transparent render merge to its pixels a
   CHECK_FALSE(fs::exists(dir.file("merged.jpg")));
   // An opaque shard does not merge with transparent ones.
   fs::path opaque = dir.file("opaque.exr");
-  render_ok("render " + sphere() + " -o " + quoted(opaque) + sphere_flags + " --mode path --sampler sobol --shard 0/4 --split both");
+  radiant_ok("render " + sphere() + " -o " + quoted(opaque) + sphere_flags + " --mode path --sampler sobol --shard 0/4 --split both");
   CommandResult r = run_radiant("merge " + quoted(opaque) + " " + quoted(dir.file("s1.exr")) + " " + quoted(dir.file("s2.exr")) +
                                 " " + quoted(dir.file("s3.exr")) + " -o " + quoted(dir.file("refused.exr")));
   CHECK(r.exit_code == 1);
