@@ -7,11 +7,16 @@ minifies the texture, so unfiltered lookups alias. Every --texture-filter is ren
 4, 8 and 16 spp and compared (RMSE, `radiant compare --json`) with a converged reference: the
 unfiltered pixel integral (--texture-filter bilinear at --reference-spp, another seed). The
 unlit material makes the image the texture alone: no lighting noise hides the aliasing.
-Time is the render's wall clock and peak memory its maximum resident set (per run, os.wait4),
-so run the timing on a quiet machine; error numbers are not timings and can run anywhere.
+Time is the render's wall clock and peak memory its maximum resident set (per run, os.wait4);
+the error table's costs are single runs. The cost of filtering is then timed on its own: bilinear
+and trilinear in alternating runs at --timing-spp, --repeats rounds, each run with its load average
+and CPU share, the ratio trilinear / bilinear per round as median (min-max). The script waits for a
+quiet machine (load under --max-load) before timing; error numbers are not timings and can run
+anywhere.
 
 Usage: bench/texture_filtering.py [--radiant build/radiant] [--size 128] [--reference-spp 1024]
                                   [--filters point,bilinear,trilinear] [--spp 1,2,4,8,16] [--out FILE]
+                                  [--timing-spp 4] [--repeats 5] [--max-load 0.5]
 """
 import argparse, base64, json, math, os, struct, subprocess, sys, tempfile, time, zlib
 
@@ -73,8 +78,9 @@ def write_scene(path):
         json.dump(gltf, f)
 
 
-def render(radiant, scene, out, size, spp, texture_filter, seed):
-    """Renders and returns (wall seconds, peak resident MiB) of that one process."""
+def render(radiant, scene, out, size, spp, texture_filter, seed, cpu=None):
+    """Renders and returns (wall seconds, peak resident MiB) of that one process; its CPU seconds
+    go into `cpu` (a list) when given."""
     cmd = [radiant, "render", scene, "-o", out, "--width", str(size), "--height", str(size), "--spp", str(spp),
            "--mode", "path", "--texture-filter", texture_filter, "--seed", str(seed), "--quiet"]
     start = time.monotonic()
@@ -83,7 +89,43 @@ def render(radiant, scene, out, size, spp, texture_filter, seed):
     seconds = time.monotonic() - start
     if status != 0:
         sys.exit("failed: " + " ".join(cmd))
+    if cpu is not None:
+        cpu.append(usage.ru_utime + usage.ru_stime)
     return seconds, usage.ru_maxrss / 1024
+
+
+def wait_for_quiet(max_load):
+    """Waits up to 3 minutes for the 1-minute load average to fall under max_load."""
+    for _ in range(18):
+        if os.getloadavg()[0] <= max_load:
+            return os.getloadavg()[0]
+        time.sleep(10)
+    sys.exit(f"the machine is not quiet: load average {os.getloadavg()[0]:.2f} > {max_load} after 3 minutes")
+
+
+def timing_table(radiant, scene, tmp, size, spp, repeats, max_load):
+    """Bilinear and trilinear in alternating runs: each run's time, peak memory, load and CPU share,
+    and the ratio trilinear / bilinear of each round."""
+    start_load = wait_for_quiet(max_load)
+    threads = os.cpu_count()
+    lines = [f"Timing at {spp} spp, {size}x{size}, {threads} threads, alternating runs (load average at start "
+             f"{start_load:.2f})", "", "| round | bilinear s / peak MiB (load, CPU share) | "
+             "trilinear s / peak MiB (load, CPU share) | ratio |", "|---|---|---|---|"]
+    ratios = []
+    for round_index in range(repeats):
+        cells, seconds = [], []
+        for f in ("bilinear", "trilinear"):
+            load, cpu = os.getloadavg()[0], []
+            wall, peak = render(radiant, scene, os.path.join(tmp, f"timed-{f}.exr"), size, spp, f, 0, cpu)
+            share = cpu[0] / wall / threads
+            cells.append(f"{wall:.3f} / {peak:.0f} ({load:.2f}, {share:.2f}{' SLOWED' if share < 0.8 else ''})")
+            seconds.append(wall)
+        ratios.append(seconds[1] / seconds[0])
+        lines.append(f"| {round_index + 1} | {cells[0]} | {cells[1]} | {ratios[-1]:.3f} |")
+    ordered = sorted(ratios)
+    median = ordered[len(ordered) // 2] if len(ordered) % 2 else (ordered[len(ordered) // 2 - 1] + ordered[len(ordered) // 2]) / 2
+    lines += ["", f"time ratio trilinear / bilinear: {median:.3f} ({ordered[0]:.3f}-{ordered[-1]:.3f}) over {repeats} rounds"]
+    return lines
 
 
 def rmse(radiant, image, reference):
@@ -99,6 +141,9 @@ def main():
     parser.add_argument("--filters", default="point,bilinear,trilinear")
     parser.add_argument("--spp", default="1,2,4,8,16")
     parser.add_argument("--out")
+    parser.add_argument("--timing-spp", type=int, default=4)
+    parser.add_argument("--repeats", type=int, default=5)
+    parser.add_argument("--max-load", type=float, default=0.5)
     args = parser.parse_args()
     filters, ladder = args.filters.split(","), [int(s) for s in args.spp.split(",")]
     with tempfile.TemporaryDirectory() as tmp:
@@ -119,6 +164,7 @@ def main():
                 errors.append(f"{rmse(args.radiant, image, reference):.4f}")
                 costs.append(f"{seconds:.2f} / {peak:.0f}")
             lines.append(f"| {spp} | " + " | ".join(errors) + " | " + " | ".join(costs) + " |")
+        lines += [""] + timing_table(args.radiant, scene, tmp, args.size, args.timing_spp, args.repeats, args.max_load)
     text = "\n".join(lines) + "\n"
     sys.stdout.write(text)
     if args.out:
