@@ -53,7 +53,8 @@ document["animations"] = [{"name": "slide", "samplers": [{"input": accessors, "o
 json.dump(document, open(sys.argv[2], "w"))
 PY
 fi
-flags=(--width "$size" --height "$size" --spp "$spp" --threads 1 --quiet --fps "$fps")
+# --no-metadata: the two ways' command lines differ, and the images would record them.
+flags=(--width "$size" --height "$size" --spp "$spp" --threads 1 --quiet --fps "$fps" --no-metadata)
 
 one_process() { "$radiant" render "$scene" "${flags[@]}" --frames "0-$((frames - 1))" -o "$work/one/f-####.png"; }
 many_processes() {
