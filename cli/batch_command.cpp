@@ -162,10 +162,10 @@ void render_at_moment(LoadedScene& loaded, RenderJob job, PhaseTimes& times) {
 
 // Everything about a view that can be known before rendering: its settings (size, crop, camera,
 // field of view, mode) and that its environment map can be read.
-void check_view(const LoadedScene& loaded, const RenderJob& job) {
+void check_view(const LoadedScene& loaded, const RenderJob& job, MemoryBudget& budget) {
   check_outputs_spare_scene_files(loaded.prepared->scene->input_files, render_job_outputs(job));
   ResolvedSettings settings = resolve_settings(*loaded.prepared, job.options);
-  if (!settings.environment_map.empty()) open_environment_map(settings.environment_map);
+  if (!settings.environment_map.empty()) open_environment_map(settings.environment_map, &budget);
 }
 
 // Every output of the script, checked before anything loads: formats and places, and no file
@@ -203,8 +203,7 @@ void run_script(const std::vector<BatchStep>& steps, const std::string& script_n
     // A shell line that runs the script again, with the line that made the image as its comment.
     jobs.back().command_line = command_line_text({"batch", script_name}) + " # line " + std::to_string(step.line) + ": " + step.text;
   }
-  MemoryBudget budget = settings.max_memory_bytes ? MemoryBudget(*settings.max_memory_bytes, "--max-memory")
-                                                  : MemoryBudget(default_memory_limit(), default_memory_limit_source);
+  MemoryBudget budget = command_memory_budget(settings.max_memory_bytes);
   // Every scene is loaded and every view resolved before the first render: a bad later line
   // must stop the script before anything is written. Scenes stay loaded (and charged) until
   // their views are done.
@@ -214,7 +213,7 @@ void run_script(const std::vector<BatchStep>& steps, const std::string& script_n
     try {
       if (!step.scene.empty())
         scenes.push_back(load_batch_scene(step, settings.allow_external_files, views_sample_animation(steps, i), budget));
-      else check_view(scenes.back(), jobs[i]);
+      else check_view(scenes.back(), jobs[i], budget);
     } catch (const std::bad_alloc&) {
       throw at_line(step, out_of_memory_message(step.scene.empty() ? scenes.back().path : step.scene, "loading", budget));
     } catch (const std::exception& e) {

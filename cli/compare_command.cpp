@@ -32,6 +32,7 @@ struct CompareOptions {
   std::string diff_file;
   std::optional<double> diff_scale;
   bool json = false;
+  std::string max_memory;
 };
 
 // Everything one comparison found, for printing.
@@ -86,6 +87,7 @@ void add_options(CLI::App& app, CompareOptions& options) {
                  "difference mapped to white (default --fail, or the critical |z|)")
       ->check(number_in(1e-30, huge));
   app.add_flag("--json", options.json, "print one JSON object on stdout");
+  app.add_option("--max-memory", options.max_memory, "memory cap in GiB (default 1/4 of RAM)");
 }
 
 bool use_z_test(const CompareOptions& options, const CompareImage& a, const CompareImage& b) {
@@ -96,15 +98,15 @@ bool use_z_test(const CompareOptions& options, const CompareImage& a, const Comp
   return options.mc != McMode::off && has_variance;
 }
 
-CompareReport compare_files(const CompareOptions& options) {
+CompareReport compare_files(const CompareOptions& options, MemoryBudget& budget) {
   CompareReport report;
-  report.a = read_compare_image(options.a);
-  report.b = read_compare_image(options.b);
+  report.a = read_compare_image(options.a, &budget);
+  report.b = read_compare_image(options.b, &budget);
   match_alpha(report.a, report.b);
   check_comparable(report.a, report.b);
   if (!options.variance_file.empty())
     report.a.variance =
-        read_variance_image(options.variance_file, report.a, options.samples_per_pixel);
+        read_variance_image(options.variance_file, report.a, options.samples_per_pixel, &budget);
   report.metrics = compute_metrics(report.a, report.b, options.thresholds);
   report.verdict = threshold_verdict(report.metrics, options.thresholds);
   if (use_z_test(options, report.a, report.b)) {
@@ -251,8 +253,10 @@ int compare_main(int argc, char** argv) {
       "  radiant compare new.exr ref.exr --json > report.json     one JSON object for CI\n");
   CompareOptions options;
   add_options(app, options);
+  std::optional<uint64_t> max_memory_bytes;
   try {
     parse_arguments(app, argc, argv);
+    if (!options.max_memory.empty()) max_memory_bytes = parse_memory_limit("--max-memory", options.max_memory);
   } catch (const CLI::CallForHelp& help) {
     return app.exit(help);
   } catch (const CLI::ParseError& error) {
@@ -261,7 +265,8 @@ int compare_main(int argc, char** argv) {
   }
   try {
     if (!options.diff_file.empty()) check_difference_output(options);
-    CompareReport report = compare_files(options);
+    MemoryBudget budget = command_memory_budget(max_memory_bytes);
+    CompareReport report = compare_files(options, budget);
     warn_about_encodings(report);
     if (!options.diff_file.empty()) write_difference(options, report);
     if (options.json) print_json(std::cout, options, report);

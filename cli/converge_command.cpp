@@ -13,6 +13,8 @@
 #include <iostream>
 #include <map>
 #include <new>
+#include <optional>
+#include <set>
 #include <sstream>
 
 #include "command_line.h"
@@ -143,18 +145,21 @@ ConvergeReport ladder_report(const PreparedScene& prepared, const RenderOptions&
   ConvergeReport report;
   report.kind = "ladder";
   report.metric = "rmse";
-  std::map<RenderMode, Reference> references;
+  std::map<RenderMode, Reference> rendered;  // without a reference file: one per reference mode
+  std::set<RenderMode> noted;
   for (RenderMode mode : modes) {
     RenderOptions mode_options = options;
     mode_options.mode = mode;
     RenderMode key = reference_mode(mode);
-    if (!references.count(key)) {
+    if (!file_reference && !rendered.count(key)) {
       progress(options, std::string("rendering the ") + mode_name(key) + " reference");
-      references[key] = file_reference ? *file_reference : render_reference(prepared, mode_options, flags.reference_spp, flags.edge_fraction);
-      report.references.push_back(note_for(references[key], key, flags.reference_file));
+      rendered[key] = render_reference(prepared, mode_options, flags.reference_spp, flags.edge_fraction);
     }
+    // The file's image is shared, not copied: its pixels are charged to the budget once.
+    const Reference& reference = file_reference ? *file_reference : rendered.at(key);
+    if (noted.insert(key).second) report.references.push_back(note_for(reference, key, flags.reference_file));
     progress(options, std::string("ladder of ") + mode_name(mode));
-    std::vector<LadderStep> steps = run_ladder(prepared, mode_options, ladder, references[key], flags.timing);
+    std::vector<LadderStep> steps = run_ladder(prepared, mode_options, ladder, reference, flags.timing);
     report.series.push_back(make_series(mode_name(mode), std::move(steps), flags.target_error));
   }
   return report;
@@ -172,8 +177,9 @@ ConvergeReport supersampling_report(const PreparedScene& prepared, const RenderO
   RenderOptions reference_options = mode_options;
   reference_options.sampler = SamplerKind::jittered;  // stratified: the fastest to converge at edges
   progress(options, "rendering the reference");
-  Reference reference =
-      file_reference ? *file_reference : render_reference(prepared, reference_options, flags.reference_spp, flags.edge_fraction);
+  std::optional<Reference> rendered;
+  if (!file_reference) rendered = render_reference(prepared, reference_options, flags.reference_spp, flags.edge_fraction);
+  const Reference& reference = file_reference ? *file_reference : *rendered;
   report.references.push_back(note_for(reference, mode, flags.reference_file));
   for (SamplerKind sampler : parse_samplers(flags.samplers)) {
     progress(options, std::string("ladder of the ") + sampler_name(sampler) + " sampler");
@@ -312,13 +318,13 @@ void run_converge(const std::string& scene_path, ConvergeFlags& flags, std::vect
   RenderOptions& options = flags.render.options;
   ReportFiles files = report_files(flags);
   check_report_files(files, scene_path, flags);
-  std::optional<Reference> file_reference;
-  if (!flags.reference_file.empty()) {
-    file_reference = load_reference(flags.reference_file, flags.edge_fraction);
-    if (!flags.width && !flags.height) flags.width = file_reference->image.width, flags.height = file_reference->image.height;
-  }
   MemoryBudget budget = flags.render.memory_budget();
   options.memory = &budget;
+  std::optional<Reference> file_reference;
+  if (!flags.reference_file.empty()) {
+    file_reference = load_reference(flags.reference_file, &budget, flags.edge_fraction);
+    if (!flags.width && !flags.height) flags.width = file_reference->image.width, flags.height = file_reference->image.height;
+  }
   LoadOptions load_options;
   load_options.allow_external_files = flags.render.allow_external_files;
   load_options.budget = &budget;

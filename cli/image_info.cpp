@@ -7,6 +7,7 @@
 #include "image/image_io.h"
 #include "image/render_metadata.h"
 #include "json_output.h"
+#include "option_parsing.h"
 
 namespace radiant::cli {
 
@@ -92,7 +93,8 @@ bool is_image_path(const std::string& path) {
 }
 
 void print_image_info(std::ostream& out, const std::string& path, bool json) {
-  ImageHeader header = read_image_header(path);
+  MemoryBudget budget = command_memory_budget(std::nullopt);
+  ImageHeader header = read_image_header(path, &budget);
   ImageMetadata ours = radiant_attributes(header.metadata);
   if (json) out << json_of(path, header, ours);
   else print_text(out, path, header, ours);

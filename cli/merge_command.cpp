@@ -26,12 +26,12 @@ const char* merge_examples =
 // times and rays summed, the first one's command line) and how many were merged. Shards rendered
 // with --no-metadata record no render: then only the settings every shard holds.
 ImageMetadata merged_metadata(const std::vector<NamedShard>& shards, const ShardInfo& merged,
-                              const std::string& command_line) {
+                              const std::string& command_line, MemoryBudget& budget) {
   std::vector<RenderRecord> records;
   for (const NamedShard& shard : shards) {
     std::optional<RenderRecord> record;
     try {
-      record = parse_render_metadata(read_image_header(shard.path).metadata);
+      record = parse_render_metadata(read_image_header(shard.path, &budget).metadata);
     } catch (const std::runtime_error& e) {
       throw std::runtime_error(shard.path + ": " + e.what());
     }
@@ -61,7 +61,7 @@ ImageMetadata merged_metadata(const std::vector<NamedShard>& shards, const Shard
 void merge_shards(const std::vector<std::string>& paths, const std::string& output, bool keep_accum, bool quiet,
                   const std::string& command_line, bool metadata, MemoryBudget& budget) {
   std::vector<NamedShard> shards;
-  for (const std::string& path : paths) shards.push_back({path, read_shard_info(path)});
+  for (const std::string& path : paths) shards.push_back({path, read_shard_info(path, &budget)});
   ShardInfo merged = check_shards(shards, !keep_accum);
   if (merged.transparent && !keep_accum && !stores_alpha(output))
     throw std::runtime_error("the shards are of a --transparent render: -o needs an output with alpha: PNG, TIFF or EXR "
@@ -74,7 +74,7 @@ void merge_shards(const std::vector<std::string>& paths, const std::string& outp
   Film film = make_film(width, height, with_aovs, merged.transparent);
   film.x = merged.x0, film.y = merged.y0, film.full_width = merged.full_width, film.full_height = merged.full_height;
   for (const NamedShard& shard : shards) add_shard(film, read_shard_film(shard.path, shard.info, &budget).film);
-  ImageMetadata record = metadata ? merged_metadata(shards, merged, command_line) : ImageMetadata{};
+  ImageMetadata record = metadata ? merged_metadata(shards, merged, command_line, budget) : ImageMetadata{};
   OutputSet outputs;
   if (keep_accum) {
     write_shard(outputs.create(output), film, merged, record, &budget);
@@ -118,8 +118,7 @@ int merge_main(int argc, char** argv) {
     std::cerr << "radiant merge: " << e.what() << "\n";
     return exit_usage;
   }
-  MemoryBudget budget = max_memory_bytes ? MemoryBudget(*max_memory_bytes, "--max-memory")
-                                         : MemoryBudget(default_memory_limit(), default_memory_limit_source);
+  MemoryBudget budget = command_memory_budget(max_memory_bytes);
   try {
     if (keep_accum && lowercase_extension(output) != ".exr")
       throw std::invalid_argument("--keep-accum writes a shard EXR: -o must end in .exr (got '" + output + "')");

@@ -406,9 +406,11 @@ void RenderFlags::finish() {
   if (!max_memory.empty()) max_memory_bytes = parse_memory_limit("--max-memory", max_memory);
 }
 
-MemoryBudget RenderFlags::memory_budget() const {
+MemoryBudget command_memory_budget(const std::optional<uint64_t>& max_memory_bytes) {
   if (max_memory_bytes) return MemoryBudget(*max_memory_bytes, "--max-memory");
   return MemoryBudget(default_memory_limit(), default_memory_limit_source);
 }
+
+MemoryBudget RenderFlags::memory_budget() const { return command_memory_budget(max_memory_bytes); }
 
 }  // namespace radiant::cli

@@ -47,6 +47,8 @@ CLI::Validator time_limit_range();
 
 // GiB as bytes: finite, positive and at least one byte; beyond what 64 bits count means no cap.
 uint64_t parse_memory_limit(const std::string& flag, const std::string& text);
+// The budget of a command: --max-memory when given, else a quarter of RAM.
+MemoryBudget command_memory_budget(const std::optional<uint64_t>& max_memory_bytes);
 const char* mode_name(RenderMode mode);
 const char* sampler_name(SamplerKind kind);
 

@@ -156,7 +156,7 @@ int render_main(int argc, char** argv) {
     return exit_failure;
   }
   // A finished array task run again exits here, before the scene is loaded and its BVH built.
-  if (skip_existing && shard_unchanged_before_load(output, scene_path, job.shard_request_hash)) {
+  if (skip_existing && shard_unchanged_before_load(output, scene_path, job.shard_request_hash, &budget)) {
     report_shard_skipped(output, options.quiet);
     return exit_ok;
   }

@@ -91,7 +91,7 @@ void run_render_job(const std::string& scene_path, PreparedScene& prepared, cons
   times.build = prepared.build_seconds;
   if (job.skip_existing) {
     ShardInfo expected = make_shard_info(prepared, resolve_settings(prepared, options), options, job.shard_request_hash);
-    if (shard_already_rendered(job.output, expected)) {
+    if (shard_already_rendered(job.output, expected, job.options.memory)) {
       report_shard_skipped(job.output, job.options.quiet);
       return;
     }

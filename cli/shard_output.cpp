@@ -47,11 +47,11 @@ ShardInfo make_shard_info(const PreparedScene& prepared, const ResolvedSettings&
   return info;
 }
 
-bool shard_already_rendered(const std::string& path, const ShardInfo& expected) {
+bool shard_already_rendered(const std::string& path, const ShardInfo& expected, MemoryBudget* budget) {
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error)) return false;
   try {
-    ShardInfo found = read_shard_info(path);
+    ShardInfo found = read_shard_info(path, budget);
     found.request_hash = expected.request_hash;
     return found == expected;
   } catch (const std::runtime_error&) {

@@ -46,11 +46,12 @@ std::string shard_request_hash(const CLI::App& app, const std::string& scene_pat
   return text_hash(text);
 }
 
-bool shard_unchanged_before_load(const std::string& output, const std::string& scene_path, const std::string& request_hash) {
+bool shard_unchanged_before_load(const std::string& output, const std::string& scene_path, const std::string& request_hash,
+                                 MemoryBudget* budget) {
   std::error_code error;
   if (!fs::is_regular_file(output, error)) return false;
   try {
-    ShardInfo found = read_shard_info(output);
+    ShardInfo found = read_shard_info(output, budget);
     if (found.request_hash != request_hash || !found.partial.empty() || found.version != RADIANT_VERSION ||
         found.isa != embree_kernels_name())
       return false;

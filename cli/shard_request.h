@@ -7,6 +7,8 @@
 
 #include <string>
 
+#include "memory/memory_budget.h"
+
 namespace radiant::cli {
 
 // `path` absolute with symlinks resolved; as given when that fails (a hash of it then differs
@@ -26,6 +28,7 @@ std::string shard_request_hash(const CLI::App& app, const std::string& scene_pat
 // scene file and every other file its render read hash as they did then. False whenever that
 // cannot be shown (no file, an older shard without a request hash, a file gone): the caller
 // then loads the scene and checks the whole metadata.
-bool shard_unchanged_before_load(const std::string& output, const std::string& scene_path, const std::string& request_hash);
+bool shard_unchanged_before_load(const std::string& output, const std::string& scene_path, const std::string& request_hash,
+                                 MemoryBudget* budget);
 
 }  // namespace radiant::cli

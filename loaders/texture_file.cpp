@@ -10,7 +10,12 @@ ImageDesc read_texture_file(const std::filesystem::path& path, const std::string
                             const LoadOptions& options) {
   check_input_file(path, where + " '" + escaped(name) + "'", options);
   std::string error;
-  auto input = open_image_file(path.string(), error);
+  std::unique_ptr<ImageSource> input;
+  try {
+    input = open_image_file(path.string(), error, options.budget);
+  } catch (const MemoryLimitError& e) {
+    throw LoadError(where + ": image '" + name + "': " + e.what());
+  }
   if (!input) throw LoadError(where + ": cannot read image '" + name + "'");
   const ImageHeader& spec = input->header();
   int channels = std::min(spec.channels, 4);
@@ -18,8 +23,8 @@ ImageDesc read_texture_file(const std::filesystem::path& path, const std::string
                             std::to_string(spec.height) + ")";
   uint64_t texels = uint64_t(std::max(spec.width, 0)) * uint64_t(std::max(spec.height, 0));
   if (texels == 0 || channels <= 0) throw LoadError(image_label + ": the image is empty");
-  // OpenImageIO may hold the whole file's pixels (up to four bytes a channel) while it converts.
-  charge_load(options, saturating_multiply(texels, uint64_t(std::max(spec.channels, 0)) * 4 + channels), image_label);
+  // OpenImageIO's copy while it converts is the source's charge; the texels stay loaded.
+  charge_load(options, saturating_multiply(texels, uint64_t(channels)), image_label);
   ImageDesc image;
   image.name = path.string();
   image.width = spec.width, image.height = spec.height, image.channels = channels;

@@ -215,5 +215,8 @@ constexpr ImageIoModule module_table = {image_io_interface_version, open_image, 
 }  // namespace radiant
 
 extern "C" __attribute__((visibility("default"))) const radiant::ImageIoModule* radiant_image_io_module() {
+  // OpenEXR decoding on the calling thread: a file then costs one chunk's buffers, which radiant
+  // charges to its memory budget before opening it (exr_header_check.h), not one per core.
+  OIIO::attribute("exr_threads", -1);
   return &radiant::module_table;
 }

@@ -33,9 +33,9 @@ Reference render_reference(const PreparedScene& prepared, RenderOptions options,
   return reference;
 }
 
-Reference load_reference(const std::string& path, double edge_fraction) {
+Reference load_reference(const std::string& path, MemoryBudget* budget, double edge_fraction) {
   Reference reference;
-  reference.image = read_compare_image(path);
+  reference.image = read_compare_image(path, budget);
   CompareImage render_like;  // a render has no alpha: match_alpha drops the reference's
   match_alpha(reference.image, render_like);
   reference.srgb = !is_float_image(reference.image);

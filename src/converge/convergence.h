@@ -33,8 +33,9 @@ constexpr uint32_t reference_seed_offset = 0x9e3779b9u;
 Reference render_reference(const PreparedScene& prepared, RenderOptions options, int spp,
                            double edge_fraction = default_edge_fraction);
 
-// Reads a reference image (EXR compares linear radiance, 8-bit formats sRGB). Throws CompareError.
-Reference load_reference(const std::string& path, double edge_fraction = default_edge_fraction);
+// Reads a reference image (EXR compares linear radiance, 8-bit formats sRGB), its pixels charged
+// to `budget` for as long as it lives. Throws CompareError or MemoryLimitError.
+Reference load_reference(const std::string& path, MemoryBudget* budget, double edge_fraction = default_edge_fraction);
 
 // The mode whose render is the reference of `mode`: path and naive converge to the same answer
 // (the path tracer's, which gets there faster); Whitted converges to its own.

@@ -239,9 +239,9 @@ void write_shard(TemporaryFile& file, const Film& film, const ShardInfo& info, c
   write_image_file(file, spec, words.data());
 }
 
-ShardInfo read_shard_info(const std::string& path) {
+ShardInfo read_shard_info(const std::string& path, MemoryBudget* budget) {
   std::string error;
-  std::unique_ptr<ImageSource> source = open_image_file(path, error);
+  std::unique_ptr<ImageSource> source = open_image_file(path, error, budget);
   check(source != nullptr, path, error);
   const ImageHeader& header = source->header();
   ShardInfo info;
@@ -261,7 +261,7 @@ ShardInfo read_shard_info(const std::string& path) {
 
 LoadedShard read_shard_film(const std::string& path, const ShardInfo& info, MemoryBudget* budget) {
   std::string error;
-  std::unique_ptr<ImageSource> source = open_image_file(path, error);
+  std::unique_ptr<ImageSource> source = open_image_file(path, error, budget);
   check(source != nullptr, path, error);
   const ImageHeader& header = source->header();
   bool with_aovs = !info.aovs.empty();

@@ -62,7 +62,7 @@ void write_shard(TemporaryFile& file, const Film& film, const ShardInfo& info, c
 
 // The metadata of the shard at `path`, checked against its windows. Throws std::runtime_error
 // "path: why" for a file that is not a shard radiant can merge.
-ShardInfo read_shard_info(const std::string& path);
+ShardInfo read_shard_info(const std::string& path, MemoryBudget* budget);
 
 // A shard's film and its charge against the budget, held as long as the film.
 struct LoadedShard {

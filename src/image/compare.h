@@ -5,9 +5,12 @@
 
 #include <cmath>
 #include <cstddef>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "memory/memory_budget.h"
 
 namespace radiant {
 
@@ -31,6 +34,9 @@ struct CompareImage {
   std::vector<float> variance;  // variance of each value's mean estimate, same layout; or empty
   std::string color_space;      // OIIO's "oiio:ColorSpace", e.g. "sRGB" or "Linear"; may be empty
   bool has_alpha = false;       // the last compared channel is alpha (it has no variance)
+  // The budget's charge for values and variance read from a file, given back when the last copy
+  // goes (a copy is its maker's own allocation).
+  std::shared_ptr<MemoryCharge> memory;
   int channels() const { return int(channel_names.size()); }
   int color_channels() const { return channels() - (has_alpha ? 1 : 0); }
   size_t pixel_count() const { return size_t(width) * height; }
@@ -38,17 +44,19 @@ struct CompareImage {
 
 // Reads `path` with OpenImageIO: its color channels (R,G,B by name, else the first three, else
 // all of a one- or two-channel image), its alpha when present, and its variance AOV (channels
-// variance.R, variance.G, variance.B) when it has one. Throws CompareError.
-CompareImage read_compare_image(const std::string& path);
+// variance.R, variance.G, variance.B) when it has one. Throws CompareError, or MemoryLimitError
+// when reading it needs more than `budget` (if not null) has left.
+CompareImage read_compare_image(const std::string& path, MemoryBudget* budget);
 
 // Alpha takes part only when both images have it: drops it from the one that has it otherwise.
 void match_alpha(CompareImage& a, CompareImage& b);
 
 // Reads a variance image for `image` from `path`, dividing by `samples_per_pixel` because the
 // file holds per-sample variance: its variance.R/G/B channels, else its color channels, else its
-// single channel for every color channel. Throws CompareError on a size mismatch.
+// single channel for every color channel. Throws CompareError on a size mismatch, or
+// MemoryLimitError as read_compare_image; the budget is charged only while it reads.
 std::vector<float> read_variance_image(const std::string& path, const CompareImage& image,
-                                       int samples_per_pixel);
+                                       int samples_per_pixel, MemoryBudget* budget);
 
 // Throws CompareError unless `a` and `b` have the same size and number of compared channels.
 void check_comparable(const CompareImage& a, const CompareImage& b);

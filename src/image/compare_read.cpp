@@ -14,12 +14,13 @@ constexpr size_t max_values = size_t(1) << 30;
 // Every channel of subimage 0 as float, with the header it came from.
 struct FileImage {
   ImageHeader header;
+  MemoryCharge memory;
   std::vector<float> pixels;  // header.width * header.height * header.channels
 };
 
-FileImage read_file_image(const std::string& path) {
+FileImage read_file_image(const std::string& path, MemoryBudget* budget) {
   std::string error;
-  auto source = open_image_file(path, error);
+  auto source = open_image_file(path, error, budget);
   if (!source) throw CompareError(path + ": cannot read image: " + error);
   FileImage image;
   image.header = source->header();
@@ -31,6 +32,7 @@ FileImage read_file_image(const std::string& path) {
     throw CompareError(path + ": image size " + std::to_string(image.header.width) + "x" +
                        std::to_string(image.header.height) + "x" +
                        std::to_string(image.header.channels) + " is empty or too large");
+  image.memory = MemoryCharge(budget, count * sizeof(float), path + ": its pixels as float");
   image.pixels.resize(count);
   if (!source->read(image.header.channels, PixelType::float32, image.pixels.data()))
     throw CompareError(path + ": cannot read pixels: " + source->error());
@@ -100,8 +102,8 @@ void drop_alpha(CompareImage& image) {
 
 }  // namespace
 
-CompareImage read_compare_image(const std::string& path) {
-  FileImage file = read_file_image(path);
+CompareImage read_compare_image(const std::string& path, MemoryBudget* budget) {
+  FileImage file = read_file_image(path, budget);
   std::vector<int> source = color_channels(file.header);
   int color_count = int(source.size());
   int alpha = alpha_channel(file.header);
@@ -113,15 +115,17 @@ CompareImage read_compare_image(const std::string& path) {
   image.height = file.header.height;
   image.color_space = file.header.color_space;
   for (int c : source) image.channel_names.push_back(file.header.channel_names[c]);
-  copy_channels(file, source, 1.0f, image, image.values);
   std::vector<int> variance = variance_channels(file.header, image, color_count);
+  uint64_t kept = image.pixel_count() * (source.size() + (variance.empty() ? 0 : source.size()));
+  image.memory = std::make_shared<MemoryCharge>(budget, kept * sizeof(float), path + ": the compared channels");
+  copy_channels(file, source, 1.0f, image, image.values);
   if (!variance.empty()) copy_channels(file, variance, 1.0f, image, image.variance);
   return image;
 }
 
 std::vector<float> read_variance_image(const std::string& path, const CompareImage& image,
-                                       int samples_per_pixel) {
-  FileImage file = read_file_image(path);
+                                       int samples_per_pixel, MemoryBudget* budget) {
+  FileImage file = read_file_image(path, budget);
   if (file.header.width != image.width || file.header.height != image.height)
     throw CompareError(path + ": variance image is " + std::to_string(file.header.width) + "x" +
                        std::to_string(file.header.height) + " but " + image.path + " is " +
@@ -136,6 +140,7 @@ std::vector<float> read_variance_image(const std::string& path, const CompareIma
     source.assign(color_count, 0);
   }
   std::vector<float> variance;
+  MemoryCharge memory(budget, image.pixel_count() * image.channels() * sizeof(float), path + ": the variance");
   copy_channels(file, source, 1.0f / float(samples_per_pixel), image, variance);
   return variance;
 }

@@ -1,5 +1,6 @@
 #include "image/exr_header_check.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
@@ -62,6 +63,7 @@ struct Part {
   int compression = 0;
   bool tiled = false;
   int64_t tile_width = 0, tile_height = 0;
+  int64_t bytes_per_pixel = 0;  // every channel at full resolution: subsampling only lowers it
 
   // A lower bound on its chunks, each of which has an 8-byte offset table entry. In double: a
   // hostile window's tile count does not fit in 64 bits.
@@ -70,7 +72,28 @@ struct Part {
       return double((width + tile_width - 1) / tile_width) * double((height + tile_height - 1) / tile_height);
     return double((height + lines_per_chunk(compression) - 1) / lines_per_chunk(compression));
   }
+  // The unpacked bytes of its largest chunk, in double for the same reason.
+  double chunk_bytes() const {
+    double pixels = tiled ? double(tile_width) * double(tile_height)
+                          : double(width) * double(std::min(height, lines_per_chunk(compression)));
+    return pixels * double(bytes_per_pixel);
+  }
 };
+
+// Bytes per pixel of a channel list: each entry a name, a pixel type (0 uint, 1 half, 2 float),
+// four bytes of flags and two of sampling, the list ended by an empty name.
+int64_t channel_list_bytes(Reader& reader, uint64_t end) {
+  int64_t bytes = 0;
+  while (reader.at < end) {
+    std::optional<std::string> name = reader.name(255);
+    if (!name || name->empty()) break;
+    std::optional<uint32_t> type = reader.u32();
+    char rest[12];
+    if (!type || !reader.bytes(rest, sizeof rest)) break;
+    bytes += *type == 1 ? 2 : 4;  // an unknown type as the widest: OpenEXR refuses it anyway
+  }
+  return bytes;
+}
 
 // Reads one header's attributes; "" or the problem.
 std::string read_header(Reader& reader, size_t longest_name, bool tiled_file, Part& part, bool& empty) {
@@ -97,6 +120,8 @@ std::string read_header(Reader& reader, size_t longest_name, bool tiled_file, Pa
       part.has_window = true;
       part.width = box[2] - box[0] + 1;
       part.height = box[3] - box[1] + 1;
+    } else if (*name == "channels" && *type == "chlist") {
+      part.bytes_per_pixel = channel_list_bytes(reader, end);
     } else if (*name == "compression" && size == 1) {
       char c = 0;
       reader.bytes(&c, 1);
@@ -114,9 +139,7 @@ std::string read_header(Reader& reader, size_t longest_name, bool tiled_file, Pa
   }
 }
 
-}  // namespace
-
-std::string exr_header_problem(const std::string& path) {
+std::string header_problem(const std::string& path, uint64_t& decoder_bytes) {
   Reader reader;
   std::error_code ec;
   reader.size = std::filesystem::file_size(path, ec);
@@ -128,7 +151,7 @@ std::string exr_header_problem(const std::string& path) {
   if (!version) return "the header is cut short";
   size_t longest_name = (*version & long_names_flag) ? 255 : 31;
   bool multipart = *version & multipart_flag;
-  double chunks = 0;
+  double chunks = 0, decoded = 0;
   for (;;) {
     Part part;
     bool empty = false;
@@ -137,6 +160,7 @@ std::string exr_header_problem(const std::string& path) {
     if (empty && multipart) break;  // the empty header that ends a multi-part file's headers
     if (!part.has_window) return "a header has no data window";
     chunks += part.minimum_chunks();
+    decoded += 3 * part.chunk_bytes();
     if (!multipart) break;
   }
   uint64_t left = reader.size - reader.at;
@@ -146,7 +170,17 @@ std::string exr_header_problem(const std::string& path) {
                   chunks, static_cast<unsigned long long>(left));
     return text;
   }
+  decoder_bytes = decoded >= 0x1p63 ? uint64_t(1) << 63 : uint64_t(decoded);
   return "";
+}
+
+}  // namespace
+
+ExrHeaderCheck check_exr_header(const std::string& path) {
+  ExrHeaderCheck check;
+  check.problem = header_problem(path, check.decoder_bytes);
+  if (!check.problem.empty()) check.decoder_bytes = 0;
+  return check;
 }
 
 }  // namespace radiant

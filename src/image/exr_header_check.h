@@ -5,12 +5,22 @@
 // the bytes it has.
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 namespace radiant {
 
-// "" when `path` is not an OpenEXR file or its headers fit in it; otherwise why not, in words
-// ("attribute 'name' declares 2147483647 bytes, the file has 4 left").
-std::string exr_header_problem(const std::string& path);
+struct ExrHeaderCheck {
+  // "" when the file is not an OpenEXR file or its headers fit in it; otherwise why not, in words
+  // ("attribute 'name' declares 2147483647 bytes, the file has 4 left").
+  std::string problem;
+  // What OpenEXR allocates to decode it, which a header alone decides (a 683-byte file may
+  // declare a data window of 200 MB): a buffer for one chunk's packed bytes and the decompressor's
+  // two (three chunks of unpacked size at most, for radiant's one decoding thread), each part's.
+  // 0 for other files.
+  uint64_t decoder_bytes = 0;
+};
+
+ExrHeaderCheck check_exr_header(const std::string& path);
 
 }  // namespace radiant

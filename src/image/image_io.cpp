@@ -70,19 +70,56 @@ const ImageIoModule& image_io_module() {
   return *module;
 }
 
-std::unique_ptr<ImageSource> open_image_file(const std::string& path, std::string& error) {
-  if (is_png_file(path)) return open_png(path, error);
-  // OpenEXR allocates what a header declares while opening: check the declarations first.
-  if (std::string problem = exr_header_problem(path); !problem.empty()) {
-    error = "corrupt OpenEXR header: " + problem;
-    return nullptr;
+namespace {
+
+// A source and the memory its decoding holds.
+class ChargedImageSource final : public ImageSource {
+ public:
+  ChargedImageSource(std::unique_ptr<ImageSource> source, MemoryCharge decoder, MemoryCharge copy)
+      : source_(std::move(source)), decoder_(std::move(decoder)), copy_(std::move(copy)) {}
+  const ImageHeader& header() const override { return source_->header(); }
+  bool read(int channels, PixelType type, void* out) override { return source_->read(channels, type, out); }
+  bool read_channels(int begin, int end, PixelType type, void* out) override {
+    return source_->read_channels(begin, end, type, out);
   }
-  return image_io_module().open(path, error);
+  std::string error() override { return source_->error(); }
+
+ private:
+  std::unique_ptr<ImageSource> source_;
+  MemoryCharge decoder_, copy_;
+};
+
+}  // namespace
+
+std::unique_ptr<ImageSource> open_image_file(const std::string& path, std::string& error, MemoryBudget* budget) {
+  MemoryCharge decoder;
+  std::unique_ptr<ImageSource> source;
+  if (is_png_file(path)) {
+    source = open_png(path, error);
+  } else {
+    // OpenEXR allocates what a header declares while opening: check the declarations first.
+    ExrHeaderCheck exr = check_exr_header(path);
+    if (!exr.problem.empty()) {
+      error = "corrupt OpenEXR header: " + exr.problem;
+      return nullptr;
+    }
+    decoder = MemoryCharge(budget, exr.decoder_bytes, path + ": OpenEXR's buffers for its declared chunks");
+    source = image_io_module().open(path, error);
+  }
+  if (!source) return nullptr;
+  const ImageHeader& header = source->header();
+  // Four bytes a value, and a row pointer a row (libpng's).
+  uint64_t rows = saturating_multiply(uint64_t(std::max(header.height, 0)), uint64_t(std::max(header.depth, 1)));
+  uint64_t values = saturating_multiply(saturating_multiply(rows, uint64_t(std::max(header.width, 0))),
+                                        uint64_t(std::max(header.channels, 0)));
+  MemoryCharge copy(budget, saturating_add(saturating_multiply(values, 4), saturating_multiply(rows, 8)),
+                    path + ": decoding its " + std::to_string(header.width) + "x" + std::to_string(header.height) + " pixels");
+  return std::make_unique<ChargedImageSource>(std::move(source), std::move(decoder), std::move(copy));
 }
 
-ImageHeader read_image_header(const std::string& path) {
+ImageHeader read_image_header(const std::string& path, MemoryBudget* budget) {
   std::string error;
-  std::unique_ptr<ImageSource> source = open_image_file(path, error);
+  std::unique_ptr<ImageSource> source = open_image_file(path, error, budget);
   if (!source) throw std::runtime_error(path + ": " + error);
   ImageHeader header = source->header();
   header.metadata = unpacked_metadata(header.metadata);

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "image/image_io_module.h"
+#include "memory/memory_budget.h"
 #include "output/temporary_file.h"
 
 namespace radiant {
@@ -14,12 +15,16 @@ namespace radiant {
 // found or is stale.
 const ImageIoModule& image_io_module();
 
-// Opens `path` for reading. Returns null with the reason (one line) in `error`.
-std::unique_ptr<ImageSource> open_image_file(const std::string& path, std::string& error);
+// Opens `path` for reading. Returns null with the reason (one line) in `error`. What decoding
+// holds is charged to `budget` (if not null) for as long as the source lives: OpenEXR's buffers
+// before it opens the file (which allocates them), then the whole image at four bytes a channel
+// (OpenImageIO's copy while it converts); the caller charges only its own pixels. Throws
+// MemoryLimitError naming `path` when the budget refuses.
+std::unique_ptr<ImageSource> open_image_file(const std::string& path, std::string& error, MemoryBudget* budget);
 
 // The header of the image at `path`, its metadata included (unpacked: packed_metadata.h). Throws
-// std::runtime_error "path: why".
-ImageHeader read_image_header(const std::string& path);
+// std::runtime_error "path: why" (MemoryLimitError when opening it needs more than `budget` has).
+ImageHeader read_image_header(const std::string& path, MemoryBudget* budget);
 
 // Writes `pixels` (spec.channel_names.size() floats per pixel, or 4-byte values of
 // spec.channel_types, top row first) to `file` in the format its target's extension names: 8-bit

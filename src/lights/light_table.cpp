@@ -97,12 +97,12 @@ uint64_t area_light_bytes(const SceneDesc& scene) {
 }
 
 EnvironmentMap load_environment_map(const std::string& path, MemoryBudget* budget) {
-  std::unique_ptr<ImageSource> input = open_environment_map(path);
+  std::unique_ptr<ImageSource> input = open_environment_map(path, budget);
   const ImageHeader& spec = input->header();
-  // The float pixels read and OpenImageIO's copy while converting, then texels, weights and the
-  // sampling tables.
+  // The float pixels read (OpenImageIO's copy is the source's charge), then texels, weights and
+  // the sampling tables.
   uint64_t texels = uint64_t(spec.width) * uint64_t(spec.height);
-  uint64_t per_texel = 8 * uint64_t(spec.channels) + sizeof(color3) + 5 * sizeof(float);
+  uint64_t per_texel = 4 * uint64_t(spec.channels) + sizeof(color3) + 5 * sizeof(float);
   MemoryCharge memory(budget, saturating_multiply(texels, per_texel),
                       path + ": a " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
                           " environment map");
@@ -216,12 +216,12 @@ void choose_light_sampler(const SceneDesc& scene, LightTable& table, const std::
 
 }  // namespace
 
-std::unique_ptr<ImageSource> open_environment_map(const std::string& path) {
+std::unique_ptr<ImageSource> open_environment_map(const std::string& path, MemoryBudget* budget) {
   uint64_t file_size = 0;
   std::string problem = input_file_problem(path, file_size);
   if (!problem.empty()) throw std::runtime_error(path + ": cannot read environment map: " + problem);
   std::string error;
-  auto input = open_image_file(path, error);
+  auto input = open_image_file(path, error, budget);
   if (!input) throw std::runtime_error(path + ": cannot read environment map: " + error);
   const ImageHeader& spec = input->header();
   if (spec.width <= 0 || spec.height <= 0 || spec.channels <= 0 ||

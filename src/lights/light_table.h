@@ -81,8 +81,9 @@ LightTable make_light_table(const SceneDesc& scene, color3 environment_color, co
                             LightSampler sampler = LightSampler::automatic);
 
 // Opens an environment map and checks its header (readable, of a usable size): what `batch`
-// checks of every view before rendering. Throws std::runtime_error naming the file.
-std::unique_ptr<ImageSource> open_environment_map(const std::string& path);
+// checks of every view before rendering. Throws std::runtime_error naming the file (MemoryLimitError
+// when decoding it needs more than `budget` has; the source holds that charge).
+std::unique_ptr<ImageSource> open_environment_map(const std::string& path, MemoryBudget* budget);
 
 // Environment radiance seen along unit direction `d`.
 color3 eval_environment(const LightTable& lights, vec3 d);

@@ -54,7 +54,7 @@ void in_process_ok(std::vector<std::string> words) {
 
 ImageHeader header_of(const fs::path& file) {
   std::string error;
-  auto source = open_image_file(file.string(), error);
+  auto source = open_image_file(file.string(), error, nullptr);
   REQUIRE_MESSAGE(source, error);
   return source->header();
 }

@@ -58,9 +58,9 @@ TEST_CASE("shard file: every exact sum, sample count, window and metadata field 
   OutputSet outputs;
   write_shard(outputs.create(path), film, info, render_metadata(record), nullptr);
   outputs.commit();
-  CHECK(read_shard_info(path) == info);
+  CHECK(read_shard_info(path, nullptr) == info);
   // The render's record beside the shard's own fields; what both hold (spp, seed, sampler) once.
-  ImageMetadata metadata = read_image_header(path).metadata;
+  ImageMetadata metadata = read_image_header(path, nullptr).metadata;
   CHECK(parse_render_metadata(metadata) == record);
   for (const char* shared : {"radiant:spp", "radiant:seed", "radiant:sampler"})
     CHECK(std::count_if(metadata.begin(), metadata.end(), [&](const auto& a) { return a.first == shared; }) == 1);
@@ -88,7 +88,7 @@ TEST_CASE("shard file: an EXR without radiant's metadata, or with a sum no rende
   ScratchDir dir("shard-file-refused");
   std::string plain = dir.file("plain.exr").string();
   write_test_image(plain, 2, 2, {"R", "G", "B"}, std::vector<float>(12, 0.5f));
-  CHECK_THROWS_WITH_AS(read_shard_info(plain), (plain + ": not a radiant shard (its radiant:format is not 'radiant shard 1')").c_str(),
+  CHECK_THROWS_WITH_AS(read_shard_info(plain, nullptr), (plain + ": not a radiant shard (its radiant:format is not 'radiant shard 1')").c_str(),
                        std::runtime_error);
 
   // A shard whose first pixel's sum.R claims a top bin past the largest double's.
@@ -100,7 +100,7 @@ TEST_CASE("shard file: an EXR without radiant's metadata, or with a sum no rende
   write_shard(outputs.create(path), film, info, {}, nullptr);
   outputs.commit();
   std::string error;
-  auto source = open_image_file(path, error);
+  auto source = open_image_file(path, error, nullptr);
   REQUIRE(source);
   ImageHeader header = source->header();
   std::vector<uint32_t> words(size_t(header.width) * header.height * header.channels);

@@ -28,8 +28,9 @@ FuzzOutcome run_image_target(const fs::path& folder, const std::string& bytes) {
   // One chain, so a file that does not open costs one open: OpenEXR allocates what a header
   // declares (hundreds of MB from a few bytes), which ASan makes slow.
   return outcome_of([&] {
-    CompareImage read = read_compare_image(image);
-    read_variance_image(image, read, 1);
+    MemoryBudget budget(fuzz_memory_limit);
+    CompareImage read = read_compare_image(image, &budget);
+    read_variance_image(image, read, 1, &budget);
     LoadOptions options;
     options.max_memory_bytes = fuzz_memory_limit;
     render_tiny(load_scene((folder / "first-render.scene").string(), options), image);

@@ -3,6 +3,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "fuzz_folder.h"
 #include "load_scene.h"
 #include "render/render.h"
 
@@ -46,7 +47,9 @@ FuzzOutcome outcome_of(const std::function<void()>& attempt) {
 void render_tiny(const SceneDesc& scene, const std::string& environment_map) {
   PreparedScene prepared = prepare_scene(scene);
   for (RenderMode mode : {RenderMode::whitted, RenderMode::path}) {
+    MemoryBudget budget(fuzz_memory_limit);  // the environment map's decoding and the film
     RenderOptions options;
+    options.memory = &budget;
     options.width = options.height = tiny_image_size;
     options.spp = 1;
     options.threads = 1;  // the fuzzers run side by side, one core each

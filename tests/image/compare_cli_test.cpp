@@ -82,6 +82,18 @@ TEST_CASE("radiant compare exits 2 with one clear line on size mismatch, bad fil
   CHECK(no_variance.err.find("--mc needs a variance") != std::string::npos);
 }
 
+TEST_CASE("radiant compare refuses, in one line, an image whose decoding needs more than --max-memory") {
+  ComparePair pair;
+  std::filesystem::path bomb = test::source_path("tests/fuzz/regressions/image/timeout-exr-data-window-4m-wide-in-683-bytes.exr");
+  test::CommandResult refused = run_radiant("compare " + quoted(bomb) + " " + quoted(pair.a) + " --max-memory 0.25");
+  CHECK(refused.exit_code == 2);
+  CHECK(refused.out.empty());
+  CHECK(refused.err == "radiant compare: " + bomb.string() + ": OpenEXR's buffers for its declared chunks: 567 MiB needed, over "
+                       "the memory limit of 256 MiB (--max-memory)\n");
+  // The same images within the limit compare as before.
+  CHECK(run_radiant(pair.args(pair.same, "--max-memory 0.25")).exit_code == 0);
+}
+
 TEST_CASE("radiant compare --json prints one object whose numbers match the metrics") {
   ComparePair pair;
   test::CommandResult result = run_radiant(pair.args(pair.bright, "--json"));
@@ -95,8 +107,8 @@ TEST_CASE("radiant compare --json prints one object whose numbers match the metr
   CHECK(json.find("\"mode\":\"threshold\"") != std::string::npos);
   CHECK(json.find("\"channels\":[\"R\",\"G\",\"B\"]") != std::string::npos);
   CHECK(json.find("\"z_test\":null") != std::string::npos);
-  CompareImage a = read_compare_image(pair.a.string());
-  CompareImage b = read_compare_image(pair.bright.string());
+  CompareImage a = read_compare_image(pair.a.string(), nullptr);
+  CompareImage b = read_compare_image(pair.bright.string(), nullptr);
   CompareMetrics m = compute_metrics(a, b, {});
   CHECK(json_value(json, "rmse") == doctest::Approx(m.rmse).epsilon(1e-8));
   CHECK(json_value(json, "psnr") == doctest::Approx(m.psnr).epsilon(1e-8));

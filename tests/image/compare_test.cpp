@@ -99,13 +99,13 @@ TEST_CASE("compare reads R,G,B by name, ignores AOVs and takes alpha only when b
   // EXR stores channels sorted by name (A,B,G,R,Z): selection must go by name, not position.
   test::write_test_image(dir.file("aov.exr"), 2, 1, {"R", "G", "B", "A", "Z"},
                          {0.1f, 0.2f, 0.3f, 1, 9, 0.4f, 0.5f, 0.6f, 0.5f, 9});
-  CompareImage rgba = read_compare_image(dir.file("aov.exr").string());
+  CompareImage rgba = read_compare_image(dir.file("aov.exr").string(), nullptr);
   CHECK(rgba.channel_names == std::vector<std::string>{"R", "G", "B", "A"});
   CHECK(rgba.values == std::vector<float>{0.1f, 0.2f, 0.3f, 1, 0.4f, 0.5f, 0.6f, 0.5f});
   CHECK(rgba.color_channels() == 3);
   CHECK(rgba.variance.empty());
   test::write_rgb(dir.file("rgb.png"), 2, 1, {0, 0, 0, 1, 1, 1});
-  CompareImage png = read_compare_image(dir.file("rgb.png").string());
+  CompareImage png = read_compare_image(dir.file("rgb.png").string(), nullptr);
   CHECK_FALSE(png.has_alpha);
   CHECK(png.values == std::vector<float>{0, 0, 0, 1, 1, 1});
   // Alpha only when both have it.
@@ -122,15 +122,15 @@ TEST_CASE("compare reads the variance AOV by channel name") {
   ScratchDir dir("compare-variance");
   test::write_rgb_with_variance(dir.file("v.exr"), 2, 1, {0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.6f},
                                 0.25f);
-  CompareImage image = read_compare_image(dir.file("v.exr").string());
+  CompareImage image = read_compare_image(dir.file("v.exr").string(), nullptr);
   CHECK(image.values == std::vector<float>{0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.6f});
   CHECK(image.variance == std::vector<float>(6, 0.25f));
   // A separate per-sample variance image is divided by the sample count.
   test::write_test_image(dir.file("var.exr"), 2, 1, {"Y"}, {8, 16});
-  CHECK(read_variance_image(dir.file("var.exr").string(), image, 4) ==
+  CHECK(read_variance_image(dir.file("var.exr").string(), image, 4, nullptr) ==
         std::vector<float>{2, 2, 2, 4, 4, 4});
   test::write_test_image(dir.file("small.exr"), 1, 1, {"Y"}, {8});
-  CHECK_THROWS_WITH_AS(read_variance_image(dir.file("small.exr").string(), image, 4),
+  CHECK_THROWS_WITH_AS(read_variance_image(dir.file("small.exr").string(), image, 4, nullptr),
                        (dir.file("small.exr").string() + ": variance image is 1x1 but " +
                         dir.file("v.exr").string() + " is 2x1")
                            .c_str(),

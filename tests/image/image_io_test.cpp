@@ -57,7 +57,7 @@ TEST_CASE("image files: a PNG written directly reads back as sRGB, each value ro
   fs::path file = dir.file("rgb.png");
   write_test_image(file, 2, 1, {"R", "G", "B"}, values);
   std::string error;
-  auto input = open_image_file(file.string(), error);
+  auto input = open_image_file(file.string(), error, nullptr);
   REQUIRE(input);
   const ImageHeader& header = input->header();
   CHECK(header.width == 2);
@@ -97,7 +97,7 @@ TEST_CASE("image files: radiant's PNG reader agrees with OpenImageIO's, alpha re
     fs::path file = dir.file(c.name);
     write_test_image(file, 2, 1, c.channels, c.values);
     std::string error;
-    auto ours = open_image_file(file.string(), error);
+    auto ours = open_image_file(file.string(), error, nullptr);
     auto theirs = image_io_module().open(file.string(), error);
     REQUIRE(ours);
     REQUIRE(theirs);
@@ -115,7 +115,7 @@ TEST_CASE("image files: radiant's PNG reader agrees with OpenImageIO's, alpha re
   // A display image's alpha is written straight, as given: the file stores 0.2 (51) and alpha 102.
   write_test_image(file, 1, 1, {"R", "G", "B", "A"}, {0.2f, 0.2f, 0.2f, 0.4f});
   std::string error;
-  auto input = open_image_file(file.string(), error);
+  auto input = open_image_file(file.string(), error, nullptr);
   REQUIRE(input);
   std::vector<unsigned char> bytes(4);
   REQUIRE(input->read(4, PixelType::uint8, bytes.data()));
@@ -131,11 +131,11 @@ TEST_CASE("image files: a truncated PNG fails with libpng's reason and prints no
   std::string bytes = read_bytes(whole);
   std::ofstream(cut, std::ios::binary) << bytes.substr(0, bytes.size() / 2);
   std::string error;
-  auto input = open_image_file(cut.string(), error);
+  auto input = open_image_file(cut.string(), error, nullptr);
   REQUIRE(input);  // the header is intact
   std::vector<float> pixels(values.size());
   CHECK_FALSE(input->read(3, PixelType::float32, pixels.data()));
   CHECK(input->error() == "Read Error");
-  CHECK_FALSE(open_image_file(dir.write("header.png", bytes.substr(0, 20)).string(), error));
+  CHECK_FALSE(open_image_file(dir.write("header.png", bytes.substr(0, 20)).string(), error, nullptr));
   CHECK_FALSE(error.empty());
 }

@@ -54,7 +54,7 @@ TEST_CASE("render metadata: every field comes back from PNG, EXR, TIFF and 16-bi
     CAPTURE(name);
     std::string path = dir.file(name).string();
     write_gray(path, render_metadata(record), std::string(name) == "deep.png" ? 16 : 8);
-    ImageMetadata read = read_image_header(path).metadata;
+    ImageMetadata read = read_image_header(path, nullptr).metadata;
     CHECK(parse_render_metadata(read) == record);
     CHECK(find_attribute(read, "Software") == "radiant 0.1.0");
     CHECK(find_attribute(read, "radiant:rays_per_second") == "98765431210");  // 123456789012 / 1.25 s
@@ -71,7 +71,7 @@ TEST_CASE("render metadata: PNG keeps ASCII in tEXt, UTF-8 beyond it in iTXt, an
   CHECK(bytes.find(std::string("iTXtradiant:scene\0\0\0\0\0σκηνή.scene", 17 + 5 + std::string("σκηνή.scene").size())) !=
         std::string::npos);
   CHECK(bytes.find(std::string("tEXtradiant:other\0caf\xe9", 22)) != std::string::npos);
-  CHECK(read_image_header(path).metadata == written);
+  CHECK(read_image_header(path, nullptr).metadata == written);
 }
 
 TEST_CASE("render metadata: an image radiant did not record has no record; a damaged record names the attribute") {

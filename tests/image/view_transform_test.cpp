@@ -64,7 +64,7 @@ TEST_CASE("view transforms: the flags, the .scene setting, 16-bit PNG and half E
   std::string render = "render " + quoted(scene) + " --width 8 --height 8 --spp 1 --quiet -o ";
   auto center = [](const fs::path& file) {
     std::string error;
-    auto image = open_image_file(file.string(), error);
+    auto image = open_image_file(file.string(), error, nullptr);
     REQUIRE_MESSAGE(image, error);
     std::vector<float> pixels(8 * 8 * 3);
     REQUIRE_MESSAGE(image->read(3, PixelType::float32, pixels.data()), image->error());

@@ -115,6 +115,7 @@ TEST_CASE("load memory: an OBJ texture is charged by the size its header declare
   dir.write("big.obj", obj_textured_triangle("big.mtl", "big.jpg", mtl));
   dir.write("big.mtl", mtl);
   std::string message = load_error(dir, "big.obj", 64 * MiB);
-  CHECK(starts_with(message, "big.obj: material 't' map_Kd: image 'big.jpg' (8000x8000): "));
+  CHECK(starts_with(message, "big.obj: material 't' map_Kd: image 'big.jpg': "));
+  CHECK(contains(message, "big.jpg: decoding its 8000x8000 pixels: 244 MiB needed"));
   CHECK(contains(message, "over the memory limit of 64.0 MiB (--max-memory)"));
 }

@@ -125,7 +125,7 @@ MeasuredRun run_radiant_measured(const std::string& args, int timeout_seconds, u
 
 TestImage read_image(const fs::path& file) {
   std::string error;
-  auto input = open_image_file(file.string(), error);
+  auto input = open_image_file(file.string(), error, nullptr);
   if (!input) throw std::runtime_error("cannot open image " + file.string() + ": " + error);
   const ImageHeader& header = input->header();
   TestImage img;
@@ -147,7 +147,7 @@ bool same_pixels(const fs::path& a, const fs::path& b) {
 }
 
 std::string image_attribute(const fs::path& file, const std::string& name) {
-  return find_attribute(read_image_header(file.string()).metadata, name).value_or("");
+  return find_attribute(read_image_header(file.string(), nullptr).metadata, name).value_or("");
 }
 
 void write_test_image(const fs::path& path, int width, int height, const std::vector<std::string>& names,
