@@ -90,7 +90,8 @@ color3 sample_one_light(const RenderContext& ctx, const SurfaceHit& hit, const B
     if (!sample_delta_light(ctx.scene->lights[lights.delta_lights[index]], hit.position, light)) return {};
     color3 f_cos = bsdf.eval(light.direction);
     if (is_black(f_cos)) return {};
-    color3 t = shadow_transmittance<E>(ctx, hit, light.direction, light.distance, false, counts);
+    color3 t = shadow_transmittance<E>(ctx, hit, light.direction, light.distance, false,
+                                       texture_footprint_scale(sample.index), counts);
     return f_cos * light.irradiance * t / select_pdf;
   }
 
@@ -119,7 +120,7 @@ color3 sample_one_light(const RenderContext& ctx, const SurfaceHit& hit, const B
   if (is_black(emitted)) return {};
   color3 f_cos = bsdf.eval(wi);
   if (is_black(f_cos)) return {};
-  color3 t = shadow_transmittance<E>(ctx, hit, wi, distance, false, counts);
+  color3 t = shadow_transmittance<E>(ctx, hit, wi, distance, false, texture_footprint_scale(sample.index), counts);
   if (is_black(t)) return {};
   float pdf = select_pdf * light_pdf;
   float weight = power_heuristic(pdf, bsdf.pdf(wi));
@@ -167,7 +168,7 @@ struct PathVariant {
         break;
       }
       SurfaceHit hit = make_surface_hit(*ctx.accel, ray, id);
-      const SurfaceMaterial& m = material_at<E>(ctx, id, hit, resolved);
+      const SurfaceMaterial& m = material_at<E>(ctx, id, hit, resolved, texture_footprint_scale(sample.index));
       if (enabled<E>(ctx.effects, effect_alpha) && m.opacity < 1 &&
           // Each see-through step at this vertex gets its own dimension, far above any vertex's block.
           sample_1d(sample, dimension(depth, alpha_choice) + 0x10000u * uint32_t(transparent_steps)) >= m.opacity) {

@@ -65,16 +65,16 @@ using RadianceFunction = color3 (*)(const RenderContext& ctx, const Ray& ray, co
                                     RayCounts& counts, FirstHit* first_hit);
 
 // The material at hit `id`: resolved into `resolved` when textures or normal maps are on (both
-// read texels, filtered over the pixel's footprint there), otherwise the one resolved once per
-// render (no copy per hit).
+// read texels, filtered over `footprint_scale` times the pixel's footprint there:
+// texture_footprint_scale), otherwise the one resolved once per render (no copy per hit).
 template <uint32_t E>
 const SurfaceMaterial& material_at(const RenderContext& ctx, const HitId& id, SurfaceHit& hit,
-                                   SurfaceMaterial& resolved) {
+                                   SurfaceMaterial& resolved, float footprint_scale) {
   if (enabled<E>(ctx.effects, effect_textures) || enabled<E>(ctx.effects, effect_normal_maps)) {
     if (ctx.texture_lookup.mode == TextureFilterMode::trilinear) {
       vec3 dpdx, dpdy;
       approximate_dp_dxy(ctx.pixel_spread, hit.position, hit.geometric_normal, dpdx, dpdy);
-      set_uv_footprint(*ctx.accel, id, dpdx, dpdy, hit);
+      set_uv_footprint(*ctx.accel, id, dpdx * footprint_scale, dpdy * footprint_scale, hit);
     }
     hit.attributes.lookup = &ctx.texture_lookup;
     return resolved = resolve_material(*ctx.scene, ctx.scene->materials[hit.material], hit.attributes);

@@ -14,10 +14,10 @@ inline color3 occluder_transmittance(const SurfaceMaterial& m, bool any_kt) {
 }
 
 // Transmittance from `from` towards a light at `target` (or along `direction` for lights at
-// infinity when `distance` is infinite).
+// infinity when `distance` is infinite); occluders' textures are filtered as material_at's.
 template <uint32_t E>
 color3 shadow_transmittance(const RenderContext& ctx, const SurfaceHit& from, vec3 direction, float distance,
-                            bool any_kt, RayCounts& counts) {
+                            bool any_kt, float footprint_scale, RayCounts& counts) {
   if (!enabled<E>(ctx.effects, effect_shadows)) return {1, 1, 1};
   bool infinite = !std::isfinite(distance);
   vec3 target = from.position + direction * (infinite ? 0.0f : distance);
@@ -34,7 +34,7 @@ color3 shadow_transmittance(const RenderContext& ctx, const SurfaceHit& from, ve
       HitId id = intersect_nearest(*ctx.accel, ray);
       if (!id.valid()) return transmittance;
       SurfaceHit hit = make_surface_hit(*ctx.accel, ray, id);
-      transmittance *= occluder_transmittance(material_at<E>(ctx, id, hit, resolved), any_kt);
+      transmittance *= occluder_transmittance(material_at<E>(ctx, id, hit, resolved, footprint_scale), any_kt);
       if (max_component(transmittance) <= 0) return {0, 0, 0};
       ray = infinite ? spawn_ray(hit, direction) : spawn_ray_to(hit, target);
     }

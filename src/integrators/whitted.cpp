@@ -16,7 +16,7 @@ enum class RayKind { camera, reflection, refraction };
 
 template <uint32_t E>
 color3 direct_phong(const RenderContext& ctx, const SurfaceHit& hit, const SurfaceMaterial& m,
-                    const HitShading& f, RayCounts& counts) {
+                    const HitShading& f, float footprint_scale, RayCounts& counts) {
   color3 sum;
   if (enabled<E>(ctx.effects, effect_direct_delta)) {
     for (int index : ctx.lights->delta_lights) {
@@ -29,7 +29,8 @@ color3 direct_phong(const RenderContext& ctx, const SurfaceHit& hit, const Surfa
       if (!is_black(m.ks)) highlight = std::pow(std::max(0.0f, dot(reflect(light.direction, f.normal), f.wo)), m.shininess);
       color3 response = m.kd * cos_theta + m.ks * highlight;
       if (is_black(response)) continue;
-      color3 transmittance = shadow_transmittance<E>(ctx, hit, light.direction, light.distance, true, counts);
+      color3 transmittance = shadow_transmittance<E>(ctx, hit, light.direction, light.distance, true,
+                                                             footprint_scale, counts);
       sum += transmittance * light.irradiance * response * inv_pi;
     }
   }
@@ -38,7 +39,7 @@ color3 direct_phong(const RenderContext& ctx, const SurfaceHit& hit, const Surfa
 
 template <uint32_t E>
 color3 trace(const RenderContext& ctx, const Ray& ray, int depth, color3 weight, RayKind kind,
-             RayCounts& counts, FirstHit* first_hit) {
+             float footprint_scale, RayCounts& counts, FirstHit* first_hit) {
   switch (kind) {
     case RayKind::camera: counts.camera++; break;
     case RayKind::reflection: counts.reflection++; break;
@@ -52,7 +53,7 @@ color3 trace(const RenderContext& ctx, const Ray& ray, int depth, color3 weight,
   }
   SurfaceHit hit = make_surface_hit(*ctx.accel, ray, id);
   SurfaceMaterial resolved;
-  const SurfaceMaterial& m = material_at<E>(ctx, id, hit, resolved);
+  const SurfaceMaterial& m = material_at<E>(ctx, id, hit, resolved, footprint_scale);
   HitShading f = make_hit_shading<E>(ctx.effects, hit, m, ray.direction);
   if (first_hit) *first_hit = {bsdf_albedo(m), f.normal, id.t * length(ray.direction), 1};
 
@@ -60,7 +61,7 @@ color3 trace(const RenderContext& ctx, const Ray& ray, int depth, color3 weight,
   if (enabled<E>(ctx.effects, effect_emission)) radiance += m.emission;
   if (m.unlit) return m.base_color;
   if (enabled<E>(ctx.effects, effect_ambient)) radiance += m.ka * ctx.ambient;
-  radiance += direct_phong<E>(ctx, hit, m, f, counts);
+  radiance += direct_phong<E>(ctx, hit, m, f, footprint_scale, counts);
 
   if (depth + 1 >= ctx.max_depth) return radiance;
   // Total internal reflection is part of refraction: its share reflects even when no material in
@@ -73,7 +74,8 @@ color3 trace(const RenderContext& ctx, const Ray& ray, int depth, color3 weight,
       if (refract(f.wo, f.normal, eta, transmitted)) {
         color3 w = weight * m.kt;
         if (max_component(w) >= ctx.contribution_cutoff)
-          radiance += m.kt * trace<E>(ctx, spawn_ray(hit, transmitted), depth + 1, w, RayKind::refraction, counts, nullptr);
+          radiance += m.kt * trace<E>(ctx, spawn_ray(hit, transmitted), depth + 1, w, RayKind::refraction, footprint_scale,
+                                       counts, nullptr);
       } else {
         reflected_weight += m.kt;  // total internal reflection: the transmitted share reflects
       }
@@ -82,13 +84,13 @@ color3 trace(const RenderContext& ctx, const Ray& ray, int depth, color3 weight,
   color3 w = weight * reflected_weight;
   if (!is_black(reflected_weight) && max_component(w) >= ctx.contribution_cutoff)
     radiance += reflected_weight * trace<E>(ctx, spawn_ray(hit, reflect(f.wo, f.normal)), depth + 1, w,
-                                            RayKind::reflection, counts, nullptr);
+                                            RayKind::reflection, footprint_scale, counts, nullptr);
   if (enabled<E>(ctx.effects, effect_alpha)) {
     if (m.opacity < 1) {
       Ray through = spawn_ray(hit, ray.direction);
       FirstHit behind;  // only its coverage is kept: the AOVs are the first surface's
       radiance = radiance * m.opacity + (1 - m.opacity) * trace<E>(ctx, through, depth, weight * (1 - m.opacity), kind,
-                                                                   counts, first_hit ? &behind : nullptr);
+                                                                   footprint_scale, counts, first_hit ? &behind : nullptr);
       if (first_hit) first_hit->coverage = m.opacity + (1 - m.opacity) * behind.coverage;
     }
   }
@@ -97,9 +99,9 @@ color3 trace(const RenderContext& ctx, const Ray& ray, int depth, color3 weight,
 
 template <uint32_t E>
 struct WhittedVariant {
-  static color3 run(const RenderContext& ctx, const Ray& ray, const SampleContext&, RayCounts& counts,
+  static color3 run(const RenderContext& ctx, const Ray& ray, const SampleContext& sample, RayCounts& counts,
                     FirstHit* first_hit) {
-    return trace<E>(ctx, ray, 0, {1, 1, 1}, RayKind::camera, counts, first_hit);
+    return trace<E>(ctx, ray, 0, {1, 1, 1}, RayKind::camera, texture_footprint_scale(sample.index), counts, first_hit);
   }
 };
 

@@ -153,5 +153,14 @@ TEST_CASE("a pixel's footprint: a pinhole's grows with distance") {
   CHECK(length(far_x) == doctest::Approx(10 * length(near_x)).epsilon(1e-3));
 }
 
+TEST_CASE("a sample's share of the footprint: all of it first, then 1/sqrt(index + 1), never below an eighth") {
+  CHECK(texture_footprint_scale(0) == 1.0f);
+  CHECK(texture_footprint_scale(3) == 0.5f);
+  CHECK(texture_footprint_scale(15) == 0.25f);
+  CHECK(texture_footprint_scale(63) == 0.125f);
+  CHECK(texture_footprint_scale(1u << 30) == 0.125f);
+  for (uint32_t i = 0; i < 100; ++i) CHECK(texture_footprint_scale(i + 1) <= texture_footprint_scale(i));
+}
+
 }  // namespace
 }  // namespace radiant
