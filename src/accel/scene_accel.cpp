@@ -153,6 +153,15 @@ void alpha_mask_filter(const RTCFilterFunctionNArguments* args) {
   if (alpha < material.alpha_cutoff) args->valid[0] = 0;
 }
 
+// What hit decoding needs of instance i's transform: its inverse, orientation and identity.
+void record_instance_transform(SceneAccel& accel, int i) {
+  const mat4& transform = accel.scene->instances[i].transform;
+  if (!inverse_affine(transform, accel.instance_inverse[i]))
+    throw std::runtime_error("instances[" + std::to_string(i) + "]: singular transform");
+  accel.instance_orientation[i] = determinant3(transform) < 0 ? -1.0f : 1.0f;
+  accel.instance_identity[i] = is_identity(transform);
+}
+
 // A mesh's vertices placed by `transform`, in double precision; false unless every coordinate
 // is exactly a float, so that placing the mesh in world space does not move it at all.
 bool place_exactly(const MeshDesc& mesh, const mat4& transform, std::vector<vec3>& placed) {
@@ -169,18 +178,29 @@ bool place_exactly(const MeshDesc& mesh, const mat4& transform, std::vector<vec3
   return true;
 }
 
-// A triangle geometry of a mesh with the given vertex positions; alpha-masked materials get the
-// filter that lets rays pass through cut-out texels.
-RTCGeometry new_triangle_geometry(SceneAccel& accel, int mesh_index, const std::vector<vec3>& positions) {
-  const MeshDesc& mesh = accel.scene->meshes[mesh_index];
-  RTCGeometry geometry = rtcNewGeometry(accel.device, RTC_GEOMETRY_TYPE_TRIANGLE);
-  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-      geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), positions.size()));
+void write_vertices(float* vertices, const std::vector<vec3>& positions) {
   for (size_t i = 0; i < positions.size(); ++i) {
     vertices[3 * i + 0] = positions[i].x;
     vertices[3 * i + 1] = positions[i].y;
     vertices[3 * i + 2] = positions[i].z;
   }
+}
+
+// Gives a committed triangle geometry new vertex positions (as many as it had).
+void replace_vertices(RTCGeometry geometry, const std::vector<vec3>& positions) {
+  write_vertices(static_cast<float*>(rtcGetGeometryBufferData(geometry, RTC_BUFFER_TYPE_VERTEX, 0)), positions);
+  rtcUpdateGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0);
+  rtcCommitGeometry(geometry);
+}
+
+// A triangle geometry of a mesh with the given vertex positions; alpha-masked materials get the
+// filter that lets rays pass through cut-out texels.
+RTCGeometry new_triangle_geometry(SceneAccel& accel, int mesh_index, const std::vector<vec3>& positions) {
+  const MeshDesc& mesh = accel.scene->meshes[mesh_index];
+  RTCGeometry geometry = rtcNewGeometry(accel.device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  write_vertices(static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                             3 * sizeof(float), positions.size())),
+                 positions);
   auto* indices = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
       geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), mesh.triangle_count()));
   std::copy(mesh.indices.begin(), mesh.indices.begin() + 3 * mesh.triangle_count(), indices);
@@ -203,46 +223,57 @@ RTCScene build_mesh_scene(SceneAccel& accel, int mesh_index) {
   return scene;
 }
 
-// Attaches every instance; returns those traced through an object space of their own.
-std::vector<int> attach_instances(SceneAccel& accel) {
+void set_instance_transform(RTCGeometry geometry, const mat4& transform) {
+  float rows[12];
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 4; ++c) rows[r * 4 + c] = transform.m[r][c];
+  rtcSetGeometryTransform(geometry, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, rows);
+}
+
+// Instance i's top-level geometry: its mesh's triangles at `world_positions` when `flat`, else an
+// instance of the mesh's own scene (built on first use).
+RTCGeometry new_placed_geometry(SceneAccel& accel, int i, bool flat, const std::vector<vec3>& world_positions) {
+  const InstanceDesc& instance = accel.scene->instances[i];
+  if (flat) return new_triangle_geometry(accel, instance.mesh, world_positions);
+  if (!accel.mesh_scenes[instance.mesh]) accel.mesh_scenes[instance.mesh] = build_mesh_scene(accel, instance.mesh);
+  RTCGeometry geometry = rtcNewGeometry(accel.device, RTC_GEOMETRY_TYPE_INSTANCE);
+  rtcSetGeometryInstancedScene(geometry, accel.mesh_scenes[instance.mesh]);
+  set_instance_transform(geometry, instance.transform);
+  rtcCommitGeometry(geometry);
+  return geometry;
+}
+
+// How many instances place each mesh: a mesh placed once may sit flat on the top level.
+std::vector<int> mesh_placements(const SceneDesc& scene) {
+  std::vector<int> placements(scene.meshes.size(), 0);
+  for (const InstanceDesc& instance : scene.instances) ++placements[instance.mesh];
+  return placements;
+}
+
+// Attaches every instance; records in accel.instanced those traced through an object space of
+// their own.
+void attach_instances(SceneAccel& accel) {
   const SceneDesc& scene = *accel.scene;
   // A mesh placed once joins the top level in world space when its transform moves every vertex
   // to an exact float (identity, translations and scalings that fit): rounding the vertices
   // instead would move the surface (a translation by 1e6 rounds them to 1/16), opening the
   // cracks and leaks the stability tests catch; an instance keeps the exact object space.
-  std::vector<int> placements(scene.meshes.size(), 0);
-  for (const InstanceDesc& instance : scene.instances) ++placements[instance.mesh];
+  std::vector<int> placements = mesh_placements(scene);
   accel.mesh_scenes.assign(scene.meshes.size(), nullptr);
   std::vector<vec3> world_positions;
   accel.instance_inverse.resize(scene.instances.size());
   accel.instance_orientation.resize(scene.instances.size());
   accel.instance_identity.resize(scene.instances.size());
-  std::vector<int> instanced;
+  accel.instanced.clear();
   for (size_t i = 0; i < scene.instances.size(); ++i) {
     const InstanceDesc& instance = scene.instances[i];
-    if (!inverse_affine(instance.transform, accel.instance_inverse[i]))
-      throw std::runtime_error("instances[" + std::to_string(i) + "]: singular transform");
-    accel.instance_orientation[i] = determinant3(instance.transform) < 0 ? -1.0f : 1.0f;
-    accel.instance_identity[i] = is_identity(instance.transform);
-    RTCGeometry geometry;
-    const MeshDesc& mesh = scene.meshes[instance.mesh];
-    if (placements[instance.mesh] == 1 && place_exactly(mesh, instance.transform, world_positions)) {
-      geometry = new_triangle_geometry(accel, instance.mesh, world_positions);
-    } else {
-      instanced.push_back(int(i));
-      if (!accel.mesh_scenes[instance.mesh]) accel.mesh_scenes[instance.mesh] = build_mesh_scene(accel, instance.mesh);
-      geometry = rtcNewGeometry(accel.device, RTC_GEOMETRY_TYPE_INSTANCE);
-      rtcSetGeometryInstancedScene(geometry, accel.mesh_scenes[instance.mesh]);
-      float rows[12];
-      for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 4; ++c) rows[r * 4 + c] = instance.transform.m[r][c];
-      rtcSetGeometryTransform(geometry, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, rows);
-      rtcCommitGeometry(geometry);
-    }
+    record_instance_transform(accel, int(i));
+    bool flat = placements[instance.mesh] == 1 && place_exactly(scene.meshes[instance.mesh], instance.transform, world_positions);
+    if (!flat) accel.instanced.push_back(int(i));
+    RTCGeometry geometry = new_placed_geometry(accel, int(i), flat, world_positions);
     rtcAttachGeometryByID(accel.top, geometry, unsigned(i));
     rtcReleaseGeometry(geometry);
   }
-  return instanced;
 }
 
 // How much an instance shrinks space into its object space: the row-sum norm of its inverse,
@@ -277,8 +308,9 @@ double placed_reach(const std::pair<vec3, vec3>& box, const mat4& transform) {
 // Sets the traceable range from the instances' object spaces: a ray within it, transformed by
 // any instance's inverse, stays within max_traced_coordinate (origin and translation both within
 // the range, so twice the growth). Refuses a scene whose own extent does not fit.
-void set_traceable_range(SceneAccel& accel, const std::vector<int>& instanced) {
+void set_traceable_range(SceneAccel& accel) {
   const SceneDesc& scene = *accel.scene;
+  const std::vector<int>& instanced = accel.instanced;
   double growth = 1;
   int shrinking = -1;
   for (int i : instanced) {
@@ -338,7 +370,7 @@ SceneAccel::~SceneAccel() {
   if (device) rtcReleaseDevice(device);
 }
 
-std::unique_ptr<SceneAccel> build_scene_accel(const SceneDesc& scene) {
+std::unique_ptr<SceneAccel> build_scene_accel(const SceneDesc& scene, AccelLayout layout) {
   auto accel = std::make_unique<SceneAccel>();
   accel->scene = &scene;
   accel->device = rtcNewDevice(embree_device_config().c_str());
@@ -347,12 +379,63 @@ std::unique_ptr<SceneAccel> build_scene_accel(const SceneDesc& scene) {
   accel->alpha_masks.resize(scene.meshes.size());
   for (size_t m = 0; m < scene.meshes.size(); ++m) accel->alpha_masks[m] = {&scene, int(m)};
   accel->top = rtcNewScene(accel->device);
-  rtcSetSceneFlags(accel->top, RTC_SCENE_FLAG_ROBUST);
-  set_traceable_range(*accel, attach_instances(*accel));
+  if (layout == AccelLayout::two_level) {
+    // DYNAMIC keeps the per-geometry builders after a commit, so the next one reuses their BVHs.
+    rtcSetSceneFlags(accel->top, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_DYNAMIC);
+    rtcSetSceneBuildQuality(accel->top, RTC_BUILD_QUALITY_LOW);
+  } else {
+    rtcSetSceneFlags(accel->top, RTC_SCENE_FLAG_ROBUST);
+  }
+  attach_instances(*accel);
+  set_traceable_range(*accel);
   attach_shapes(*accel);
   rtcCommitScene(accel->top);
   throw_on_device_error();
   return accel;
+}
+
+void update_scene_accel(SceneAccel& accel, const SceneChanges& changes) {
+  const SceneDesc& scene = *accel.scene;
+  std::vector<int> placements = mesh_placements(scene);
+  std::vector<char> instanced(scene.instances.size(), 0), mesh_updated(scene.meshes.size(), 0);
+  for (int i : accel.instanced) instanced[i] = 1;
+  std::vector<vec3> world_positions;
+  for (size_t i = 0; i < scene.instances.size(); ++i) {
+    const InstanceDesc& instance = scene.instances[i];
+    bool deformed = changes.deformed_meshes[instance.mesh], moved = changes.moved_instances[i];
+    if (!deformed && !moved) continue;
+    const MeshDesc& mesh = scene.meshes[instance.mesh];
+    record_instance_transform(accel, int(i));
+    bool flat = placements[instance.mesh] == 1 && place_exactly(mesh, instance.transform, world_positions);
+    RTCScene mesh_scene = accel.mesh_scenes[instance.mesh];
+    if (deformed && mesh_scene && !mesh_updated[instance.mesh]) {  // kept current even while unused
+      replace_vertices(rtcGetGeometry(mesh_scene, 0), mesh.positions);
+      rtcCommitScene(mesh_scene);
+      mesh_updated[instance.mesh] = 1;
+    }
+    bool same_layout = flat != bool(instanced[i]);
+    if (same_layout) {
+      RTCGeometry geometry = rtcGetGeometry(accel.top, unsigned(i));
+      if (flat) replace_vertices(geometry, world_positions);
+      else set_instance_transform(geometry, instance.transform), rtcCommitGeometry(geometry);
+      continue;
+    }
+    // Laid out the other way now (its transform turned exact, or stopped being): as a new build
+    // would lay it out, so that the frame is the image a render of it alone gives.
+    instanced[i] = !flat;
+    RTCGeometry geometry = new_placed_geometry(accel, int(i), flat, world_positions);
+    rtcDetachGeometry(accel.top, unsigned(i));
+    rtcAttachGeometryByID(accel.top, geometry, unsigned(i));
+    rtcReleaseGeometry(geometry);
+  }
+  accel.instanced.clear();
+  for (size_t i = 0; i < instanced.size(); ++i)
+    if (instanced[i]) accel.instanced.push_back(int(i));
+  if (changes.shapes_changed && accel.shape_geometry != RTC_INVALID_GEOMETRY_ID)
+    rtcCommitGeometry(rtcGetGeometry(accel.top, accel.shape_geometry));  // its bounds are read again
+  set_traceable_range(accel);
+  rtcCommitScene(accel.top);
+  throw_on_device_error();
 }
 
 HitId intersect_nearest(const SceneAccel& accel, const Ray& ray) {

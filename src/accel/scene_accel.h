@@ -12,6 +12,7 @@
 
 #include "accel/ray.h"
 #include "materials/surface.h"
+#include "scene/scene_changes.h"
 #include "scene/scene_desc.h"
 
 namespace radiant {
@@ -32,6 +33,7 @@ struct SceneAccel {
   RTCDevice device = nullptr;
   RTCScene top = nullptr;
   std::vector<RTCScene> mesh_scenes;  // per mesh; null for meshes on the top level
+  std::vector<int> instanced;         // the instances traced through an object space of their own
   std::vector<mat4> instance_inverse;  // world to object, per instance
   std::vector<float> instance_orientation;  // sign of the transform's determinant
   std::vector<char> instance_identity;      // the transform is the identity (hits skip it)
@@ -56,10 +58,23 @@ struct SceneAccel {
   ~SceneAccel();
 };
 
+// How the top level is built. `single_level`: one BVH over every triangle placed there, the
+// fastest to trace. `two_level`: Embree's low-quality scene build, a BVH of per-geometry BVHs,
+// so that an update rebuilds only the geometries that changed (an animation's frames). Both
+// find the same hits; only which of two surfaces hit at exactly the same distance can differ.
+enum class AccelLayout { single_level, two_level };
+
 // Builds the acceleration structure; `scene` must outlive it. Throws std::runtime_error when
 // Embree reports an error, or when an instance shrinks space so much that the scene's extent
 // would leave Embree's range in its object space.
-std::unique_ptr<SceneAccel> build_scene_accel(const SceneDesc& scene);
+std::unique_ptr<SceneAccel> build_scene_accel(const SceneDesc& scene, AccelLayout layout = AccelLayout::single_level);
+
+// Brings the accelerator up to date after accel.scene changed in place by `changes` only
+// (scene/scene_changes.h): moved instances get their new transforms or vertices, deformed meshes
+// new vertices, an instance whose transform turned exact (or stopped being) is laid out anew as
+// a build would lay it out, and Embree rebuilds those geometries alone when the layout is
+// two-level (the single-level one rebuilds its whole BVH). Throws as a build.
+void update_scene_accel(SceneAccel& accel, const SceneChanges& changes);
 
 // Nearest hit along the ray (from t = 0 to ray.tmax); none for an untraceable ray.
 HitId intersect_nearest(const SceneAccel& accel, const Ray& ray);
