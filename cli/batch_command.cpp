@@ -27,6 +27,7 @@
 #include "load_scene.h"
 #include "option_parsing.h"
 #include "render_job.h"
+#include "render_frames.h"
 #include "render_line.h"
 
 namespace radiant::cli {
@@ -93,11 +94,13 @@ struct LoadedScene {
   std::string path;
   std::unique_ptr<PreparedScene> prepared;  // its accelerator holds its own charge
   std::unique_ptr<SceneFile> file;          // kept for views at moments of their own
+  FrameScene moment;                        // the latest such view's scene, which the next updates
   int file_reads = 0;                       // how often the file was read and parsed (stats)
   uint64_t scene_memory = 0;                // what loading charged to the budget
   double load_seconds = 0;                  // loading and building, paid by its first view
 
   void release(MemoryBudget& budget) {
+    moment.release(budget);
     prepared.reset();
     file.reset();
     budget.release(scene_memory);
@@ -141,23 +144,21 @@ bool views_sample_animation(const std::vector<BatchStep>& steps, size_t index) {
 }
 
 // Renders `job` at its own moment of `loaded`'s file: the scene made from the parsed file at that
-// time, prepared, rendered, and given back.
+// time, prepared from the previous such view's (render/prepare_frame.h), and rendered.
 void render_at_moment(LoadedScene& loaded, RenderJob job, PhaseTimes& times) {
-  MemoryBudget& budget = *job.options.memory;
-  uint64_t used_before = budget.used();
-  {
-    auto start = std::chrono::steady_clock::now();
-    LoadOptions options;
-    options.budget = &budget;
-    options.animation_time = job.animation_time;
-    options.animation = job.animation;
-    SceneDesc scene = scene_from_file(*loaded.file, options);
-    if (job.frame) job.frame->scene_reads = loaded.file_reads;
-    times.load += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    PreparedScene prepared = prepare_scene(std::move(scene), job.options);
-    run_render_job(loaded.path, prepared, job, times);
+  auto start = std::chrono::steady_clock::now();
+  LoadOptions options;
+  options.budget = job.options.memory;
+  options.animation_time = job.animation_time;
+  options.animation = job.animation;
+  FramePreparation how = loaded.moment.prepare_next(*loaded.file, options, job.options);
+  if (job.frame) {
+    job.frame->scene_reads = loaded.file_reads;
+    job.frame->accelerator_updated = how == FramePreparation::updated;
   }
-  budget.release(budget.used() - used_before);
+  PreparedScene& prepared = *loaded.moment.prepared;
+  times.load += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() - prepared.build_seconds;
+  run_render_job(loaded.path, prepared, job, times);
 }
 
 // Everything about a view that can be known before rendering: its settings (size, crop, camera,

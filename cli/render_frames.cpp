@@ -13,39 +13,57 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-// Makes, prepares and renders frame `number` of `file` (read `reads` times by this command),
-// then gives back what the frame held.
-void render_frame(SceneFile& file, int reads, const FramesRequest& request, const AnimationFlags& animation,
-                  long long number, double read_seconds) {
-  MemoryBudget& budget = *request.load.budget;
-  uint64_t used_before = budget.used();
-  {
-    auto start = Clock::now();
-    LoadOptions load = request.load;
-    load.animation_time = animation.frame_time(number);
-    SceneDesc scene = scene_from_file(file, load);
-    RenderJob job = request.job;
-    job.output = frame_path(request.output_pattern, number);
-    if (!request.stats_pattern.empty()) job.stats_path = frame_path(request.stats_pattern, number);
-    job.options.seed = animation.seed_of_frame(request.job.options.seed, number);
-    job.frame = FrameNote{number, reads};
-    if (!job.options.quiet && number == animation.frames->first)
-      for (const std::string& warning : scene.warnings) std::cerr << "radiant: warning: " << warning << "\n";
-    check_render_job_outputs(job);
-    PhaseTimes times;
-    times.load = read_seconds + seconds_since(start);
-    PreparedScene prepared = prepare_scene(std::move(scene), job.options);
-    run_render_job(request.scene_path, prepared, job, times);
-  }
-  // The frame's scene was charged when it was made; its accelerator gave its own charge back.
-  budget.release(budget.used() - used_before);
+// Makes, prepares (from the frame before) and renders frame `number` of `file` (read `reads`
+// times by this command).
+void render_frame(SceneFile& file, FrameScene& frame, int reads, const FramesRequest& request,
+                  const AnimationFlags& animation, long long number, double read_seconds) {
+  auto start = Clock::now();
+  LoadOptions load = request.load;
+  load.animation_time = animation.frame_time(number);
+  RenderJob job = request.job;
+  job.output = frame_path(request.output_pattern, number);
+  if (!request.stats_pattern.empty()) job.stats_path = frame_path(request.stats_pattern, number);
+  job.options.seed = animation.seed_of_frame(request.job.options.seed, number);
+  check_render_job_outputs(job);
+  FramePreparation how = frame.prepare_next(file, load, job.options);
+  job.frame = FrameNote{number, reads, how == FramePreparation::updated};
+  job.notes = number == animation.frames->first;  // every frame would say the same
+  if (!job.options.quiet && job.notes)
+    for (const std::string& warning : frame.prepared->scene->warnings) std::cerr << "radiant: warning: " << warning << "\n";
+  PhaseTimes times;
+  times.load = read_seconds + seconds_since(start) - frame.prepared->build_seconds;
+  run_render_job(request.scene_path, *frame.prepared, job, times);
 }
 
 }  // namespace
 
+FramePreparation FrameScene::prepare_next(SceneFile& file, const LoadOptions& load, const RenderOptions& options) {
+  MemoryBudget& budget = *load.budget;
+  uint64_t used_before = budget.used();
+  SceneDesc scene = scene_from_file(file, load);
+  uint64_t memory = budget.used() - used_before;
+  try {
+    FramePreparation how = prepare_frame(prepared, std::move(scene), options);
+    budget.release(scene_memory);  // the frame before's scene, replaced
+    scene_memory = memory;
+    return how;
+  } catch (...) {  // prepare_frame left no scene
+    budget.release(scene_memory + memory);
+    scene_memory = 0;
+    throw;
+  }
+}
+
+void FrameScene::release(MemoryBudget& budget) {
+  prepared.reset();
+  budget.release(scene_memory);
+  scene_memory = 0;
+}
+
 int render_frames(const FramesRequest& request, const AnimationFlags& animation) {
   const RenderOptions& options = request.job.options;
   SceneFile file;
+  FrameScene frame;
   int reads = 0;
   try {
     file = read_scene_file(request.scene_path, request.load);
@@ -64,7 +82,7 @@ int render_frames(const FramesRequest& request, const AnimationFlags& animation)
               << " at " << animation.fps << " fps\n";
   for (long long number = frames.first; number <= frames.last; ++number) {
     try {
-      render_frame(file, reads, request, animation, number, number == frames.first ? read_seconds : 0);
+      render_frame(file, frame, reads, request, animation, number, number == frames.first ? read_seconds : 0);
     } catch (const std::invalid_argument& e) {  // a setting every frame shares: the first refuses it
       std::cerr << "radiant render: frame " << number << ": " << e.what() << "\n";
       return exit_usage;

@@ -1,11 +1,14 @@
 // `radiant render SCENE --frames A-B -o out/frame-####.png`: the frames of an animation in one
 // process. The scene file is read and parsed once; each frame samples the animation into a scene
-// of its own, builds its accelerator (rebuilt whole for every frame: docs/gltf-obj.md, "Many
-// frames") and renders it with the frame's seed.
+// of its own, updates the previous frame's accelerator where only what moved is rebuilt
+// (render/prepare_frame.h, docs/gltf-obj.md "Many frames") and renders it with the frame's seed.
 #pragma once
 
 #include <chrono>
+#include <optional>
 #include <string>
+
+#include "render/prepare_frame.h"
 
 #include "animation_flags.h"
 #include "load_scene.h"
@@ -19,6 +22,16 @@ struct FramesRequest {
   RenderJob job;                              // every frame's settings; its outputs are replaced
   LoadOptions load;                           // with the command's budget
   std::chrono::steady_clock::time_point start;  // of the command, for the first frame's load time
+};
+
+// The latest frame of an animation, prepared, which the next frame updates; and what its scene
+// holds against the budget (given back when the next frame's scene replaces it).
+struct FrameScene {
+  std::optional<PreparedScene> prepared;
+  uint64_t scene_memory = 0;
+  // The scene of `file` at load.animation_time, prepared from the frame before; returns how.
+  FramePreparation prepare_next(SceneFile& file, const LoadOptions& load, const RenderOptions& options);
+  void release(MemoryBudget& budget);
 };
 
 // Renders every frame of `animation.frames` in order and returns the exit code. An error names

@@ -96,7 +96,7 @@ void run_render_job(const std::string& scene_path, PreparedScene& prepared, cons
       return;
     }
   }
-  if (!job.options.quiet) print_render_notes(scene_path, prepared, resolve_settings(prepared, job.options));
+  if (!job.options.quiet && job.notes) print_render_notes(scene_path, prepared, resolve_settings(prepared, job.options));
   RenderResult result = render_prepared(prepared, options);
   if (result.stats.interrupted && result.stats.samples == 0) throw_if_interrupted();  // nothing to save
   times.render = result.stats.render_seconds;

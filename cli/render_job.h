@@ -23,6 +23,7 @@ struct RenderJob {
   std::string command_line;        // what asked for this render, recorded in the image
   bool write_metadata = true;      // --no-metadata: no record in the image, for identical bytes
   std::optional<FrameNote> frame;  // an animation frame, noted in the stats
+  bool notes = true;  // say the framing camera, the mode and a missing light (once for --frames)
   // A batch line's moment of the scene's animation (--time, --frame): unset = the loaded scene.
   std::optional<double> animation_time;
   std::string animation;

@@ -64,7 +64,10 @@ std::string render_stats_json(const std::string& scene_path, const std::string& 
   Json j;
   j["scene"] = scene_path;
   j["output"] = output;
-  if (frame) j["frame"] = {{"number", frame->frame}, {"scene_reads", frame->scene_reads}};
+  if (frame)
+    j["frame"] = {{"number", frame->frame},
+                  {"scene_reads", frame->scene_reads},
+                  {"accelerator", frame->accelerator_updated ? "updated" : "built"}};
   j["width"] = r.film.width;
   j["height"] = r.film.height;
   j["mode"] = mode_name(s.mode);

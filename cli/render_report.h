@@ -12,11 +12,13 @@ struct PhaseTimes {
   double load = 0, build = 0, render = 0, write = 0;
 };
 
-// A frame of an animation (--frame, --frames): its number and how many times the command has
-// read and parsed the scene file by then (1 for every frame of --frames: the file is read once).
+// A frame of an animation (--frame, --frames): its number, how many times the command has read
+// and parsed the scene file by then (1 for every frame of --frames: the file is read once), and
+// whether its accelerator was built or updated from the previous frame's (render/prepare_frame.h).
 struct FrameNote {
   long long frame = 0;
   int scene_reads = 0;
+  bool accelerator_updated = false;
 };
 
 // "wrote out.png: 800x800, 81 spp (jittered), whitted, 12.3 s, 4.56 M rays/s"

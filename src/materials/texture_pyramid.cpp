@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "materials/surface.h"
 
@@ -130,6 +131,19 @@ TexturePyramids build_texture_pyramids(const SceneDesc& scene, MemoryBudget* bud
   for (size_t i = 0; i < used.size(); ++i)
     if (used[i]) pyramids.by_use[i] = build_image_pyramid(scene.images[i / 2], i % 2 == 1);
   return pyramids;
+}
+
+bool pyramids_serve(const SceneDesc& built_for, const SceneDesc& scene) {
+  if (used_pyramids(built_for) != used_pyramids(scene)) return false;
+  for (size_t i = 0; i < scene.images.size(); ++i) {
+    const ImageDesc &a = built_for.images[i], &b = scene.images[i];
+    if (a.width != b.width || a.height != b.height || a.channels != b.channels || a.texels8 != b.texels8 ||
+        a.texels_float.size() != b.texels_float.size() ||
+        !std::equal(a.texels_float.begin(), a.texels_float.end(), b.texels_float.begin(),
+                    [](float x, float y) { return std::memcmp(&x, &y, sizeof x) == 0; }))
+      return false;
+  }
+  return true;
 }
 
 float mip_level_for(vec2 duv_dx, vec2 duv_dy, int width, int height, int max_level) {

@@ -39,6 +39,10 @@ uint64_t texture_pyramid_bytes(const SceneDesc& scene);
 // all of them first; throws MemoryLimitError when it refuses.
 TexturePyramids build_texture_pyramids(const SceneDesc& scene, MemoryBudget* budget);
 
+// Whether the pyramids built for `built_for` are those of `scene` too: the same images, bit for
+// bit, read the same ways (an animation's next frame, whose textures do not change).
+bool pyramids_serve(const SceneDesc& built_for, const SceneDesc& scene);
+
 // Channel `c` of texel (x, y) of `image` as a linear value (8-bit colour through the sRGB curve
 // when `srgb`, alpha never); the decoding every lookup of level 0 uses.
 float texel_value(const ImageDesc& image, int x, int y, int c, bool srgb);

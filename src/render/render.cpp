@@ -160,30 +160,33 @@ struct PassRunner {
 
 // The image's width / height as a camera without an aspect of its own will see it (1 when the
 // size comes from the default).
-float image_aspect(const PreparedScene& prepared, const RenderOptions& options) {
-  std::optional<int> width = options.width ? options.width : prepared.scene->settings.width;
-  std::optional<int> height = options.height ? options.height : prepared.scene->settings.height;
+float image_aspect(const SceneSettings& settings, const RenderOptions& options) {
+  std::optional<int> width = options.width ? options.width : settings.width;
+  std::optional<int> height = options.height ? options.height : settings.height;
   return width && height && *width > 0 && *height > 0 ? float(*width) / float(*height) : 1.0f;
 }
 
-// Builds (or rebuilds) the accelerator, charging its estimated size first.
+}  // namespace
+
 void build_accel(PreparedScene& prepared) {
   prepared.accel.reset();
   prepared.accel_memory = MemoryCharge();
   prepared.accel_memory = MemoryCharge(prepared.budget, accel_build_bytes(*prepared.scene),
                                        prepared.scene->source_path + ": the accelerator");
   auto start = Clock::now();
-  prepared.accel = build_scene_accel(*prepared.scene);
+  prepared.accel = build_scene_accel(*prepared.scene, prepared.layout);
   prepared.build_seconds = seconds_since(start);
 }
 
-}  // namespace
-
 CameraDesc world_view_camera(const PreparedScene& prepared, const RenderOptions& options, bool& framed) {
-  const WorldPlacement& world = prepared.world;
+  return world_view_camera(prepared.world, prepared.scene->settings, options, framed);
+}
+
+CameraDesc world_view_camera(const WorldPlacement& world, const SceneSettings& settings, const RenderOptions& options,
+                             bool& framed) {
   CameraDesc framing;
   framing.name = "framing";
-  if (world.has_framing_box) framing = frame_box(world.framing_lower, world.framing_upper, image_aspect(prepared, options));
+  if (world.has_framing_box) framing = frame_box(world.framing_lower, world.framing_upper, image_aspect(settings, options));
   CameraDesc camera = select_camera(world.cameras, framing, options.camera, framed);
   apply_camera_override(camera, options.camera_override);
   // A camera placed entirely by the flags is not a framing camera.
@@ -191,9 +194,10 @@ CameraDesc world_view_camera(const PreparedScene& prepared, const RenderOptions&
   return camera;
 }
 
-PreparedScene prepare_scene(SceneDesc scene, const RenderOptions& options) {
+PreparedScene prepare_scene(SceneDesc scene, const RenderOptions& options, AccelLayout layout) {
   PreparedScene prepared;
   prepared.budget = options.memory;
+  prepared.layout = layout;
   prepared.world = record_world_placement(scene);
   prepared.scene = std::make_unique<SceneDesc>(std::move(scene));
   bool framed = false;

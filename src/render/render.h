@@ -20,6 +20,7 @@ struct PreparedScene {
   WorldPlacement world;              // the world positions, as loaded
   dvec3 origin = {0, 0, 0};
   std::unique_ptr<SceneAccel> accel;
+  AccelLayout layout = AccelLayout::single_level;  // two-level for an animation's frames
   EffectSet effects;
   double build_seconds = 0;
   MemoryBudget* budget = nullptr;  // what the accelerator is charged to (RenderOptions::memory)
@@ -32,12 +33,18 @@ struct PreparedScene {
 // charge the same budget) and for the textures' mip-maps when options.texture_filter is
 // trilinear; throws MemoryLimitError, and std::invalid_argument for a camera that does not
 // exist or a bad view.
-PreparedScene prepare_scene(SceneDesc scene, const RenderOptions& options = {});
+PreparedScene prepare_scene(SceneDesc scene, const RenderOptions& options = {},
+                            AccelLayout layout = AccelLayout::single_level);
+// Builds the accelerator of prepared.scene anew, charging its estimated size first.
+void build_accel(PreparedScene& prepared);
 // Moves `prepared` to the render origin the view of `options` needs, rebuilding the accelerator
 // only when that origin differs from the current one; returns the seconds spent.
 double prepare_view(PreparedScene& prepared, const RenderOptions& options);
 // The camera of the view `options` ask for, in world space (`framed`: the scene has none).
 CameraDesc world_view_camera(const PreparedScene& prepared, const RenderOptions& options, bool& framed);
+// The same from a scene's world placement and settings, before it is prepared.
+CameraDesc world_view_camera(const WorldPlacement& world, const SceneSettings& settings, const RenderOptions& options,
+                             bool& framed);
 
 // Settings after combining flags, the scene file's settings and the defaults.
 struct ResolvedSettings {

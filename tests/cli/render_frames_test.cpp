@@ -50,12 +50,49 @@ TEST_CASE("render --frames: the file is read once and frame N is the image of a 
     nlohmann::json stats = nlohmann::json::parse(read_bytes(dir.file("stats-" + std::to_string(frame) + ".json")));
     CHECK(stats["frame"]["number"] == frame);
     CHECK(stats["frame"]["scene_reads"] == 1);
+    CHECK(stats["frame"]["accelerator"] == (frame == 1 ? "built" : "updated"));  // from the frame before
     CHECK(stats["output"] == dir.file(name).string());
   }
   CHECK(!same_pixels(dir.file("f-01.png"), dir.file("f-03.png")));  // the triangle moved
   CommandResult alone = run_radiant("render " + quoted(scene) + noisy + " --frame 2 -o " + quoted(dir.file("alone.png")));
   REQUIRE(alone.exit_code == 0);
   CHECK(same_pixels(dir.file("alone.png"), dir.file("f-02.png")));
+}
+
+TEST_CASE("render --frames: a floor, a morphing and a turning triangle update the accelerator; each frame is a separate render's") {
+  GltfBuilder b;
+  b.floats({-2, -1, -2, 2, -1, -2, 2, -1, 2, -2, -1, 2}, "VEC3", 3);  // 0: floor
+  b.floats({-0.5f, -0.5f, 0, 0.5f, -0.5f, 0, 0, 0.5f, 0}, "VEC3", 3);  // 1: triangle
+  b.floats({0, 0, 0, 0, 0, 0, 0, 0.7f, 0.3f}, "VEC3", 3);               // 2: morph target: the tip rises
+  int times = b.floats({0, 1}, "SCALAR", 1);
+  int weights = b.floats({0, 1}, "SCALAR", 1);
+  int turns = b.floats({0, 0, 0, 1, 0, 0.7071068f, 0, 0.7071068f}, "VEC4", 4);
+  std::string gltf = b.gltf(
+      "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0},\"indices\":" + std::to_string(b.indices({0, 2, 1, 0, 3, 2})) +
+      "}]},{\"primitives\":[{\"attributes\":{\"POSITION\":1},\"targets\":[{\"POSITION\":2}]}]},"
+      "{\"primitives\":[{\"attributes\":{\"POSITION\":1}}]}],"
+      "\"cameras\":[{\"type\":\"perspective\",\"perspective\":{\"yfov\":0.9,\"znear\":0.1}}],"
+      "\"nodes\":[{\"mesh\":0},{\"mesh\":1,\"translation\":[-0.6,0,0]},{\"mesh\":2,\"translation\":[0.6,0,0]},"
+      "{\"camera\":0,\"translation\":[0,0.5,4]}],\"scenes\":[{\"nodes\":[0,1,2,3]}],\"scene\":0,"
+      "\"animations\":[{\"channels\":[{\"sampler\":0,\"target\":{\"node\":1,\"path\":\"weights\"}},"
+      "{\"sampler\":1,\"target\":{\"node\":2,\"path\":\"rotation\"}}],"
+      "\"samplers\":[{\"input\":" + std::to_string(times) + ",\"output\":" + std::to_string(weights) + "},"
+      "{\"input\":" + std::to_string(times) + ",\"output\":" + std::to_string(turns) + "}]}]");
+  ScratchDir dir("render-frames-deform");
+  fs::path scene = dir.write("deform.gltf", gltf);
+  CommandResult run = run_radiant("render " + quoted(scene) + noisy + " --quiet --frames 0-3 -o " + quoted(dir.file("f-#.png")) +
+                                  " --stats " + quoted(dir.file("s-#.json")));
+  REQUIRE(run.exit_code == 0);
+  for (int frame = 0; frame <= 3; ++frame) {
+    nlohmann::json stats = nlohmann::json::parse(read_bytes(dir.file("s-" + std::to_string(frame) + ".json")));
+    CHECK(stats["frame"]["accelerator"] == (frame == 0 ? "built" : "updated"));
+    std::string alone = "alone-" + std::to_string(frame) + ".png";
+    CommandResult single = run_radiant("render " + quoted(scene) + noisy + " --quiet --frame " + std::to_string(frame) +
+                                       " -o " + quoted(dir.file(alone)));
+    REQUIRE(single.exit_code == 0);
+    CHECK(same_pixels(dir.file(alone), dir.file("f-" + std::to_string(frame) + ".png")));
+  }
+  CHECK(!same_pixels(dir.file("f-1.png"), dir.file("f-3.png")));
 }
 
 TEST_CASE("render --frames: the noise changes from frame to frame unless --same-noise") {
@@ -114,10 +151,15 @@ TEST_CASE("batch: render lines at frames of their own reuse the scene file, read
     nlohmann::json stats = nlohmann::json::parse(read_bytes(dir.file("s" + std::to_string(frame) + ".json")));
     CHECK(stats["frame"]["number"] == frame);
     CHECK(stats["frame"]["scene_reads"] == 1);
+    CHECK(stats["frame"]["accelerator"] == (frame == 1 ? "built" : "updated"));
   }
-  CommandResult alone = run_radiant("render " + quoted(scene) + noisy + " --quiet --frame 1 -o " + quoted(dir.file("alone.png")));
-  REQUIRE(alone.exit_code == 0);
-  CHECK(same_pixels(dir.file("alone.png"), dir.file("b1.png")));
+  for (int frame : {1, 3}) {
+    std::string alone = "alone-" + std::to_string(frame) + ".png";
+    CommandResult single = run_radiant("render " + quoted(scene) + noisy + " --quiet --frame " + std::to_string(frame) +
+                                       " -o " + quoted(dir.file(alone)));
+    REQUIRE(single.exit_code == 0);
+    CHECK(same_pixels(dir.file(alone), dir.file("b" + std::to_string(frame) + ".png")));
+  }
   CHECK(!same_pixels(dir.file("b1.png"), dir.file("b3.png")));
   fs::path many = dir.write("many.txt", "scene slide.gltf\nrender -o m.png --frames 0-2" + noisy + "\n");
   CommandResult refused = run_radiant("batch " + quoted(many));

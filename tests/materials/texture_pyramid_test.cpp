@@ -121,6 +121,19 @@ TEST_CASE("texture pyramids are built only for images a material reads, and char
   CHECK(texture_pyramid_bytes(unused) == 0);
 }
 
+TEST_CASE("texture pyramids serve the next frame only when its images and their uses are the same, bit for bit") {
+  StripedScene striped;
+  SceneDesc next = striped.scene;
+  next.meshes.clear();  // what moves does not matter to them
+  CHECK(pyramids_serve(striped.scene, next));
+  SceneDesc repainted = striped.scene;
+  repainted.images[0].texels8[0] ^= 1;  // one bit of one texel
+  CHECK_FALSE(pyramids_serve(striped.scene, repainted));
+  SceneDesc unread = striped.scene;
+  unread.materials.clear();
+  CHECK_FALSE(pyramids_serve(striped.scene, unread));
+}
+
 TEST_CASE("a pixel's footprint: an orthographic pixel on a plane facing it, stretched on a tilted one") {
   // 2 units tall over 32 pixels: one pixel is 1/16 of a unit.
   CameraDesc camera;
