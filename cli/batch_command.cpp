@@ -100,7 +100,7 @@ struct LoadedScene {
   double load_seconds = 0;                  // loading and building, paid by its first view
 
   void release(MemoryBudget& budget) {
-    moment.release(budget);
+    moment.prepared.reset();
     prepared.reset();
     file.reset();
     budget.release(scene_memory);

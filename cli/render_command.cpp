@@ -173,7 +173,10 @@ int render_main(int argc, char** argv) {
 
     doing = "building its accelerator";
     try {
-      PreparedScene prepared = prepare_scene(std::move(scene), options);
+      // At an animation's moment, the layout --frames renders in: a BVH's layout can decide
+      // which of two surfaces hit at the same distance is taken, and frame N must be one image.
+      AccelLayout layout = load_options.animation_time ? AccelLayout::two_level : AccelLayout::single_level;
+      PreparedScene prepared = prepare_scene(std::move(scene), options, layout);
       doing = "rendering";
       run_render_job(scene_path, prepared, job, times);
     } catch (const std::invalid_argument& e) {

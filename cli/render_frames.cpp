@@ -38,26 +38,11 @@ void render_frame(SceneFile& file, FrameScene& frame, int reads, const FramesReq
 }  // namespace
 
 FramePreparation FrameScene::prepare_next(SceneFile& file, const LoadOptions& load, const RenderOptions& options) {
-  MemoryBudget& budget = *load.budget;
-  uint64_t used_before = budget.used();
+  MemoryBudget* budget = load.budget;
+  uint64_t used_before = budget->used();
   SceneDesc scene = scene_from_file(file, load);
-  uint64_t memory = budget.used() - used_before;
-  try {
-    FramePreparation how = prepare_frame(prepared, std::move(scene), options);
-    budget.release(scene_memory);  // the frame before's scene, replaced
-    scene_memory = memory;
-    return how;
-  } catch (...) {  // prepare_frame left no scene
-    budget.release(scene_memory + memory);
-    scene_memory = 0;
-    throw;
-  }
-}
-
-void FrameScene::release(MemoryBudget& budget) {
-  prepared.reset();
-  budget.release(scene_memory);
-  scene_memory = 0;
+  MemoryCharge memory = MemoryCharge::adopt(budget, budget->used() - used_before);
+  return prepare_frame(prepared, std::move(scene), std::move(memory), options);
 }
 
 int render_frames(const FramesRequest& request, const AnimationFlags& animation) {

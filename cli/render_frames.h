@@ -24,14 +24,12 @@ struct FramesRequest {
   std::chrono::steady_clock::time_point start;  // of the command, for the first frame's load time
 };
 
-// The latest frame of an animation, prepared, which the next frame updates; and what its scene
-// holds against the budget (given back when the next frame's scene replaces it).
+// The latest frame of an animation, prepared (its scene's budget charge included), which the
+// next frame updates.
 struct FrameScene {
   std::optional<PreparedScene> prepared;
-  uint64_t scene_memory = 0;
   // The scene of `file` at load.animation_time, prepared from the frame before; returns how.
   FramePreparation prepare_next(SceneFile& file, const LoadOptions& load, const RenderOptions& options);
-  void release(MemoryBudget& budget);
 };
 
 // Renders every frame of `animation.frames` in order and returns the exit code. An error names

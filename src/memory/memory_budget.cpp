@@ -37,6 +37,13 @@ MemoryCharge::MemoryCharge(MemoryBudget* budget, uint64_t bytes, const std::stri
   bytes_ = bytes;
 }
 
+MemoryCharge MemoryCharge::adopt(MemoryBudget* budget, uint64_t bytes) {
+  MemoryCharge charge;
+  charge.budget_ = budget;
+  charge.bytes_ = budget ? bytes : 0;
+  return charge;
+}
+
 MemoryCharge::MemoryCharge(MemoryCharge&& other) noexcept
     : budget_(std::exchange(other.budget_, nullptr)), bytes_(std::exchange(other.bytes_, 0)) {}
 

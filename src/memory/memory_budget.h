@@ -47,6 +47,9 @@ class MemoryCharge {
   MemoryCharge() = default;
   // Throws MemoryLimitError when the budget refuses.
   MemoryCharge(MemoryBudget* budget, uint64_t bytes, const std::string& what);
+  // Takes over `bytes` already charged to `budget` (by a loader's raw charges), to be given back
+  // by this object.
+  static MemoryCharge adopt(MemoryBudget* budget, uint64_t bytes);
   MemoryCharge(MemoryCharge&& other) noexcept;
   MemoryCharge& operator=(MemoryCharge&& other) noexcept;
   MemoryCharge(const MemoryCharge&) = delete;

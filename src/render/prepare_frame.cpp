@@ -13,7 +13,7 @@ bool same_point(dvec3 a, dvec3 b) { return a.x == b.x && a.y == b.y && a.z == b.
 
 // Updates `prepared` to `next` when only what scene_changes allows differs and the view keeps
 // its render origin; false (and `prepared` untouched) otherwise.
-bool update_frame(PreparedScene& prepared, SceneDesc& next, const RenderOptions& options) {
+bool update_frame(PreparedScene& prepared, SceneDesc& next, MemoryCharge& next_memory, const RenderOptions& options) {
   WorldPlacement world = record_world_placement(next);
   bool framed = false;
   dvec3 origin = choose_render_origin(world, world_view_camera(world, next.settings, options, framed).position);
@@ -28,6 +28,7 @@ bool update_frame(PreparedScene& prepared, SceneDesc& next, const RenderOptions&
   auto start = std::chrono::steady_clock::now();
   bool pyramids_kept = prepared.texture_pyramids && pyramids_serve(*prepared.scene, next);
   *prepared.scene = std::move(next);  // the accelerator and alpha masks point to this object
+  prepared.scene_memory = std::move(next_memory);
   prepared.world = std::move(world);
   update_scene_accel(*prepared.accel, *changes);
   prepared.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -40,17 +41,19 @@ bool update_frame(PreparedScene& prepared, SceneDesc& next, const RenderOptions&
 
 }  // namespace
 
-FramePreparation prepare_frame(std::optional<PreparedScene>& prepared, SceneDesc next, const RenderOptions& options) {
+FramePreparation prepare_frame(std::optional<PreparedScene>& prepared, SceneDesc next, MemoryCharge next_memory,
+                               const RenderOptions& options) {
   if (prepared) {
     try {
-      if (update_frame(*prepared, next, options)) return FramePreparation::updated;
+      if (update_frame(*prepared, next, next_memory, options)) return FramePreparation::updated;
     } catch (...) {
       prepared.reset();
       throw;
     }
   }
-  prepared.reset();  // gives back the previous frame's accelerator before building this one
+  prepared.reset();  // gives back the previous frame's scene and accelerator before building this one
   prepared = prepare_scene(std::move(next), options, AccelLayout::two_level);
+  prepared->scene_memory = std::move(next_memory);
   return FramePreparation::prepared;
 }
 

@@ -17,9 +17,12 @@ enum class FramePreparation {
 };
 
 // Makes `prepared` the frame whose world-space scene is `next` (made from the same file as
-// `prepared`'s scene), seen by the view of `options`. With no previous frame, or one that cannot
-// be updated, prepares it anew in the two-level layout (accel/scene_accel.h) that later frames
-// update. Throws as prepare_scene does; `prepared` is then empty.
-FramePreparation prepare_frame(std::optional<PreparedScene>& prepared, SceneDesc next, const RenderOptions& options);
+// `prepared`'s scene), seen by the view of `options`; `next_memory`, what `next` holds against the
+// budget, goes with it (the previous frame's is given back with its scene). With no previous
+// frame, or one that cannot be updated, prepares it anew in the two-level layout
+// (accel/scene_accel.h) that later frames update. Throws as prepare_scene does; `prepared` is
+// then empty.
+FramePreparation prepare_frame(std::optional<PreparedScene>& prepared, SceneDesc next, MemoryCharge next_memory,
+                               const RenderOptions& options);
 
 }  // namespace radiant

@@ -17,6 +17,7 @@ namespace radiant {
 // Derived state built once per scene and reused for every view (`radiant batch`).
 struct PreparedScene {
   std::unique_ptr<SceneDesc> scene;  // in render space: world positions minus `origin`
+  MemoryCharge scene_memory;         // the scene's own size, when its maker handed it over (frames)
   WorldPlacement world;              // the world positions, as loaded
   dvec3 origin = {0, 0, 0};
   std::unique_ptr<SceneAccel> accel;

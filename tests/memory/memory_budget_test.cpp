@@ -68,6 +68,20 @@ TEST_CASE("memory budget: a MemoryCharge gives its bytes back when it dies or is
   CHECK(nothing.bytes() == 0);
 }
 
+TEST_CASE("memory budget: an adopted charge gives back what a loader charged raw, once") {
+  MemoryBudget budget(1000);
+  budget.charge(300, "a frame's scene");
+  {
+    MemoryCharge scene = MemoryCharge::adopt(&budget, 300);
+    CHECK(budget.used() == 300);  // adopting charges nothing more
+    CHECK(scene.bytes() == 300);
+    scene = MemoryCharge::adopt(&budget, 0);  // replaced: the old bytes go back
+    CHECK(budget.used() == 0);
+  }
+  CHECK(budget.used() == 0);
+  CHECK(MemoryCharge::adopt(nullptr, 300).bytes() == 0);
+}
+
 TEST_CASE("memory budget: sizes read like people write them") {
   CHECK(format_bytes(0) == "0 bytes");
   CHECK(format_bytes(1) == "1 byte");
