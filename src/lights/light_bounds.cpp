@@ -7,19 +7,9 @@ namespace radiant {
 
 namespace {
 
-float safe_sqrt(float x) { return std::sqrt(std::max(0.0f, x)); }
-float safe_acos(float x) { return std::acos(std::clamp(x, -1.0f, 1.0f)); }
+using importance_detail::safe_sqrt;
 
-// cos(max(0, a - b)) from the sines and cosines of angles a and b in [0, pi].
-float cos_of_difference_clamped(float sin_a, float cos_a, float sin_b, float cos_b) {
-  if (cos_a > cos_b) return 1;
-  return cos_a * cos_b + sin_a * sin_b;
-}
-// sin(max(0, a - b)) likewise.
-float sin_of_difference_clamped(float sin_a, float cos_a, float sin_b, float cos_b) {
-  if (cos_a > cos_b) return 0;
-  return sin_a * cos_b - cos_a * sin_b;
-}
+float safe_acos(float x) { return std::acos(std::clamp(x, -1.0f, 1.0f)); }
 
 // `v` rotated by `angle` about unit `axis` (Rodrigues).
 vec3 rotate(vec3 v, vec3 axis, float angle) {
@@ -74,38 +64,17 @@ LightBounds merge(const LightBounds& a, const LightBounds& b) {
   return m;
 }
 
-float importance(const LightBounds& bounds, vec3 p, vec3 n) {
-  if (!(bounds.intensity > 0)) return 0;
-  vec3 center = (bounds.lower + bounds.upper) * 0.5f;
-  float radius2 = length_squared(bounds.upper - bounds.lower) * 0.25f;  // of the box's bounding sphere
-  vec3 to_point = p - center;
-  float distance2 = length_squared(to_point);
-  // Inside the bounding sphere every direction and cosine is possible: only the distance, clamped
-  // to the sphere's radius, tells groups apart.
-  if (distance2 <= radius2) return bounds.intensity / std::max(radius2, 1e-30f);
-
-  vec3 wi = to_point / std::sqrt(distance2);  // from the group towards p
-  float cos_w = dot(bounds.axis, wi);
-  if (bounds.two_sided) cos_w = std::abs(cos_w);
-  float sin_w = safe_sqrt(1 - cos_w * cos_w);
-  // theta_b: the half-angle the bounding sphere subtends at p.
-  float sin2_b = radius2 / distance2;
-  float sin_b = std::sqrt(sin2_b), cos_b = safe_sqrt(1 - sin2_b);
-  // theta': the smallest angle between an emitting normal and the direction to p.
-  float sin_o = safe_sqrt(1 - bounds.cos_spread * bounds.cos_spread);
-  float cos_x = cos_of_difference_clamped(sin_w, cos_w, sin_o, bounds.cos_spread);
-  float sin_x = sin_of_difference_clamped(sin_w, cos_w, sin_o, bounds.cos_spread);
-  float cos_emitter = cos_of_difference_clamped(sin_x, cos_x, sin_b, cos_b);
-  if (cos_emitter <= bounds.cos_falloff) return 0;
-
-  float estimate = bounds.intensity * cos_emitter / std::max(distance2, 1e-30f);
-  if (!(n.x == 0 && n.y == 0 && n.z == 0)) {
-    // Either side of the surface: a BSDF may transmit.
-    float cos_i = std::abs(dot(wi, n));
-    float sin_i = safe_sqrt(1 - cos_i * cos_i);
-    estimate *= cos_of_difference_clamped(sin_i, cos_i, sin_b, cos_b);
-  }
-  return std::max(estimate, 0.0f);
+ImportanceBounds importance_bounds(const LightBounds& bounds) {
+  ImportanceBounds b;
+  b.center = (bounds.lower + bounds.upper) * 0.5f;
+  b.radius2 = length_squared(bounds.upper - bounds.lower) * 0.25f;
+  b.axis = bounds.axis;
+  b.cos_spread = bounds.cos_spread;
+  b.sin_spread = safe_sqrt(1 - bounds.cos_spread * bounds.cos_spread);
+  b.cos_falloff = bounds.cos_falloff;
+  b.intensity = bounds.intensity;
+  b.two_sided = bounds.two_sided;
+  return b;
 }
 
 float orientation_measure(const LightBounds& bounds) {

@@ -3,6 +3,9 @@
 // LightBounds, after Conty Estevez and Kulla's many-light cones).
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+
 #include "math/vec.h"
 
 namespace radiant {
@@ -22,11 +25,71 @@ LightBounds point_light_bounds(vec3 position, vec3 axis, float cos_spread, float
 // Bounds covering both (a group of lights); a side of intensity 0 is ignored.
 LightBounds merge(const LightBounds& a, const LightBounds& b);
 
+// A group's bounds as importance() reads them: what every evaluation would otherwise work out
+// again from LightBounds (the centre, the bounding sphere, the sine of the cone of normals),
+// worked out once per node of the light BVH, whose sampling evaluates two groups per level.
+struct ImportanceBounds {
+  vec3 center;
+  float radius2 = 0;       // squared radius of the box's bounding sphere
+  vec3 axis = {0, 0, 1};
+  float cos_spread = 1, sin_spread = 0;
+  float cos_falloff = 0;
+  float intensity = 0;
+  bool two_sided = false;
+};
+
+ImportanceBounds importance_bounds(const LightBounds& bounds);
+
+namespace importance_detail {
+inline float safe_sqrt(float x) { return std::sqrt(std::max(0.0f, x)); }
+// cos(max(0, a - b)) and sin(max(0, a - b)) from the sines and cosines of angles a, b in [0, pi].
+inline float cos_of_difference_clamped(float sin_a, float cos_a, float sin_b, float cos_b) {
+  if (cos_a > cos_b) return 1;
+  return cos_a * cos_b + sin_a * sin_b;
+}
+inline float sin_of_difference_clamped(float sin_a, float cos_a, float sin_b, float cos_b) {
+  if (cos_a > cos_b) return 0;
+  return sin_a * cos_b - cos_a * sin_b;
+}
+}  // namespace importance_detail
+
 // Estimated light from the group at point `p` of a surface with unit normal `n` (zero vector for a
 // point in a medium): intensity x the largest emitter cosine any light of the group can have
 // towards p x the largest receiver cosine / squared distance; 0 only when no light of the group
-// can reach p. Conservative: never 0 for a group that lights p.
-float importance(const LightBounds& bounds, vec3 p, vec3 n);
+// can reach p. Conservative: never 0 for a group that lights p. Inline: the light BVH evaluates
+// two sibling groups per level, and their independent chains of square roots and divisions
+// overlap only when the compiler sees both.
+inline float importance(const ImportanceBounds& bounds, vec3 p, vec3 n) {
+  using namespace importance_detail;
+  if (!(bounds.intensity > 0)) return 0;
+  vec3 to_point = p - bounds.center;
+  float distance2 = length_squared(to_point);
+  // Inside the bounding sphere every direction and cosine is possible: only the distance, clamped
+  // to the sphere's radius, tells groups apart.
+  if (distance2 <= bounds.radius2) return bounds.intensity / std::max(bounds.radius2, 1e-30f);
+
+  vec3 wi = to_point / std::sqrt(distance2);  // from the group towards p
+  float cos_w = dot(bounds.axis, wi);
+  if (bounds.two_sided) cos_w = std::abs(cos_w);
+  float sin_w = safe_sqrt(1 - cos_w * cos_w);
+  // theta_b: the half-angle the bounding sphere subtends at p.
+  float sin2_b = bounds.radius2 / distance2;
+  float sin_b = std::sqrt(sin2_b), cos_b = safe_sqrt(1 - sin2_b);
+  // theta': the smallest angle between an emitting normal and the direction to p.
+  float cos_x = cos_of_difference_clamped(sin_w, cos_w, bounds.sin_spread, bounds.cos_spread);
+  float sin_x = sin_of_difference_clamped(sin_w, cos_w, bounds.sin_spread, bounds.cos_spread);
+  float cos_emitter = cos_of_difference_clamped(sin_x, cos_x, sin_b, cos_b);
+  if (cos_emitter <= bounds.cos_falloff) return 0;
+
+  float estimate = bounds.intensity * cos_emitter / std::max(distance2, 1e-30f);
+  if (!(n.x == 0 && n.y == 0 && n.z == 0)) {
+    // Either side of the surface: a BSDF may transmit.
+    float cos_i = std::abs(dot(wi, n));
+    float sin_i = safe_sqrt(1 - cos_i * cos_i);
+    estimate *= cos_of_difference_clamped(sin_i, cos_i, sin_b, cos_b);
+  }
+  return std::max(estimate, 0.0f);
+}
 
 // The directional measure of pbrt-v4's split cost: the solid angle the group's cone of normals
 // widened by its falloff covers, weighted by cosine.

@@ -71,8 +71,8 @@ struct LightRange {
 // choice is wasted (pbrt gives up there), so by intensity, which keeps every light's probability
 // a distribution. One function for sampling and for the probability walk, so both agree.
 double first_child_probability(const LightBvh& bvh, int node, vec3 p, vec3 n) {
-  const LightBounds& first = bvh.nodes[size_t(node) + 1].bounds;
-  const LightBounds& second = bvh.nodes[size_t(bvh.nodes[size_t(node)].second_child)].bounds;
+  const ImportanceBounds& first = bvh.nodes[size_t(node) + 1].bounds;
+  const ImportanceBounds& second = bvh.nodes[size_t(bvh.nodes[size_t(node)].second_child)].bounds;
   double a = importance(first, p, n), b = importance(second, p, n);
   if (!(a + b > 0)) a = first.intensity, b = second.intensity;
   return a / (a + b);
@@ -104,14 +104,14 @@ LightBvh build_light_bvh(std::vector<BoundedLight> lights, size_t slots) {
     node.parent = r.parent;
     if (r.parent >= 0 && r.parent + 1 != index) bvh.nodes[size_t(r.parent)].second_child = index;
     if (r.end - r.begin == 1) {
-      node.bounds = lights[r.begin].bounds;
+      node.bounds = importance_bounds(lights[r.begin].bounds);
       node.light = lights[r.begin].slot;
       bvh.leaf_of_light[size_t(node.light)] = index;
       continue;
     }
     LightBounds all;
     for (size_t i = r.begin; i < r.end; ++i) all = merge(all, lights[i].bounds);
-    node.bounds = all;
+    node.bounds = importance_bounds(all);
     auto begin = lights.begin() + ptrdiff_t(r.begin), end = lights.begin() + ptrdiff_t(r.end);
     auto middle = partition_lights(begin, end, all);
     if (middle == begin || middle == end) middle = begin + (end - begin) / 2;  // inseparable: halve

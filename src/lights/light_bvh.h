@@ -12,7 +12,7 @@
 namespace radiant {
 
 struct LightBvhNode {
-  LightBounds bounds;       // of every light below
+  ImportanceBounds bounds;  // of every light below
   int parent = -1;          // -1 for the root
   int second_child = -1;    // interior nodes: the first child is the next node
   int light = -1;           // leaves: the light's slot in the light table
