@@ -64,9 +64,12 @@ inline float importance(const ImportanceBounds& bounds, vec3 p, vec3 n) {
   if (!(bounds.intensity > 0)) return 0;
   vec3 to_point = p - bounds.center;
   float distance2 = length_squared(to_point);
-  // Inside the bounding sphere every direction and cosine is possible: only the distance, clamped
-  // to the sphere's radius, tells groups apart.
-  if (distance2 <= bounds.radius2) return bounds.intensity / std::max(bounds.radius2, 1e-30f);
+  // Inside the bounding sphere every direction and cosine is possible: only the distance to the
+  // centre tells groups apart, clamped at half the radius so that a point near the centre of a
+  // large group does not count it as all but touching. (Clamping at the whole radius made every
+  // point inside alike, and a floor under a wide field of lamps chose between the field's halves
+  // by brightness alone: 12% more error at equal samples on assets/many-lights.scene.)
+  if (distance2 <= bounds.radius2) return bounds.intensity / std::max(std::max(distance2, bounds.radius2 * 0.25f), 1e-30f);
 
   vec3 wi = to_point / std::sqrt(distance2);  // from the group towards p
   float cos_w = dot(bounds.axis, wi);

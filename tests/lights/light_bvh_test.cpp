@@ -179,6 +179,19 @@ TEST_CASE("light BVH: a point beside one cluster of lights chooses that cluster;
   CHECK(near_bvh > 0.97);
 }
 
+TEST_CASE("light bounds: inside a group's bounding sphere, nearness to its centre still counts") {
+  vec3 down = {0, -1, 0};
+  LightBounds group = merge(point_light_bounds({-5, 2, 0}, down, 1, 0, 1), point_light_bounds({5, 2, 0}, down, 1, 0, 1));
+  ImportanceBounds bounds = importance_bounds(group);
+  REQUIRE(bounds.radius2 == doctest::Approx(25));
+  vec3 up = {0, 1, 0};
+  float near = importance(bounds, {0, 1, 0}, up), far = importance(bounds, {0, -2, 0}, up);  // distances^2 1 and 16
+  // The near point is clamped at half the radius (6.25): 16 / 6.25 times the far one.
+  CHECK(near == doctest::Approx(far * 16 / 6.25f));
+  CHECK(std::isfinite(importance(bounds, bounds.center, up)));
+  CHECK(importance(bounds, bounds.center, up) == near);
+}
+
 TEST_CASE("light sampler auto: power below light_bvh_min_lights lights with a position, the BVH from there") {
   SceneDesc scene;
   int lamp = add_emitter(scene, {1, 1, 1}, true);
