@@ -68,6 +68,7 @@ ImportanceBounds importance_bounds(const LightBounds& bounds) {
   ImportanceBounds b;
   b.center = (bounds.lower + bounds.upper) * 0.5f;
   b.radius2 = length_squared(bounds.upper - bounds.lower) * 0.25f;
+  b.radius = std::sqrt(b.radius2);
   b.axis = bounds.axis;
   b.cos_spread = bounds.cos_spread;
   b.sin_spread = safe_sqrt(1 - bounds.cos_spread * bounds.cos_spread);
