@@ -97,6 +97,23 @@ inline float importance(const ImportanceBounds& bounds, vec3 p, vec3 n) {
   return std::max(estimate, 0.0f);
 }
 
+// Four groups' ImportanceBounds side by side, one lane each; a lane of intensity 0 is empty.
+struct ImportanceBounds4 {
+  float center_x[4] = {}, center_y[4] = {}, center_z[4] = {};
+  float radius[4] = {}, radius2[4] = {};
+  float axis_x[4] = {}, axis_y[4] = {}, axis_z[4] = {};
+  float cos_spread[4] = {}, sin_spread[4] = {}, cos_falloff[4] = {};
+  float intensity[4] = {};
+  float two_sided[4] = {};  // 1 or 0
+};
+
+void set_lane(ImportanceBounds4& bounds, int lane, const ImportanceBounds& one);
+ImportanceBounds lane_of(const ImportanceBounds4& bounds, int lane);
+
+// importance() of each lane's group at (p, n), all four at once: the same operations in the same
+// order, so each lane gives exactly what importance() gives for that group.
+void importance4(const ImportanceBounds4& bounds, vec3 p, vec3 n, float out[4]);
+
 // The directional measure of pbrt-v4's split cost: the solid angle the group's cone of normals
 // widened by its falloff covers, weighted by cosine.
 float orientation_measure(const LightBounds& bounds);

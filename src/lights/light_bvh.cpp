@@ -60,53 +60,40 @@ LightIterator partition_lights(LightIterator begin, LightIterator end, const Lig
   return std::partition(begin, end, [&](const BoundedLight& l) { return bucket_of(l, best_axis, low, span) <= best_bucket; });
 }
 
-// Lights [begin, end) waiting to become a node below `parent` while the tree is built.
+// Lights [begin, end) waiting to become a node below `parent` while the binary tree is built.
 struct LightRange {
   size_t begin, end;
   int parent;
 };
 
-// The probability of stepping from interior node `node` into its first child at (p, n): by the
-// children's importance; where the bounds rule both out, no light below can reach p and any
-// choice is wasted (pbrt gives up there), so by intensity, which keeps every light's probability
-// a distribution. One function for sampling and for the probability walk, so both agree.
-double first_child_probability(const LightBvh& bvh, int node, vec3 p, vec3 n) {
-  const ImportanceBounds& first = bvh.nodes[size_t(node) + 1].bounds;
-  const ImportanceBounds& second = bvh.nodes[size_t(bvh.nodes[size_t(node)].second_child)].bounds;
-  double a = importance(first, p, n), b = importance(second, p, n);
-  if (!(a + b > 0)) a = first.intensity, b = second.intensity;
-  return a / (a + b);
-}
+// The binary tree the build makes first (pbrt-v4's), before it is collapsed to four-wide nodes.
+struct BinaryNode {
+  ImportanceBounds bounds;
+  int second_child = -1;  // interior nodes: the first child is the next node
+  int light = -1;         // leaves: the light's slot
+  bool is_leaf() const { return light >= 0; }
+};
 
-}  // namespace
+// A binary interior node waiting to become a four-wide node, in lane `lane` of `parent`.
+struct PendingNode {
+  int binary, parent, lane;
+};
 
-uint64_t light_bvh_bytes(uint64_t lights, uint64_t slots) {
-  uint64_t nodes = lights > 0 ? 2 * lights - 1 : 0;
-  // The tree, the leaf index, the lights' copy and the work list (at most one range per light).
-  return nodes * sizeof(LightBvhNode) + slots * sizeof(int) + lights * (sizeof(BoundedLight) + sizeof(LightRange));
-}
-
-LightBvh build_light_bvh(std::vector<BoundedLight> lights, size_t slots) {
-  LightBvh bvh;
-  bvh.leaf_of_light.assign(slots, -1);
-  lights.erase(std::remove_if(lights.begin(), lights.end(), [](const BoundedLight& l) { return !(l.bounds.intensity > 0); }),
-               lights.end());
-  if (lights.empty()) return bvh;
-  bvh.nodes.reserve(2 * lights.size() - 1);
+std::vector<BinaryNode> build_binary_tree(std::vector<BoundedLight>& lights) {
+  std::vector<BinaryNode> nodes;
+  nodes.reserve(2 * lights.size() - 1);
   // Depth-first without recursion (a tree of many lights can be deep): a range is made a node
   // when taken from the stack; the first child is taken next, so it is always the next node.
   std::vector<LightRange> stack = {{0, lights.size(), -1}};
   while (!stack.empty()) {
     LightRange r = stack.back();
     stack.pop_back();
-    int index = int(bvh.nodes.size());
-    LightBvhNode& node = bvh.nodes.emplace_back();
-    node.parent = r.parent;
-    if (r.parent >= 0 && r.parent + 1 != index) bvh.nodes[size_t(r.parent)].second_child = index;
+    int index = int(nodes.size());
+    BinaryNode& node = nodes.emplace_back();
+    if (r.parent >= 0 && r.parent + 1 != index) nodes[size_t(r.parent)].second_child = index;
     if (r.end - r.begin == 1) {
       node.bounds = importance_bounds(lights[r.begin].bounds);
       node.light = lights[r.begin].slot;
-      bvh.leaf_of_light[size_t(node.light)] = index;
       continue;
     }
     LightBounds all;
@@ -119,6 +106,87 @@ LightBvh build_light_bvh(std::vector<BoundedLight> lights, size_t slots) {
     stack.push_back({split, r.end, index});
     stack.push_back({r.begin, split, index});
   }
+  return nodes;
+}
+
+// Each four-wide node takes a binary node's children, an interior child replaced by its own two:
+// two levels of the binary tree per step down, rated in one four-wide pass.
+void collapse_to_four_wide(const std::vector<BinaryNode>& binary, LightBvh& bvh) {
+  std::vector<PendingNode> stack;
+  auto put = [&](int node, int lane, int b) {
+    const BinaryNode& from = binary[size_t(b)];
+    set_lane(bvh.nodes[size_t(node)].bounds, lane, from.bounds);
+    if (from.is_leaf()) {
+      bvh.nodes[size_t(node)].child[size_t(lane)] = ~from.light;
+      bvh.leaf_of_light[size_t(from.light)] = {node, lane};
+    } else {
+      stack.push_back({b, node, lane});
+    }
+  };
+  bvh.nodes.emplace_back();
+  if (binary[0].is_leaf()) {
+    put(0, 0, 0);  // one light: a root with one lane
+    return;
+  }
+  stack.push_back({0, -1, -1});
+  while (!stack.empty()) {
+    PendingNode pending = stack.back();
+    stack.pop_back();
+    int index = 0;
+    if (pending.parent >= 0) {
+      index = int(bvh.nodes.size());
+      bvh.nodes.emplace_back();
+      bvh.nodes[size_t(pending.parent)].child[size_t(pending.lane)] = index;
+    }
+    bvh.nodes[size_t(index)].parent = pending.parent;
+    bvh.nodes[size_t(index)].parent_lane = pending.lane;
+    int lane = 0;
+    for (int child : {pending.binary + 1, binary[size_t(pending.binary)].second_child}) {
+      if (binary[size_t(child)].is_leaf()) {
+        put(index, lane++, child);
+      } else {
+        put(index, lane++, child + 1);
+        put(index, lane++, binary[size_t(child)].second_child);
+      }
+    }
+  }
+}
+
+// The probability of stepping from `node` into each of its lanes at (p, n): by the children's
+// importance; where the bounds rule all out, no light below can reach p and any choice is wasted
+// (pbrt gives up there), so by intensity, which keeps every light's probability a distribution.
+// One function for sampling and for the probability walk, so both agree.
+void lane_probabilities(const LightBvhNode& node, vec3 p, vec3 n, double probability[4]) {
+  float rated[4];
+  importance4(node.bounds, p, n, rated);
+  double total = double(rated[0]) + rated[1] + rated[2] + rated[3];
+  if (!(total > 0)) {
+    for (int lane = 0; lane < 4; ++lane) rated[lane] = node.bounds.intensity[lane];
+    total = double(rated[0]) + rated[1] + rated[2] + rated[3];
+  }
+  double share = 1 / total;
+  for (int lane = 0; lane < 4; ++lane) probability[lane] = rated[lane] * share;
+}
+
+}  // namespace
+
+uint64_t light_bvh_bytes(uint64_t lights, uint64_t slots) {
+  uint64_t binary_nodes = lights > 0 ? 2 * lights - 1 : 0;
+  // Both trees (a four-wide node stands for a distinct binary interior node, or the one leaf),
+  // the leaf index, the lights' copy and the work lists (at most one entry per light each).
+  return binary_nodes * sizeof(BinaryNode) + lights * sizeof(LightBvhNode) + slots * sizeof(LightBvhLeaf) +
+         lights * (sizeof(BoundedLight) + sizeof(LightRange) + sizeof(PendingNode));
+}
+
+LightBvh build_light_bvh(std::vector<BoundedLight> lights, size_t slots) {
+  LightBvh bvh;
+  bvh.leaf_of_light.assign(slots, LightBvhLeaf{});
+  lights.erase(std::remove_if(lights.begin(), lights.end(), [](const BoundedLight& l) { return !(l.bounds.intensity > 0); }),
+               lights.end());
+  if (lights.empty()) return bvh;
+  std::vector<BinaryNode> binary = build_binary_tree(lights);
+  bvh.nodes.reserve(std::max<size_t>(1, lights.size() - 1));
+  collapse_to_four_wide(binary, bvh);
   return bvh;
 }
 
@@ -126,33 +194,45 @@ bool sample_light_bvh(const LightBvh& bvh, vec3 p, vec3 n, float u, int& slot, f
   if (bvh.empty()) return false;
   double remaining = u, chosen = 1;
   int index = 0;
-  while (!bvh.nodes[size_t(index)].is_leaf()) {
-    double p_first = first_child_probability(bvh, index, p, n);
-    if (remaining < p_first) {
-      chosen *= p_first;
-      remaining = std::min(remaining / p_first, below_one);
-      index = index + 1;
-    } else {
-      chosen *= 1 - p_first;
-      remaining = std::min((remaining - p_first) / (1 - p_first), below_one);
-      index = bvh.nodes[size_t(index)].second_child;
+  for (;;) {
+    const LightBvhNode& node = bvh.nodes[size_t(index)];
+    double lane_probability[4];
+    lane_probabilities(node, p, n, lane_probability);
+    // The lane whose share of [0, 1) holds `remaining`; rounding past the last share lands in the
+    // last lane that has one.
+    int lane = -1;
+    double below = 0;
+    for (int k = 0; k < 4; ++k) {
+      if (!(lane_probability[k] > 0)) continue;
+      lane = k;
+      if (remaining < below + lane_probability[k]) break;
+      below += lane_probability[k];
     }
+    if (lane < 0) return false;
+    chosen *= lane_probability[lane];
+    remaining = std::clamp((remaining - below) / lane_probability[lane], 0.0, below_one);
+    int child = node.child[size_t(lane)];
+    if (child < 0) {
+      slot = ~child;
+      break;
+    }
+    index = child;
   }
-  slot = bvh.nodes[size_t(index)].light;
   probability = float(chosen);
   return probability > 0;
 }
 
 float light_bvh_probability(const LightBvh& bvh, vec3 p, vec3 n, int slot) {
   if (slot < 0 || size_t(slot) >= bvh.leaf_of_light.size()) return 0;
-  int index = bvh.leaf_of_light[size_t(slot)];
-  if (index < 0) return 0;
+  LightBvhLeaf leaf = bvh.leaf_of_light[size_t(slot)];
+  if (leaf.node < 0) return 0;
   double probability = 1;
-  while (index != 0) {
-    int parent = bvh.nodes[size_t(index)].parent;
-    double p_first = first_child_probability(bvh, parent, p, n);
-    probability *= index == parent + 1 ? p_first : 1 - p_first;
-    index = parent;
+  for (int node = leaf.node, lane = leaf.lane; node >= 0;) {
+    double lane_probability[4];
+    lane_probabilities(bvh.nodes[size_t(node)], p, n, lane_probability);
+    probability *= lane_probability[lane];
+    lane = bvh.nodes[size_t(node)].parent_lane;
+    node = bvh.nodes[size_t(node)].parent;
   }
   return float(probability);
 }

@@ -4,6 +4,7 @@
 // a light is the product of those choices along its path from the root.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -11,17 +12,24 @@
 
 namespace radiant {
 
+// A node of the light BVH: up to four children side by side, so that one pass of four-wide
+// arithmetic rates them all (importance4). A lane is an interior child (child >= 0, the node's
+// index), a leaf (child < 0, the light's slot is ~child) or empty (intensity 0, never chosen).
 struct LightBvhNode {
-  ImportanceBounds bounds;  // of every light below
-  int parent = -1;          // -1 for the root
-  int second_child = -1;    // interior nodes: the first child is the next node
-  int light = -1;           // leaves: the light's slot in the light table
-  bool is_leaf() const { return light >= 0; }
+  ImportanceBounds4 bounds;
+  std::array<int, 4> child = {0, 0, 0, 0};
+  int parent = -1;       // -1 for the root
+  int parent_lane = -1;  // the lane of the parent that leads here
+};
+
+// Where a light sits in the tree: the node and lane of its leaf.
+struct LightBvhLeaf {
+  int node = -1, lane = -1;
 };
 
 struct LightBvh {
-  std::vector<LightBvhNode> nodes;  // root first, depth-first
-  std::vector<int> leaf_of_light;   // leaf node of each light-table slot, -1 outside the tree
+  std::vector<LightBvhNode> nodes;           // root first
+  std::vector<LightBvhLeaf> leaf_of_light;   // per light-table slot; node -1 outside the tree
   bool empty() const { return nodes.empty(); }
 };
 
