@@ -27,7 +27,7 @@ LightBounds merge(const LightBounds& a, const LightBounds& b);
 
 // A group's bounds as importance() reads them: what every evaluation would otherwise work out
 // again from LightBounds (the centre, the bounding sphere, the sine of the cone of normals),
-// worked out once per node of the light BVH, whose sampling evaluates two groups per level.
+// worked out once per group when the light BVH is built.
 struct ImportanceBounds {
   vec3 center;
   float radius = 0, radius2 = 0;  // of the box's bounding sphere, and its square
@@ -56,9 +56,9 @@ inline float sin_of_difference_clamped(float sin_a, float cos_a, float sin_b, fl
 // Estimated light from the group at point `p` of a surface with unit normal `n` (zero vector for a
 // point in a medium): intensity x the largest emitter cosine any light of the group can have
 // towards p x the largest receiver cosine / squared distance; 0 only when no light of the group
-// can reach p. Conservative: never 0 for a group that lights p. Inline: the light BVH evaluates
-// two sibling groups per level, and their independent chains of square roots and divisions
-// overlap only when the compiler sees both.
+// can reach p. Conservative: never 0 for a group that lights p. The light BVH rates four groups
+// at once with importance4(), which gives exactly this per lane; this is the formula's reference
+// and importance4's fallback where SSE2 is missing.
 inline float importance(const ImportanceBounds& bounds, vec3 p, vec3 n) {
   using namespace importance_detail;
   if (!(bounds.intensity > 0)) return 0;
