@@ -63,8 +63,19 @@ done
 for name in "${targets[@]}"; do
   echo "== fuzz_$name: $build_dir/fuzz-$name.log =="
   # The summary on success; the sanitizer report and the artifact name on a finding.
-  grep -E "^(==[0-9]+==ERROR|SUMMARY|artifact_prefix|Test unit written|terminate called|  what\(\)|#[0-9]+\s+DONE|stat::number_of_executed_units|stat::peak_rss_mb)|runtime error:|^\s+#[0-9]+ 0x" \
+  grep -E "^(==[0-9]+==ERROR|SUMMARY|artifact_prefix|Test unit written|terminate called|  what\(\)|#[0-9]+\s+DONE|stat::number_of_executed_units|stat::peak_rss_mb)|runtime error:|Assertion .* failed|deadly signal|^\s+#[0-9]+ 0x" \
     "$build_dir/fuzz-$name.log" | head -40 || true
 done
-if ((status)); then echo "fuzz: FAILED, inputs in $artifacts/" >&2; exit 1; fi
+if ((status)); then
+  # CI keeps only its log: each finding is printed whole, so it can be replayed from the log alone
+  # (base64 -d > file, then the target's binary on that file).
+  for finding in "$artifacts"/*; do
+    [[ -f $finding ]] || continue
+    echo "== finding $finding, base64: =="
+    base64 -w 0 "$finding" | head -c 32768
+    echo
+  done
+  echo "fuzz: FAILED, inputs in $artifacts/" >&2
+  exit 1
+fi
 echo "fuzz: no finding in ${seconds} s per fuzz target"

@@ -67,6 +67,9 @@ void place_node(GltfContext& context, PlacedNodes& placed, int index, const mat4
     } else if (!inverse_affine(world, inverse)) {
       // glTF allows a zero scale (it hides a node); a flattened mesh has no area to render.
       context.warn(where + ": singular transform (a zero scale): the mesh is not rendered");
+    } else if (!inverse_survives_float(world)) {
+      // A scale animated towards zero passes through such transforms; the mesh is a speck then.
+      context.warn(where + ": transform too close to singular to invert in single precision: the mesh is not rendered");
     } else if (!node.weights.empty() && node.weights != context.model.meshes[size_t(node.mesh)].weights) {
       MeshPose pose;
       pose.weights = node.weights;

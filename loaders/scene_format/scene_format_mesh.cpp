@@ -44,6 +44,8 @@ static mat4 read_matrix(const BuildContext& context, const Attribute& attribute)
   for (int i = 0; i < 12; ++i) matrix.m[i / 4][i % 4] = numbers[size_t(i)];
   mat4 inverse;
   if (!inverse_affine(matrix, inverse)) fail(context, attribute.name, "'matrix' is singular");
+  if (!inverse_survives_float(matrix))
+    fail(context, attribute.name, "'matrix' is too close to singular to invert in single precision, as ray tracing must");
   return matrix;
 }
 

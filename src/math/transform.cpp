@@ -1,6 +1,7 @@
 #include "math/transform.h"
 
 #include <cmath>
+#include <limits>
 
 namespace radiant {
 
@@ -84,6 +85,26 @@ bool inverse_affine(const mat4& a, mat4& out) {
       t -= inv[i][j] * m[j][3];
     }
     out.m[i][3] = float(t);
+  }
+  return true;
+}
+
+bool inverse_survives_float(const mat4& a) {
+  mat4 exact;
+  if (!inverse_affine(a, exact)) return false;
+  // Embree's arithmetic: the columns' cross products over their triple product, all in float.
+  vec3 c0 = {a.m[0][0], a.m[1][0], a.m[2][0]}, c1 = {a.m[0][1], a.m[1][1], a.m[2][1]},
+       c2 = {a.m[0][2], a.m[1][2], a.m[2][2]};
+  vec3 adjoint_rows[3] = {cross(c1, c2), cross(c2, c0), cross(c0, c1)};
+  float det = dot(c0, adjoint_rows[0]);
+  if (!(std::abs(det) >= std::numeric_limits<float>::min() && std::abs(det) <= std::numeric_limits<float>::max()))
+    return false;
+  for (int r = 0; r < 3; ++r) {
+    vec3 in_float = adjoint_rows[r] * (1 / det);
+    vec3 want = {exact.m[r][0], exact.m[r][1], exact.m[r][2]};
+    vec3 error = abs(in_float - want);
+    float bound = 1e-4f * max_component(abs(want));
+    if (!(error.x <= bound && error.y <= bound && error.z <= bound)) return false;  // NaN fails too
   }
   return true;
 }

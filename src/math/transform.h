@@ -19,6 +19,12 @@ mat4 rotation_axis(vec3 axis, float degrees);
 // Inverse of an affine matrix; returns false when singular.
 bool inverse_affine(const mat4& a, mat4& out);
 float determinant3(const mat4& a);
+// Whether the inverse of `a` survives single precision. Embree inverts an instance's transform
+// itself, in float (the adjoint over the determinant), and aborts on the non-finite rays a failed
+// inverse makes. False for a singular transform; for one so close to singular that the float
+// inverse strays from the exact one by more than 1e-4 of a row's size; and for a scale whose
+// determinant leaves float's normal range (a uniform scale below about 2.3e-13).
+bool inverse_survives_float(const mat4& a);
 bool is_finite(const mat4& a);
 bool is_identity(const mat4& a);
 

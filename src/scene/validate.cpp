@@ -208,6 +208,8 @@ struct Checker {
       if (!is_finite(scene.instances[i].transform)) fail(where + ".transform", "non-finite value");
       mat4 inverse;
       if (!inverse_affine(scene.instances[i].transform, inverse)) fail(where + ".transform", "singular transform");
+      if (!inverse_survives_float(scene.instances[i].transform))
+        fail(where + ".transform", "too close to singular to invert in single precision, as ray tracing must");
       placed_in_range(scene.instances[i], mesh_boxes[scene.instances[i].mesh], where);
     }
     for (size_t i = 0; i < scene.shapes.size(); ++i) shape(scene.shapes[i], at("shapes", i));

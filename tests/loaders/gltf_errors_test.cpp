@@ -305,6 +305,21 @@ TEST_CASE("gltf: a node scaled to zero is skipped with a warning naming the file
         "file.gltf: scene: nothing to render (no meshes placed and no shapes)");
 }
 
+TEST_CASE("gltf: a node scaled nearly to zero is skipped like a zero scale, not traced") {
+  // Its float inverse is infinite: Embree aborted on the first ray that reached it.
+  ScratchDir dir("gltf-scale-near-zero");
+  GltfBuilder b = quad_builder();
+  std::string path = dir.write("speck.gltf", b.gltf(std::string(quad_mesh) +
+                                                    ",\"nodes\":[{\"mesh\":0},{\"mesh\":0,\"scale\":[1e-16,1e-16,1e-16]}],"
+                                                    "\"scenes\":[{\"nodes\":[0,1]}]"))
+                         .string();
+  SceneDesc scene = load_scene(path);
+  CHECK(scene.instances.size() == 1);
+  REQUIRE(scene.warnings.size() == 1);
+  CHECK(scene.warnings[0] ==
+        path + ": nodes[1]: transform too close to singular to invert in single precision: the mesh is not rendered");
+}
+
 TEST_CASE("gltf errors: glTF 1.0 and GLB version 1 are refused as such") {
   CHECK(error_of("{\"asset\":{\"version\":\"1.0\"},\"meshes\":{}}") ==
         "file.gltf: asset.version: glTF 1.0 is not supported (radiant reads glTF 2.x)");

@@ -176,6 +176,8 @@ TEST_CASE("mesh errors: transform attributes") {
       {"@mesh\nfile a.obj\nmatrix 1 0 0 0 0 1 0 0 0 0 1 0 0 0 1 1\n",
        "t.scene:3:1: 'matrix' must be affine (last row 0 0 0 1)"},
       {"@mesh\nfile a.obj\nmatrix 1 0 0 0 0 1 0 0 0 0 0 0\n", "t.scene:3:1: 'matrix' is singular"},
+      {"@mesh\nfile a.obj\nmatrix 1.00000012 1 0 0 1 0.99999994 0 0 0 0 1 0\n",
+       "t.scene:3:1: 'matrix' is too close to singular to invert in single precision, as ray tracing must"},
       {"@mesh\nfile a.obj\nmatrix 1 0 0 0 0 1 0 0 0 0 1 0\ntranslate 1 2 3\n",
        "t.scene:4:1: 'translate' cannot be combined with 'matrix'"},
   });

@@ -89,6 +89,14 @@ TEST_CASE("validate: a singular instance transform names the file and the instan
   CHECK(problem(scene) == "s.gltf: instances[0].transform: singular transform");
 }
 
+TEST_CASE("validate: an instance transform too close to singular for float is refused by name") {
+  // Embree inverts it in single precision; it aborted on the rays that inverse made.
+  SceneDesc scene = triangle_scene();
+  scene.instances[0].transform = scaling({1e-16f, 1e-16f, 1e-16f});
+  CHECK(problem(scene) ==
+        "s.gltf: instances[0].transform: too close to singular to invert in single precision, as ray tracing must");
+}
+
 TEST_CASE("validate: negative radiance, reflectance and light intensity are refused") {
   SceneDesc scene = triangle_scene();
   scene.materials[0].emission = {1, -1, 1};

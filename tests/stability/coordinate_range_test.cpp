@@ -64,6 +64,22 @@ TEST_CASE("coordinate range: scenes and flags beyond it are refused with the pla
   }
 }
 
+TEST_CASE("coordinate range: an instance whose float inverse fails is refused at load, never an abort") {
+  // Found by the render fuzzer: Embree inverted the transform in float, got infinities and
+  // aborted on `ray.valid()` for the first ray that reached the instance.
+  ScratchDir dir("coordinate-range-inverse");
+  dir.write("tri.obj", "v -1 -1 0\nv 1 -1 0\nv 0 1 0\nf 1 2 3\n");
+  fs::path scene = dir.write("sheared.scene", "@camera\nposition 0 0 5\ndirection 0 0 -1\n"
+                                              "@light point\nposition 0 0 5\ncolor 255 255 255\n"
+                                              "@mesh\nfile tri.obj\nmatrix 1.00000012 1 0 0 1 0.99999994 0 0 0 0 1 0\n");
+  fs::path out = dir.file("out.png");
+  CommandResult r = run_radiant("render " + quoted(scene) + " -o " + quoted(out) + " --width 8 --height 8 --spp 1");
+  CHECK(r.exit_code == 1);
+  CHECK(r.err == "radiant: " + scene.string() +
+                     ":9:1: 'matrix' is too close to singular to invert in single precision, as ray tracing must\n");
+  CHECK(!fs::exists(out));
+}
+
 TEST_CASE("coordinate range: a plane 1e15 below a camera looking at the horizon renders, cut off before Embree's limit") {
   SceneDesc scene;
   int m = add_diffuse(scene, {0.5f, 0.5f, 0.5f});
