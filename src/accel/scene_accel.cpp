@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "accel/analytic_shapes.h"
+#include "accel/direct_shapes.h"
 #include "accel/embree_isa.h"
 #include "scene/coordinate_range.h"
 
@@ -90,15 +91,6 @@ Ray ray_from_embree(const RTCRay& r) {
   return {{r.org_x, r.org_y, r.org_z}, {r.dir_x, r.dir_y, r.dir_z}, r.tfar};
 }
 
-// A shape hit well inside the traceable range: rays spawned there, offset origins and shadow rays
-// to any light included, stay traceable. Only infinite planes and tubes can be hit beyond it, so
-// this cuts them off at a distance no view resolves.
-bool shape_hit_in_range(const SceneAccel& accel, const Ray& ray, const ShapeHit& hit) {
-  vec3 p = ray.origin + ray.direction * hit.t;
-  float bound = 0.5f * accel.max_ray_coordinate;
-  return std::abs(p.x) <= bound && std::abs(p.y) <= bound && std::abs(p.z) <= bound;
-}
-
 void shape_intersect_callback(const RTCIntersectFunctionNArguments* args) {
   if (!args->valid[0]) return;
   const SceneAccel& accel = accel_of(args->geometryUserPtr);
@@ -106,7 +98,7 @@ void shape_intersect_callback(const RTCIntersectFunctionNArguments* args) {
   ShapeHit hit;
   Ray ray = ray_from_embree(rayhit->ray);
   if (!intersect_shape(accel.scene->shapes[args->primID], ray, rayhit->ray.tnear, hit) ||
-      !shape_hit_in_range(accel, ray, hit))
+      !shape_hit_in_range(accel.max_ray_coordinate, ray, hit))
     return;
   rayhit->ray.tfar = hit.t;
   rayhit->hit.geomID = args->geomID;
@@ -125,7 +117,7 @@ void shape_occluded_callback(const RTCOccludedFunctionNArguments* args) {
   auto* ray = reinterpret_cast<RTCRay*>(args->ray);
   ShapeHit hit;
   Ray traced = ray_from_embree(*ray);
-  if (intersect_shape(accel.scene->shapes[args->primID], traced, ray->tnear, hit) && shape_hit_in_range(accel, traced, hit))
+  if (intersect_shape(accel.scene->shapes[args->primID], traced, ray->tnear, hit) && shape_hit_in_range(accel.max_ray_coordinate, traced, hit))
     ray->tfar = -std::numeric_limits<float>::infinity();
 }
 
@@ -389,6 +381,7 @@ std::unique_ptr<SceneAccel> build_scene_accel(const SceneDesc& scene, AccelLayou
   attach_instances(*accel);
   set_traceable_range(*accel);
   attach_shapes(*accel);
+  accel->direct_shapes = direct_shapes_of(scene);
   rtcCommitScene(accel->top);
   throw_on_device_error();
   return accel;
@@ -431,8 +424,10 @@ void update_scene_accel(SceneAccel& accel, const SceneChanges& changes) {
   accel.instanced.clear();
   for (size_t i = 0; i < instanced.size(); ++i)
     if (instanced[i]) accel.instanced.push_back(int(i));
-  if (changes.shapes_changed && accel.shape_geometry != RTC_INVALID_GEOMETRY_ID)
+  if (changes.shapes_changed && accel.shape_geometry != RTC_INVALID_GEOMETRY_ID) {
     rtcCommitGeometry(rtcGetGeometry(accel.top, accel.shape_geometry));  // its bounds are read again
+    accel.direct_shapes = direct_shapes_of(scene);
+  }
   set_traceable_range(accel);
   rtcCommitScene(accel.top);
   throw_on_device_error();
@@ -444,6 +439,7 @@ HitId intersect_nearest(const SceneAccel& accel, const Ray& ray) {
     count_untraceable(accel);
     return {};
   }
+  if (accel.direct_shapes.enabled) return nearest_shape_directly(accel, ray);
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
@@ -467,6 +463,7 @@ bool is_occluded(const SceneAccel& accel, const Ray& ray) {
     count_untraceable(accel);
     return true;
   }
+  if (accel.direct_shapes.enabled) return shapes_block_directly(accel, ray);
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   rtcOccluded1(accel.top, &context, &r);

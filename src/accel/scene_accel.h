@@ -10,6 +10,7 @@
 #include <memory>
 #include <vector>
 
+#include "accel/direct_shapes.h"
 #include "accel/ray.h"
 #include "materials/surface.h"
 #include "scene/scene_changes.h"
@@ -51,6 +52,8 @@ struct SceneAccel {
   // Rays refused by that bound (a valid scene casts none): taken as misses, or as blocked
   // shadow rays, and reported in the render's statistics.
   mutable std::atomic<uint64_t> untraceable_rays{0};
+  // A few analytic shapes and no meshes: traced without Embree.
+  DirectShapes direct_shapes;
 
   SceneAccel() = default;
   SceneAccel(const SceneAccel&) = delete;
