@@ -1,6 +1,7 @@
 // The Embree acceleration structure of a SceneDesc: a mesh placed once, whose world-space
 // vertices are exact floats, sits on the top level (a flat BVH, Embree's fastest); any other
-// mesh is one RTCScene shared by its instances; the analytic shapes are one user geometry.
+// mesh is one RTCScene shared by its instances; the analytic shapes are one user geometry. A
+// scene of a few shapes and no meshes is traced without Embree (accel/direct_shapes.h).
 #pragma once
 
 #include <embree3/rtcore.h>
