@@ -1,5 +1,6 @@
 // Analytic shapes under hard rays: tangent, lying in or parallel to a plane, from inside, and
-// spheres 1e-6 and 1e6 in radius; directly (intersect_shape) and through Embree (intersect_nearest).
+// spheres 1e-6 and 1e6 in radius; directly (intersect_shape) and through intersect_nearest, both with
+// Embree and with the few shapes traced directly.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -131,31 +132,36 @@ TEST_CASE("shapes: a sphere of radius 1e6 behaves like the ground near its top, 
   CHECK_FALSE(intersect_shape(s, {{-10, 1e-3f, 0}, {1, 0, 0}}, 0, hit));
 }
 
-TEST_CASE("shapes: through Embree, tangent, in-plane and inside rays give the same answers as intersect_shape") {
+TEST_CASE("shapes: through Embree and traced directly, tangent, in-plane and inside rays give the same answers as intersect_shape") {
   SceneDesc scene;
   int m = add_diffuse(scene, {0.5f, 0.5f, 0.5f});
   add_sphere(scene, {1e5f, 0, 0}, 1, m);
   add_plane(scene, {0, -2, 0}, {0, 1, 0}, m);
   add_sphere(scene, {0, 0, 0}, 1e-6f, m);
   auto accel = build_scene_accel(scene);
-  // Lying in the plane y = -2 (the spheres are far above it): no hit at all.
-  CHECK_FALSE(intersect_nearest(*accel, {{0, -2, 5}, {1, 0, 0}}).valid());
-  // Tangent one step outside the sphere at 1e5 misses; one step inside hits it.
-  CHECK_FALSE(intersect_nearest(*accel, {{1e5f - 5, just_above_one, 0}, {1, 0, 0}}).valid());
-  HitId tangent = intersect_nearest(*accel, {{1e5f - 5, just_below_one, 0}, {1, 0, 0}});
-  REQUIRE(tangent.valid());
-  CHECK(tangent.shape == 0);
-  CHECK(tangent.t == doctest::Approx(5).epsilon(1e-3));
-  // From inside the sphere at 1e5 along -y: its far side at t = 1, before the plane.
-  HitId inside = intersect_nearest(*accel, {{1e5f, 0, 0}, {0, -1, 0}});
-  REQUIRE(inside.valid());
-  CHECK(inside.shape == 0);
-  CHECK(inside.t == doctest::Approx(1).epsilon(1e-6));
-  // The tiny sphere is found by Embree's traversal despite its 2e-6 bounding box.
-  HitId tiny = intersect_nearest(*accel, {{0, 0, 10}, {0, 0, -1}});
-  REQUIRE(tiny.valid());
-  CHECK(tiny.shape == 2);
-  SurfaceHit surface = make_surface_hit(*accel, {{0, 0, 10}, {0, 0, -1}}, tiny);
-  CHECK(surface.position.z == doctest::Approx(1e-6).epsilon(1e-3));
-  CHECK(surface.geometric_normal.z == doctest::Approx(1).epsilon(1e-6));
+  // A scene this small is traced directly (accel/direct_shapes.h); Embree's callbacks must agree.
+  for (bool direct : {false, true}) {
+    CAPTURE(direct);
+    accel->direct_shapes.enabled = direct;
+    // Lying in the plane y = -2 (the spheres are far above it): no hit at all.
+    CHECK_FALSE(intersect_nearest(*accel, {{0, -2, 5}, {1, 0, 0}}).valid());
+    // Tangent one step outside the sphere at 1e5 misses; one step inside hits it.
+    CHECK_FALSE(intersect_nearest(*accel, {{1e5f - 5, just_above_one, 0}, {1, 0, 0}}).valid());
+    HitId tangent = intersect_nearest(*accel, {{1e5f - 5, just_below_one, 0}, {1, 0, 0}});
+    REQUIRE(tangent.valid());
+    CHECK(tangent.shape == 0);
+    CHECK(tangent.t == doctest::Approx(5).epsilon(1e-3));
+    // From inside the sphere at 1e5 along -y: its far side at t = 1, before the plane.
+    HitId inside = intersect_nearest(*accel, {{1e5f, 0, 0}, {0, -1, 0}});
+    REQUIRE(inside.valid());
+    CHECK(inside.shape == 0);
+    CHECK(inside.t == doctest::Approx(1).epsilon(1e-6));
+    // The tiny sphere is found by Embree's traversal despite its 2e-6 bounding box, and by the cull.
+    HitId tiny = intersect_nearest(*accel, {{0, 0, 10}, {0, 0, -1}});
+    REQUIRE(tiny.valid());
+    CHECK(tiny.shape == 2);
+    SurfaceHit surface = make_surface_hit(*accel, {{0, 0, 10}, {0, 0, -1}}, tiny);
+    CHECK(surface.position.z == doctest::Approx(1e-6).epsilon(1e-3));
+    CHECK(surface.geometric_normal.z == doctest::Approx(1).epsilon(1e-6));
+  }
 }
