@@ -143,7 +143,7 @@ struct PathVariant {
     int medium = -1;  // the absorbing volume the path is inside (a material index), or -1
     int channel = -1;  // the colour channel the path carries after a dispersive surface, or -1
     SurfaceMaterial dispersed;  // the material at the current hit with its channel's IOR
-    for (int transparent_steps = 0; transparent_steps < 256;) {
+    for (int transparent_steps = 0; transparent_steps < max_see_through_steps;) {
       ++*ray_counter;
       HitId id = intersect_nearest(*ctx.accel, ray);
       // Beer-Lambert along the segment just traced inside a volume (a ray escaping one, which a

@@ -18,6 +18,11 @@
 
 namespace radiant {
 
+// The most partly opaque surfaces a path sees through. A stack of alpha-blended cards can be
+// deep, and a see-through step does not count as a bounce: without a bound, Whitted's recursion
+// through them could exhaust the stack. What lies beyond the last step is taken as black.
+constexpr int max_see_through_steps = 256;
+
 struct RayCounts {
   uint64_t camera = 0, shadow = 0, reflection = 0, refraction = 0, indirect = 0;
   uint64_t nonfinite_samples = 0;

@@ -38,7 +38,7 @@ color3 direct_phong(const RenderContext& ctx, const SurfaceHit& hit, const Surfa
 }
 
 template <uint32_t E>
-color3 trace(const RenderContext& ctx, const Ray& ray, int depth, color3 weight, RayKind kind,
+color3 trace(const RenderContext& ctx, const Ray& ray, int depth, int see_through, color3 weight, RayKind kind,
              float footprint_scale, RayCounts& counts, FirstHit* first_hit) {
   switch (kind) {
     case RayKind::camera: counts.camera++; break;
@@ -74,8 +74,8 @@ color3 trace(const RenderContext& ctx, const Ray& ray, int depth, color3 weight,
       if (refract(f.wo, f.normal, eta, transmitted)) {
         color3 w = weight * m.kt;
         if (max_component(w) >= ctx.contribution_cutoff)
-          radiance += m.kt * trace<E>(ctx, spawn_ray(hit, transmitted), depth + 1, w, RayKind::refraction, footprint_scale,
-                                       counts, nullptr);
+          radiance += m.kt * trace<E>(ctx, spawn_ray(hit, transmitted), depth + 1, see_through, w, RayKind::refraction,
+                                       footprint_scale, counts, nullptr);
       } else {
         reflected_weight += m.kt;  // total internal reflection: the transmitted share reflects
       }
@@ -83,14 +83,16 @@ color3 trace(const RenderContext& ctx, const Ray& ray, int depth, color3 weight,
   }
   color3 w = weight * reflected_weight;
   if (!is_black(reflected_weight) && max_component(w) >= ctx.contribution_cutoff)
-    radiance += reflected_weight * trace<E>(ctx, spawn_ray(hit, reflect(f.wo, f.normal)), depth + 1, w,
+    radiance += reflected_weight * trace<E>(ctx, spawn_ray(hit, reflect(f.wo, f.normal)), depth + 1, see_through, w,
                                             RayKind::reflection, footprint_scale, counts, nullptr);
   if (enabled<E>(ctx.effects, effect_alpha)) {
     if (m.opacity < 1) {
-      Ray through = spawn_ray(hit, ray.direction);
       FirstHit behind;  // only its coverage is kept: the AOVs are the first surface's
-      radiance = radiance * m.opacity + (1 - m.opacity) * trace<E>(ctx, through, depth, weight * (1 - m.opacity), kind,
-                                                                   footprint_scale, counts, first_hit ? &behind : nullptr);
+      color3 beyond;    // black past the last see-through step
+      if (see_through + 1 < max_see_through_steps)
+        beyond = trace<E>(ctx, spawn_ray(hit, ray.direction), depth, see_through + 1, weight * (1 - m.opacity), kind,
+                          footprint_scale, counts, first_hit ? &behind : nullptr);
+      radiance = radiance * m.opacity + (1 - m.opacity) * beyond;
       if (first_hit) first_hit->coverage = m.opacity + (1 - m.opacity) * behind.coverage;
     }
   }
@@ -101,7 +103,7 @@ template <uint32_t E>
 struct WhittedVariant {
   static color3 run(const RenderContext& ctx, const Ray& ray, const SampleContext& sample, RayCounts& counts,
                     FirstHit* first_hit) {
-    return trace<E>(ctx, ray, 0, {1, 1, 1}, RayKind::camera, texture_footprint_scale(sample.index), counts, first_hit);
+    return trace<E>(ctx, ray, 0, 0, {1, 1, 1}, RayKind::camera, texture_footprint_scale(sample.index), counts, first_hit);
   }
 };
 

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "integrators/render_context.h"
 #include "support/scene_builders.h"
 
 using namespace radiant;
@@ -110,4 +111,34 @@ TEST_CASE("transparent: Whitted's partly opaque surface covers its pixel by its 
   o.transparent = true;
   RenderResult r = render_scene(scene, o);
   for (size_t i = 0; i < r.film.pixels.size(); ++i) CHECK(pixel_alpha(r.film, i) == doctest::Approx(0.25));
+}
+
+TEST_CASE("see-through: both integrators see through at most 256 partly opaque surfaces, then black") {
+  // Whitted recursed once per see-through step with no bound: the OBJ fuzzer's stack of blended
+  // triangles overflowed the stack (tests/fuzz/regressions/obj/crash-whitted-see-through-recursion.obj).
+  for (RenderMode mode : {RenderMode::whitted, RenderMode::path}) {
+    for (int layers : {max_see_through_steps - 1, max_see_through_steps}) {
+      CAPTURE(int(mode));
+      CAPTURE(layers);
+      SceneDesc scene;
+      MaterialDesc veil;  // black and nearly clear: it only lets the white sky through
+      veil.kd = {0, 0, 0};
+      veil.alpha = 1e-6f;
+      veil.alpha_mode = AlphaMode::blend;
+      int m = add_material(scene, veil);
+      for (int i = 0; i < layers; ++i) {
+        float z = -0.01f * float(i);
+        add_quad(scene, {-5, -5, z}, {5, -5, z}, {5, 5, z}, {-5, 5, z}, m);
+      }
+      scene.cameras.push_back(ortho_camera({0, 0, 5}, {0, 0, -1}, {0, 1, 0}, 2));
+      scene.environment.color = {1, 1, 1};
+      RenderOptions o;
+      o.width = 2, o.height = 2, o.spp = 1;
+      o.mode = mode;
+      RenderResult r = render_scene(scene, o);
+      float seen = pixel_mean(r.film.pixels[0]).x;
+      if (layers < max_see_through_steps) CHECK(seen == doctest::Approx(1).epsilon(1e-3));
+      else CHECK(seen < 1e-3f);
+    }
+  }
 }
