@@ -27,44 +27,55 @@ bool solve_quadratic(double a, double b, double c, double& t0, double& t1) {
 
 bool accept(double t, float tmin, float tmax) { return t > tmin && t < tmax; }
 
-bool intersect_sphere(const ShapeDesc& s, const Ray& ray, float tmin, ShapeHit& hit) {
+bool cross_sphere(const ShapeDesc& s, const Ray& ray, float tmin, double& t) {
   dvec3 o = to_double(ray.origin) - to_double(s.center);
   dvec3 d = to_double(ray.direction);
   double r = s.radius;
   // a t^2 + b t + c with c = |o|^2 - r^2 factored to keep precision for rays starting on it.
   double a = dot(d, d), b = 2 * dot(o, d);
-  double c = (std::sqrt(dot(o, o)) - r) * (std::sqrt(dot(o, o)) + r);
+  double distance = std::sqrt(dot(o, o));
+  double c = (distance - r) * (distance + r);
   double t0, t1;
   if (!solve_quadratic(a, b, c, t0, t1)) return false;
-  double t = accept(t0, tmin, ray.tmax) ? t0 : t1;
-  if (!accept(t, tmin, ray.tmax)) return false;
-  dvec3 p = o + d * t;
+  t = accept(t0, tmin, ray.tmax) ? t0 : t1;
+  return accept(t, tmin, ray.tmax);
+}
+
+void complete_sphere(const ShapeDesc& s, const Ray& ray, double t, ShapeHit& hit) {
+  dvec3 p = to_double(ray.origin) - to_double(s.center) + to_double(ray.direction) * t;
   double len = std::sqrt(dot(p, p));
-  hit.t = float(t);
   hit.normal = to_float(p * (1 / len));
   double phi = std::atan2(p.y, p.x);
   hit.uv = {float((phi + M_PI) / (2 * M_PI)), float(std::acos(std::clamp(p.z / len, -1.0, 1.0)) / M_PI)};
-  return true;
 }
 
-bool intersect_plane(const ShapeDesc& s, const Ray& ray, float tmin, ShapeHit& hit) {
+bool cross_plane(const ShapeDesc& s, const Ray& ray, float tmin, double& t) {
   dvec3 n = to_double(s.axis);
   double denominator = dot(to_double(ray.direction), n);
   if (denominator == 0) return false;  // parallel, including a ray lying in the plane
-  double t = dot(to_double(s.center) - to_double(ray.origin), n) / denominator;
-  if (!accept(t, tmin, ray.tmax)) return false;
-  hit.t = float(t);
+  t = dot(to_double(s.center) - to_double(ray.origin), n) / denominator;
+  return accept(t, tmin, ray.tmax);
+}
+
+void complete_plane(const ShapeDesc& s, const Ray& ray, double t, ShapeHit& hit) {
   hit.normal = s.axis;
   vec3 tangent, bitangent;
   orthonormal_basis(s.axis, tangent, bitangent);
   dvec3 p = to_double(ray.origin) + to_double(ray.direction) * t - to_double(s.center);
   hit.uv = {float(dot(p, to_double(tangent))), float(dot(p, to_double(bitangent)))};
-  return true;
+}
+
+// The side of a cylinder or tube at parameter t: the point's height along the axis and its
+// offset from the axis.
+void side_point(const ShapeDesc& s, const Ray& ray, double t, double& height, dvec3& radial) {
+  dvec3 axis = to_double(s.axis);
+  dvec3 p = to_double(ray.origin) - to_double(s.center) + to_double(ray.direction) * t;
+  height = dot(p, axis);
+  radial = p - axis * height;
 }
 
 // Side of a cylinder or tube: the quadratic in the plane orthogonal to the axis.
-bool intersect_side(const ShapeDesc& s, const Ray& ray, float tmin, float tmax, bool capped,
-                    ShapeHit& hit) {
+bool cross_side(const ShapeDesc& s, const Ray& ray, float tmin, float tmax, bool capped, double& t) {
   dvec3 axis = to_double(s.axis);
   dvec3 o = to_double(ray.origin) - to_double(s.center);
   dvec3 d = to_double(ray.direction);
@@ -76,60 +87,97 @@ bool intersect_side(const ShapeDesc& s, const Ray& ray, float tmin, float tmax, 
   double c = (len - r) * (len + r);
   double roots[2];
   if (!solve_quadratic(a, b, c, roots[0], roots[1])) return false;
-  for (double t : roots) {
-    if (!accept(t, tmin, tmax)) continue;
-    dvec3 p = o + d * t;
-    double height = dot(p, axis);
+  for (double root : roots) {
+    if (!accept(root, tmin, tmax)) continue;
+    double height;
+    dvec3 radial;
+    side_point(s, ray, root, height, radial);
     if (capped && (height < 0 || height > s.height)) continue;
-    dvec3 radial = p - axis * height;
-    double radial_length = std::sqrt(dot(radial, radial));
-    if (radial_length == 0) continue;
-    hit.t = float(t);
-    hit.normal = to_float(radial * (1 / radial_length));
-    vec3 tangent, bitangent;
-    orthonormal_basis(s.axis, tangent, bitangent);
-    double phi = std::atan2(dot(radial, to_double(bitangent)), dot(radial, to_double(tangent)));
-    hit.uv = {float((phi + M_PI) / (2 * M_PI)), float(height)};
+    if (dot(radial, radial) == 0) continue;  // on the axis: no normal
+    t = root;
     return true;
   }
   return false;
 }
 
-bool intersect_cap(const ShapeDesc& s, const Ray& ray, float tmin, float tmax, bool top, ShapeHit& hit) {
+void complete_side(const ShapeDesc& s, const Ray& ray, double t, ShapeHit& hit) {
+  double height;
+  dvec3 radial;
+  side_point(s, ray, t, height, radial);
+  hit.normal = to_float(radial * (1 / std::sqrt(dot(radial, radial))));
+  vec3 tangent, bitangent;
+  orthonormal_basis(s.axis, tangent, bitangent);
+  double phi = std::atan2(dot(radial, to_double(bitangent)), dot(radial, to_double(tangent)));
+  hit.uv = {float((phi + M_PI) / (2 * M_PI)), float(height)};
+}
+
+dvec3 cap_center(const ShapeDesc& s, bool top) {
+  return to_double(s.center) + to_double(s.axis) * (top ? double(s.height) : 0.0);
+}
+
+bool cross_cap(const ShapeDesc& s, const Ray& ray, float tmin, float tmax, bool top, double& t) {
   dvec3 axis = to_double(s.axis);
-  dvec3 center = to_double(s.center) + axis * (top ? double(s.height) : 0.0);
+  dvec3 center = cap_center(s, top);
   double denominator = dot(to_double(ray.direction), axis);
   if (denominator == 0) return false;
-  double t = dot(center - to_double(ray.origin), axis) / denominator;
-  if (!accept(t, tmin, tmax)) return false;
-  dvec3 p = to_double(ray.origin) + to_double(ray.direction) * t - center;
+  double candidate = dot(center - to_double(ray.origin), axis) / denominator;
+  if (!accept(candidate, tmin, tmax)) return false;
+  dvec3 p = to_double(ray.origin) + to_double(ray.direction) * candidate - center;
   if (dot(p, p) > double(s.radius) * s.radius) return false;
-  hit.t = float(t);
-  hit.normal = top ? s.axis : -s.axis;
-  hit.uv = {float(p.x / s.radius), float(p.y / s.radius)};
+  t = candidate;
   return true;
 }
 
-bool intersect_cylinder(const ShapeDesc& s, const Ray& ray, float tmin, ShapeHit& hit) {
+void complete_cap(const ShapeDesc& s, const Ray& ray, double t, bool top, ShapeHit& hit) {
+  dvec3 p = to_double(ray.origin) + to_double(ray.direction) * t - cap_center(s, top);
+  hit.normal = top ? s.axis : -s.axis;
+  hit.uv = {float(p.x / s.radius), float(p.y / s.radius)};
+}
+
+// The nearest of the side and the two caps; each later part must be nearer than the one found.
+bool cross_cylinder(const ShapeDesc& s, const Ray& ray, float tmin, ShapeCrossing& crossing) {
   bool found = false;
   float tmax = ray.tmax;
-  ShapeHit candidate;
-  if (intersect_side(s, ray, tmin, tmax, true, candidate)) found = true, hit = candidate, tmax = candidate.t;
-  if (intersect_cap(s, ray, tmin, tmax, false, candidate)) found = true, hit = candidate, tmax = candidate.t;
-  if (intersect_cap(s, ray, tmin, tmax, true, candidate)) found = true, hit = candidate;
+  double t;
+  if (cross_side(s, ray, tmin, tmax, true, t)) found = true, crossing = {t, ShapePart::side}, tmax = float(t);
+  if (cross_cap(s, ray, tmin, tmax, false, t)) found = true, crossing = {t, ShapePart::bottom_cap}, tmax = float(t);
+  if (cross_cap(s, ray, tmin, tmax, true, t)) found = true, crossing = {t, ShapePart::top_cap};
   return found;
 }
 
 }  // namespace
 
-bool intersect_shape(const ShapeDesc& shape, const Ray& ray, float tmin, ShapeHit& hit) {
+bool cross_shape(const ShapeDesc& shape, const Ray& ray, float tmin, ShapeCrossing& crossing) {
+  crossing.part = ShapePart::side;
   switch (shape.kind) {
-    case ShapeKind::sphere: return intersect_sphere(shape, ray, tmin, hit);
-    case ShapeKind::plane: return intersect_plane(shape, ray, tmin, hit);
-    case ShapeKind::cylinder: return intersect_cylinder(shape, ray, tmin, hit);
-    case ShapeKind::tube: return intersect_side(shape, ray, tmin, ray.tmax, false, hit);
+    case ShapeKind::sphere: return cross_sphere(shape, ray, tmin, crossing.t);
+    case ShapeKind::plane: return cross_plane(shape, ray, tmin, crossing.t);
+    case ShapeKind::cylinder: return cross_cylinder(shape, ray, tmin, crossing);
+    case ShapeKind::tube: return cross_side(shape, ray, tmin, ray.tmax, false, crossing.t);
   }
   return false;
+}
+
+ShapeHit complete_shape_hit(const ShapeDesc& shape, const Ray& ray, const ShapeCrossing& crossing) {
+  ShapeHit hit;
+  hit.t = float(crossing.t);
+  switch (shape.kind) {
+    case ShapeKind::sphere: complete_sphere(shape, ray, crossing.t, hit); break;
+    case ShapeKind::plane: complete_plane(shape, ray, crossing.t, hit); break;
+    case ShapeKind::cylinder:
+    case ShapeKind::tube:
+      if (crossing.part == ShapePart::side) complete_side(shape, ray, crossing.t, hit);
+      else complete_cap(shape, ray, crossing.t, crossing.part == ShapePart::top_cap, hit);
+      break;
+  }
+  return hit;
+}
+
+bool intersect_shape(const ShapeDesc& shape, const Ray& ray, float tmin, ShapeHit& hit) {
+  ShapeCrossing crossing;
+  if (!cross_shape(shape, ray, tmin, crossing)) return false;
+  hit = complete_shape_hit(shape, ray, crossing);
+  return true;
 }
 
 void shape_bounds(const ShapeDesc& s, float infinite_extent, vec3& lower, vec3& upper) {

@@ -87,8 +87,8 @@ DirectShapes direct_shapes_of(const SceneDesc& scene) {
   return direct;
 }
 
-bool shape_hit_in_range(float max_ray_coordinate, const Ray& ray, const ShapeHit& hit) {
-  vec3 p = ray.origin + ray.direction * hit.t;
+bool shape_hit_in_range(float max_ray_coordinate, const Ray& ray, double t) {
+  vec3 p = ray.origin + ray.direction * float(t);
   float bound = 0.5f * max_ray_coordinate;
   return std::abs(p.x) <= bound && std::abs(p.y) <= bound && std::abs(p.z) <= bound;
 }
@@ -96,29 +96,37 @@ bool shape_hit_in_range(float max_ray_coordinate, const Ray& ray, const ShapeHit
 HitId nearest_shape_directly(const SceneAccel& accel, const Ray& ray) {
   const std::vector<ShapeDesc>& shapes = accel.scene->shapes;
   // Its tmax shrinks to each nearer hit, as Embree's tfar does; spheres are culled against the
-  // whole ray, since a nearer hit is found only later.
+  // whole ray, since a nearer hit is found only later. Only the nearest gets its normal and uv.
   Ray remaining = ray;
-  HitId id;
+  ShapeCrossing nearest;
+  int nearest_shape = -1;
   for_each_candidate(accel.direct_shapes, ray, [&](int i) {
-    ShapeHit hit;
-    if (!intersect_shape(shapes[size_t(i)], remaining, 0, hit) || !shape_hit_in_range(accel.max_ray_coordinate, ray, hit))
+    ShapeCrossing crossing;
+    if (!cross_shape(shapes[size_t(i)], remaining, 0, crossing) ||
+        !shape_hit_in_range(accel.max_ray_coordinate, ray, crossing.t))
       return false;
-    remaining.tmax = hit.t;
-    id.shape = i;
-    id.primitive = uint32_t(i);
-    id.t = hit.t;
-    id.barycentric = hit.uv;
-    id.geometric_normal_raw = hit.normal;
+    remaining.tmax = float(crossing.t);
+    nearest = crossing;
+    nearest_shape = i;
     return false;
   });
+  HitId id;
+  if (nearest_shape < 0) return id;
+  ShapeHit hit = complete_shape_hit(shapes[size_t(nearest_shape)], ray, nearest);
+  id.shape = nearest_shape;
+  id.primitive = uint32_t(nearest_shape);
+  id.t = hit.t;
+  id.barycentric = hit.uv;
+  id.geometric_normal_raw = hit.normal;
   return id;
 }
 
 bool shapes_block_directly(const SceneAccel& accel, const Ray& ray) {
   const std::vector<ShapeDesc>& shapes = accel.scene->shapes;
   return for_each_candidate(accel.direct_shapes, ray, [&](int i) {
-    ShapeHit hit;
-    return intersect_shape(shapes[size_t(i)], ray, 0, hit) && shape_hit_in_range(accel.max_ray_coordinate, ray, hit);
+    ShapeCrossing crossing;
+    return cross_shape(shapes[size_t(i)], ray, 0, crossing) &&
+           shape_hit_in_range(accel.max_ray_coordinate, ray, crossing.t);
   });
 }
 

@@ -36,10 +36,10 @@ struct DirectShapes {
 // The direct tracing of `scene`'s shapes; disabled when it has meshes or more shapes than the limit.
 DirectShapes direct_shapes_of(const SceneDesc& scene);
 
-// A shape hit well inside the traceable range (SceneAccel::max_ray_coordinate): rays spawned
+// A shape hit (at t) well inside the traceable range (SceneAccel::max_ray_coordinate): rays spawned
 // there, offset origins and shadow rays to any light included, stay traceable. Only infinite
 // planes and tubes can be hit beyond it, so this cuts them off at a distance no view resolves.
-bool shape_hit_in_range(float max_ray_coordinate, const Ray& ray, const ShapeHit& hit);
+bool shape_hit_in_range(float max_ray_coordinate, const Ray& ray, double t);
 
 // The nearest shape hit with t in (0, ray.tmax), as intersect_nearest reports it.
 HitId nearest_shape_directly(const SceneAccel& accel, const Ray& ray);

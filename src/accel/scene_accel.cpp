@@ -95,11 +95,12 @@ void shape_intersect_callback(const RTCIntersectFunctionNArguments* args) {
   if (!args->valid[0]) return;
   const SceneAccel& accel = accel_of(args->geometryUserPtr);
   auto* rayhit = reinterpret_cast<RTCRayHit*>(args->rayhit);
-  ShapeHit hit;
+  const ShapeDesc& shape = accel.scene->shapes[args->primID];
   Ray ray = ray_from_embree(rayhit->ray);
-  if (!intersect_shape(accel.scene->shapes[args->primID], ray, rayhit->ray.tnear, hit) ||
-      !shape_hit_in_range(accel.max_ray_coordinate, ray, hit))
+  ShapeCrossing crossing;
+  if (!cross_shape(shape, ray, rayhit->ray.tnear, crossing) || !shape_hit_in_range(accel.max_ray_coordinate, ray, crossing.t))
     return;
+  ShapeHit hit = complete_shape_hit(shape, ray, crossing);
   rayhit->ray.tfar = hit.t;
   rayhit->hit.geomID = args->geomID;
   rayhit->hit.primID = args->primID;
@@ -115,9 +116,10 @@ void shape_occluded_callback(const RTCOccludedFunctionNArguments* args) {
   if (!args->valid[0]) return;
   const SceneAccel& accel = accel_of(args->geometryUserPtr);
   auto* ray = reinterpret_cast<RTCRay*>(args->ray);
-  ShapeHit hit;
   Ray traced = ray_from_embree(*ray);
-  if (intersect_shape(accel.scene->shapes[args->primID], traced, ray->tnear, hit) && shape_hit_in_range(accel.max_ray_coordinate, traced, hit))
+  ShapeCrossing crossing;
+  if (cross_shape(accel.scene->shapes[args->primID], traced, ray->tnear, crossing) &&
+      shape_hit_in_range(accel.max_ray_coordinate, traced, crossing.t))
     ray->tfar = -std::numeric_limits<float>::infinity();
 }
 
