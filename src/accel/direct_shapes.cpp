@@ -1,6 +1,7 @@
 #include "accel/direct_shapes.h"
 
 #include <cmath>
+#include <utility>
 
 #include "accel/scene_accel.h"
 
@@ -19,44 +20,61 @@ int lane_mask(int4 lanes) {
 #endif
 }
 
-// The lanes of a group of four spheres that the ray's segment (0, tmax) may hit: not those
-// whose centre lies farther from its line than the radius, nor those wholly behind the origin
-// or beyond tmax. Decided in float with a margin of 1e-4 of the distances involved, a thousand
-// times float's rounding, so a sphere the exact test (in double) would hit is never culled; NaN
-// and overflow cull nothing. Most tests in a scene of a few spheres are misses, and this spares
-// them the double-precision quadratic.
-int spheres_maybe_hit(const DirectShapes::SphereGroup& group, const Ray& ray) {
-  float4 tx = group.x - ray.origin.x, ty = group.y - ray.origin.y, tz = group.z - ray.origin.z;
+// The spheres that the ray's segment (0, tmax) may hit, as a mask of sphere slots (four per
+// group, bit 4 * group + lane): not those whose centre lies farther from its line than the
+// radius, nor those wholly behind the origin or beyond tmax. Decided in float with a margin of
+// 1e-4 of the distances involved, a thousand times float's rounding, so a sphere the exact test
+// (in double) would hit is never culled; NaN and overflow cull nothing. Most tests in a scene of
+// a few spheres are misses, and this spares them the double-precision quadratic. The ray's own
+// terms are set up once for all groups.
+uint32_t spheres_maybe_hit(const std::vector<DirectShapes::SphereGroup>& groups, const Ray& ray) {
+  const float4 ox = ray.origin.x - float4{}, oy = ray.origin.y - float4{}, oz = ray.origin.z - float4{};
+  const float4 dx = ray.direction.x - float4{}, dy = ray.direction.y - float4{}, dz = ray.direction.z - float4{};
+  const float dd = dot(ray.direction, ray.direction);
+  const float tmax_dd = ray.tmax * dd;
   const int4 magnitude = {0x7fffffff, 0x7fffffff, 0x7fffffff, 0x7fffffff};
-  float4 ax = (float4)((int4)tx & magnitude), ay = (float4)((int4)ty & magnitude), az = (float4)((int4)tz & magnitude);
-  float4 largest = ax > ay ? ax : ay;
-  largest = largest > az ? largest : az;
-  // The margin takes the centre's distance as three times its largest offset: above it, without a root.
-  float4 reach = group.radius + 1e-4f * (largest * 3 + group.radius);
-  vec3 d = ray.direction;
-  float dd = dot(d, d);
-  float4 reach2_dd = reach * reach * dd;
-  // |d| times the line's distance from the centre, and times the centre's distance along the ray.
-  float4 cx = ty * d.z - tz * d.y, cy = tz * d.x - tx * d.z, cz = tx * d.y - ty * d.x;
-  float4 off_line2 = cx * cx + cy * cy + cz * cz;
-  float4 along = tx * d.x + ty * d.y + tz * d.z, beyond = along - ray.tmax * dd;
-  int4 culled = (off_line2 > reach2_dd) | ((along < 0) & (along * along > reach2_dd)) |
-                ((beyond > 0) & (beyond * beyond > reach2_dd));
-  return ~lane_mask(culled) & 0xF;
+  uint32_t candidates = 0;
+  for (size_t g = 0; g < groups.size(); ++g) {
+    const DirectShapes::SphereGroup& group = groups[g];
+    float4 tx = group.x - ox, ty = group.y - oy, tz = group.z - oz;
+    float4 ax = (float4)((int4)tx & magnitude), ay = (float4)((int4)ty & magnitude), az = (float4)((int4)tz & magnitude);
+    float4 largest = ax > ay ? ax : ay;
+    largest = largest > az ? largest : az;
+    // The margin takes the centre's distance as three times its largest offset: above it, without a root.
+    float4 reach = group.radius + 1e-4f * (largest * 3 + group.radius);
+    float4 reach2_dd = reach * reach * dd;
+    // |d| times the line's distance from the centre, and times the centre's distance along the ray.
+    float4 cx = ty * dz - tz * dy, cy = tz * dx - tx * dz, cz = tx * dy - ty * dx;
+    float4 off_line2 = cx * cx + cy * cy + cz * cz;
+    float4 along = tx * dx + ty * dy + tz * dz, beyond = along - tmax_dd;
+    int4 culled = (off_line2 > reach2_dd) | ((along < 0) & (along * along > reach2_dd)) |
+                  ((beyond > 0) & (beyond * beyond > reach2_dd));
+    candidates |= uint32_t(~lane_mask(culled) & group.lanes) << (4 * g);
+  }
+  return candidates;
 }
 
 // Calls visit(shape index) for every shape the ray may hit, spheres culled; stops when it
 // returns true.
 template <typename Visit>
 bool for_each_candidate(const DirectShapes& direct, const Ray& ray, Visit visit) {
-  for (const DirectShapes::SphereGroup& group : direct.spheres)
-    for (int lanes = spheres_maybe_hit(group, ray); lanes; lanes &= lanes - 1) {
-      int shape = group.shape[__builtin_ctz(unsigned(lanes))];
-      if (shape >= 0 && visit(shape)) return true;
-    }
+  for (uint32_t slots = spheres_maybe_hit(direct.spheres, ray); slots; slots &= slots - 1) {
+    unsigned slot = unsigned(__builtin_ctz(slots));
+    if (visit(direct.spheres[slot / 4].shape[slot % 4])) return true;
+  }
   for (int shape : direct.others)
     if (visit(shape)) return true;
   return false;
+}
+
+// The first free lane of the last group, a new group when it is full. Lanes no sphere fills are
+// all zeros and are never visited (`lanes` leaves them out).
+std::pair<DirectShapes::SphereGroup&, int> next_lane(std::vector<DirectShapes::SphereGroup>& groups) {
+  if (groups.empty() || groups.back().lanes == 0xF) groups.emplace_back();
+  DirectShapes::SphereGroup& group = groups.back();
+  int lane = __builtin_ctz(unsigned(~group.lanes));
+  group.lanes |= 1 << lane;
+  return {group, lane};
 }
 
 }  // namespace
@@ -67,22 +85,14 @@ DirectShapes direct_shapes_of(const SceneDesc& scene) {
   if (!direct.enabled) return direct;
   for (size_t i = 0; i < scene.shapes.size(); ++i) {
     const ShapeDesc& shape = scene.shapes[i];
-    if (shape.kind != ShapeKind::sphere) {
+    if (shape.kind == ShapeKind::sphere) {
+      auto [group, lane] = next_lane(direct.spheres);
+      group.x[lane] = shape.center.x, group.y[lane] = shape.center.y, group.z[lane] = shape.center.z;
+      group.radius[lane] = shape.radius;
+      group.shape[lane] = int(i);
+    } else {
       direct.others.push_back(int(i));
-      continue;
     }
-    // The padding of a group is a sphere of radius 0 at the origin that no lane ever visits.
-    if (direct.spheres.empty() || direct.spheres.back().shape[3] >= 0) {
-      DirectShapes::SphereGroup padding = {};
-      for (int& lane : padding.shape) lane = -1;
-      direct.spheres.push_back(padding);
-    }
-    DirectShapes::SphereGroup& group = direct.spheres.back();
-    int lane = 0;
-    while (group.shape[lane] >= 0) ++lane;
-    group.x[lane] = shape.center.x, group.y[lane] = shape.center.y, group.z[lane] = shape.center.z;
-    group.radius[lane] = shape.radius;
-    group.shape[lane] = int(i);
   }
   return direct;
 }

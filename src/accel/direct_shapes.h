@@ -26,7 +26,8 @@ struct DirectShapes {
   using float4 = float __attribute__((vector_size(16)));
   struct SphereGroup {
     float4 x, y, z, radius;
-    int shape[4];  // -1 for the padding of the last group
+    int shape[4];   // the index of each lane's shape in SceneDesc::shapes
+    int lanes = 0;  // bit k set when lane k holds a sphere (the last group may have empty lanes)
   };
   bool enabled = false;
   std::vector<SphereGroup> spheres;
