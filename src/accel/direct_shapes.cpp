@@ -32,16 +32,14 @@ uint32_t spheres_maybe_hit(const std::vector<DirectShapes::SphereGroup>& groups,
   const float4 dx = ray.direction.x - float4{}, dy = ray.direction.y - float4{}, dz = ray.direction.z - float4{};
   const float dd = dot(ray.direction, ray.direction);
   const float tmax_dd = ray.tmax * dd;
-  const int4 magnitude = {0x7fffffff, 0x7fffffff, 0x7fffffff, 0x7fffffff};
+  // The margin bounds the distance from origin to centre by 3 (|origin|max + |centre|max), which
+  // splits into a part of the ray's and one the group keeps (SphereGroup::reach).
+  const float origin_margin = 3e-4f * max_component(abs(ray.origin));
   uint32_t candidates = 0;
   for (size_t g = 0; g < groups.size(); ++g) {
     const DirectShapes::SphereGroup& group = groups[g];
     float4 tx = group.x - ox, ty = group.y - oy, tz = group.z - oz;
-    float4 ax = (float4)((int4)tx & magnitude), ay = (float4)((int4)ty & magnitude), az = (float4)((int4)tz & magnitude);
-    float4 largest = ax > ay ? ax : ay;
-    largest = largest > az ? largest : az;
-    // The margin takes the centre's distance as three times its largest offset: above it, without a root.
-    float4 reach = group.radius + 1e-4f * (largest * 3 + group.radius);
+    float4 reach = group.reach + origin_margin;
     float4 reach2_dd = reach * reach * dd;
     // |d| times the line's distance from the centre, and times the centre's distance along the ray.
     float4 cx = ty * dz - tz * dy, cy = tz * dx - tx * dz, cz = tx * dy - ty * dx;
@@ -88,7 +86,7 @@ DirectShapes direct_shapes_of(const SceneDesc& scene) {
     if (shape.kind == ShapeKind::sphere) {
       auto [group, lane] = next_lane(direct.spheres);
       group.x[lane] = shape.center.x, group.y[lane] = shape.center.y, group.z[lane] = shape.center.z;
-      group.radius[lane] = shape.radius;
+      group.reach[lane] = shape.radius + 1e-4f * (3 * max_component(abs(shape.center)) + shape.radius);
       group.shape[lane] = int(i);
     } else {
       direct.others.push_back(int(i));

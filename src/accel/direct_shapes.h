@@ -25,7 +25,8 @@ constexpr size_t max_shapes_traced_directly = 16;
 struct DirectShapes {
   using float4 = float __attribute__((vector_size(16)));
   struct SphereGroup {
-    float4 x, y, z, radius;
+    float4 x, y, z;
+    float4 reach;   // the radius and the part of the culling margin that depends on the sphere
     int shape[4];   // the index of each lane's shape in SceneDesc::shapes
     int lanes = 0;  // bit k set when lane k holds a sphere (the last group may have empty lanes)
   };
