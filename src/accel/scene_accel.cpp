@@ -50,6 +50,20 @@ bool store_embree_ray(RTCRay& embree_ray, const Ray& ray, const SceneAccel& acce
   return all_within && ray.tmax >= 0;
 }
 
+// What intersect_nearest reports of Embree's answer for one ray.
+HitId hit_of(const SceneAccel& accel, const RTCRayHit& rayhit) {
+  HitId id;
+  if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return id;
+  if (rayhit.hit.instID[0] != RTC_INVALID_GEOMETRY_ID) id.instance = int(rayhit.hit.instID[0]);
+  else if (rayhit.hit.geomID == accel.shape_geometry) id.shape = int(rayhit.hit.primID);
+  else id.instance = int(rayhit.hit.geomID);  // a mesh placed in world space on the top level
+  id.primitive = rayhit.hit.primID;
+  id.t = rayhit.ray.tfar;
+  id.barycentric = {rayhit.hit.u, rayhit.hit.v};
+  id.geometric_normal_raw = {rayhit.hit.Ng_x, rayhit.hit.Ng_y, rayhit.hit.Ng_z};
+  return id;
+}
+
 // Counts a ray refused by store_embree_ray (rare: no valid scene casts one).
 void count_untraceable(const SceneAccel& accel) { accel.untraceable_rays.fetch_add(1, std::memory_order_relaxed); }
 
@@ -199,6 +213,7 @@ RTCGeometry new_triangle_geometry(SceneAccel& accel, int mesh_index, const std::
       geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), mesh.triangle_count()));
   std::copy(mesh.indices.begin(), mesh.indices.begin() + 3 * mesh.triangle_count(), indices);
   if (mesh.material >= 0 && accel.scene->materials[mesh.material].alpha_mode == AlphaMode::mask) {
+    accel.calls_back = true;
     rtcSetGeometryUserData(geometry, &accel.alpha_masks[mesh_index]);
     rtcSetGeometryIntersectFilterFunction(geometry, alpha_mask_filter);
     rtcSetGeometryOccludedFilterFunction(geometry, alpha_mask_filter);
@@ -349,6 +364,7 @@ void attach_shapes(SceneAccel& accel) {
   rtcSetGeometryBoundsFunction(geometry, shape_bounds_callback, nullptr);
   rtcSetGeometryIntersectFunction(geometry, shape_intersect_callback);
   rtcSetGeometryOccludedFunction(geometry, shape_occluded_callback);
+  accel.calls_back = true;
   rtcCommitGeometry(geometry);
   accel.shape_geometry = unsigned(accel.scene->instances.size());
   rtcAttachGeometryByID(accel.top, geometry, accel.shape_geometry);
@@ -447,16 +463,39 @@ HitId intersect_nearest(const SceneAccel& accel, const Ray& ray) {
   rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(accel.top, &context, &rayhit);
-  HitId id;
-  if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return id;
-  if (rayhit.hit.instID[0] != RTC_INVALID_GEOMETRY_ID) id.instance = int(rayhit.hit.instID[0]);
-  else if (rayhit.hit.geomID == accel.shape_geometry) id.shape = int(rayhit.hit.primID);
-  else id.instance = int(rayhit.hit.geomID);  // a mesh placed in world space on the top level
-  id.primitive = rayhit.hit.primID;
-  id.t = rayhit.ray.tfar;
-  id.barycentric = {rayhit.hit.u, rayhit.hit.v};
-  id.geometric_normal_raw = {rayhit.hit.Ng_x, rayhit.hit.Ng_y, rayhit.hit.Ng_z};
-  return id;
+  return hit_of(accel, rayhit);
+}
+
+bool traces_packets(const SceneAccel& accel) { return !accel.direct_shapes.enabled && !accel.calls_back; }
+
+void intersect_nearest_coherent(const SceneAccel& accel, const Ray* rays, int count, HitId* hits) {
+  if (!traces_packets(accel)) {
+    for (int i = 0; i < count; ++i) hits[i] = intersect_nearest(accel, rays[i]);
+    return;
+  }
+  // A tile's rays at a time, in one stream: Embree groups them into packets itself.
+  constexpr int stream_length = 64;
+  RTCRayHit stream[stream_length];
+  int traced[stream_length];  // which ray each stream entry is
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  for (int begin = 0; begin < count; begin += stream_length) {
+    int end = std::min(count, begin + stream_length), length = 0;
+    for (int i = begin; i < end; ++i) {
+      hits[i] = {};
+      RTCRayHit& entry = stream[length];
+      if (!store_embree_ray(entry.ray, rays[i], accel)) [[unlikely]] {
+        count_untraceable(accel);
+        continue;
+      }
+      entry.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+      entry.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+      traced[length++] = i;
+    }
+    rtcIntersect1M(accel.top, &context, stream, unsigned(length), sizeof(RTCRayHit));
+    for (int k = 0; k < length; ++k) hits[traced[k]] = hit_of(accel, stream[k]);
+  }
 }
 
 bool is_occluded(const SceneAccel& accel, const Ray& ray) {

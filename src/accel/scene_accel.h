@@ -55,6 +55,10 @@ struct SceneAccel {
   mutable std::atomic<uint64_t> untraceable_rays{0};
   // A few analytic shapes and no meshes: traced without Embree.
   DirectShapes direct_shapes;
+  // Some geometry calls back into radiant while Embree traverses it (analytic shapes, alpha-mask
+  // filters). The callbacks take one ray at a time, so such an accelerator never traces packets;
+  // set when one is attached and kept until the next build.
+  bool calls_back = false;
 
   SceneAccel() = default;
   SceneAccel(const SceneAccel&) = delete;
@@ -82,6 +86,12 @@ void update_scene_accel(SceneAccel& accel, const SceneChanges& changes);
 
 // Nearest hit along the ray (from t = 0 to ray.tmax); none for an untraceable ray.
 HitId intersect_nearest(const SceneAccel& accel, const Ray& ray);
+// Whether intersect_nearest_coherent traces packets here (otherwise it traces ray by ray).
+bool traces_packets(const SceneAccel& accel);
+// The nearest hits of `count` rays that mostly travel together (a tile's camera rays): Embree
+// traces them as packets, which costs less per ray than one at a time when they are coherent.
+// Each hit is the one intersect_nearest gives for its ray.
+void intersect_nearest_coherent(const SceneAccel& accel, const Ray* rays, int count, HitId* hits);
 // True when anything blocks the ray before ray.tmax, or when the ray is untraceable.
 bool is_occluded(const SceneAccel& accel, const Ray& ray);
 

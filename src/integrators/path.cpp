@@ -130,7 +130,7 @@ color3 sample_one_light(const RenderContext& ctx, const SurfaceHit& hit, const B
 template <uint32_t E, bool LightSampling>
 struct PathVariant {
   static color3 run(const RenderContext& ctx, const Ray& camera_ray, const SampleContext& sample, RayCounts& counts,
-                    FirstHit* first_hit) {
+                    FirstHit* first_hit, const HitId* camera_hit) {
     const LightTable& lights = *ctx.lights;
     color3 radiance, throughput = {1, 1, 1};
     Ray ray = camera_ray;
@@ -145,7 +145,8 @@ struct PathVariant {
     SurfaceMaterial dispersed;  // the material at the current hit with its channel's IOR
     for (int transparent_steps = 0; transparent_steps < max_see_through_steps;) {
       ++*ray_counter;
-      HitId id = intersect_nearest(*ctx.accel, ray);
+      HitId id = camera_hit ? *camera_hit : intersect_nearest(*ctx.accel, ray);
+      camera_hit = nullptr;  // only the camera ray was traced beforehand
       // Beer-Lambert along the segment just traced inside a volume (a ray escaping one, which a
       // closed mesh cannot let happen, keeps its light).
       if (enabled<E>(ctx.effects, effect_absorption) && medium >= 0 && id.valid())

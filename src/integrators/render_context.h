@@ -66,8 +66,10 @@ struct RenderContext {
 };
 
 // Radiance along a camera ray for one sample; `first_hit` (optional) receives AOV values.
+// `camera_hit` (optional) is the ray's nearest hit, already traced with its neighbours'
+// (intersect_nearest_coherent); without it the integrator traces the ray itself.
 using RadianceFunction = color3 (*)(const RenderContext& ctx, const Ray& ray, const SampleContext& sample,
-                                    RayCounts& counts, FirstHit* first_hit);
+                                    RayCounts& counts, FirstHit* first_hit, const HitId* camera_hit);
 
 // The material at hit `id`: resolved into `resolved` when textures or normal maps are on (both
 // read texels, filtered over `footprint_scale` times the pixel's footprint there:

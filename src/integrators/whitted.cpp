@@ -39,13 +39,13 @@ color3 direct_phong(const RenderContext& ctx, const SurfaceHit& hit, const Surfa
 
 template <uint32_t E>
 color3 trace(const RenderContext& ctx, const Ray& ray, int depth, int see_through, color3 weight, RayKind kind,
-             float footprint_scale, RayCounts& counts, FirstHit* first_hit) {
+             float footprint_scale, RayCounts& counts, FirstHit* first_hit, const HitId* known_hit = nullptr) {
   switch (kind) {
     case RayKind::camera: counts.camera++; break;
     case RayKind::reflection: counts.reflection++; break;
     case RayKind::refraction: counts.refraction++; break;
   }
-  HitId id = intersect_nearest(*ctx.accel, ray);
+  HitId id = known_hit ? *known_hit : intersect_nearest(*ctx.accel, ray);
   if (!id.valid()) {
     // A camera ray (also one through a partly opaque surface) sees no background when transparent.
     if (kind == RayKind::camera && ctx.transparent_background) return {0, 0, 0};
@@ -102,8 +102,9 @@ color3 trace(const RenderContext& ctx, const Ray& ray, int depth, int see_throug
 template <uint32_t E>
 struct WhittedVariant {
   static color3 run(const RenderContext& ctx, const Ray& ray, const SampleContext& sample, RayCounts& counts,
-                    FirstHit* first_hit) {
-    return trace<E>(ctx, ray, 0, 0, {1, 1, 1}, RayKind::camera, texture_footprint_scale(sample.index), counts, first_hit);
+                    FirstHit* first_hit, const HitId* camera_hit) {
+    return trace<E>(ctx, ray, 0, 0, {1, 1, 1}, RayKind::camera, texture_footprint_scale(sample.index), counts, first_hit,
+                    camera_hit);
   }
 };
 

@@ -106,52 +106,122 @@ struct PassRunner {
   const PixelFilter& filter;
   bool want_aovs;
   bool want_coverage;  // a transparent render
+  bool coherent_camera_rays;
   uint32_t seed;
   Film& film;
   tbb::enumerable_thread_specific<RayCounts>& counts;
   const StopCheck& stop;
   ProgressMeter& progress;
 
+  // The camera ray of sample `sample` at pixel (x, y), and the filter's weight sign; none where
+  // the projection sees nothing (outside a fisheye's circle).
+  std::optional<Ray> camera_ray(int x, int y, const SampleContext& sample, bool& negative) const {
+    // The pixel pair warped by the filter: the box of one pixel keeps it as it is.
+    FilterSample placed = sample_filter(filter, sample_pixel(sample));
+    negative = placed.weight < 0;  // the weight's magnitude is one for the whole filter
+    vec2 lens = frame.lens_radius > 0 ? sample_2d(sample, lens_dimension) : vec2{0.5f, 0.5f};
+    return generate_camera_ray(frame, float(x) + placed.position.x, float(y) + placed.position.y, lens);
+  }
+
+  SampleContext sample_at(int x, int y, uint32_t index) const {
+    return {s.sampler, uint32_t(y) * uint32_t(s.width) + uint32_t(x), index, uint32_t(s.spp), seed};
+  }
+
+  // One sample's radiance (black where there is no ray) added to pixel (x, y) with its AOVs.
+  void add_sample_to_film(int x, int y, const std::optional<Ray>& ray, const SampleContext& sample, bool negative,
+                          const HitId* camera_hit, RayCounts& c) const {
+    FirstHit first_hit;
+    color3 value = ray ? radiance(ctx, *ray, sample, c, want_aovs || want_coverage ? &first_hit : nullptr, camera_hit)
+                       : color3{};
+    if (!is_finite(value) || (want_aovs && !is_finite(first_hit))) {
+      c.nonfinite_samples++;  // dropped, AOVs and all: never reaches the film
+      return;
+    }
+    size_t film_index = size_t(y - s.window.y0) * film.width + (x - s.window.x0);
+    add_sample(film.pixels[film_index], value, negative);
+    if (want_coverage) film.alpha[film_index].add(negative ? -first_hit.coverage : first_hit.coverage);
+    if (want_aovs) {
+      FilmAovs& a = film.aovs[film_index];
+      for (int k = 0; k < 3; ++k) {
+        a.albedo[k].add(first_hit.albedo[k]);
+        a.normal[k].add(first_hit.normal[k]);
+      }
+      a.depth.add(first_hit.depth);
+    }
+  }
+
   void render_pixel(int x, int y, uint32_t first, uint32_t end) const {
-    FilmPixel& p = film.at(x - s.window.x0, y - s.window.y0);
     RayCounts& c = counts.local();
     for (uint32_t index = first; index < end; ++index) {
-      SampleContext sample{s.sampler, uint32_t(y) * uint32_t(s.width) + uint32_t(x), index, uint32_t(s.spp), seed};
-      // The pixel pair warped by the filter: the box of one pixel keeps it as it is.
-      FilterSample placed = sample_filter(filter, sample_pixel(sample));
-      vec2 lens = frame.lens_radius > 0 ? sample_2d(sample, lens_dimension) : vec2{0.5f, 0.5f};
-      std::optional<Ray> ray = generate_camera_ray(frame, float(x) + placed.position.x, float(y) + placed.position.y, lens);
-      FirstHit first_hit;
-      // Where the projection sees nothing (outside a fisheye's circle) the sample is black.
-      color3 value = ray ? radiance(ctx, *ray, sample, c, want_aovs || want_coverage ? &first_hit : nullptr) : color3{};
-      if (!is_finite(value) || (want_aovs && !is_finite(first_hit))) {
-        c.nonfinite_samples++;  // dropped, AOVs and all: never reaches the film
-        continue;
-      }
-      bool negative = placed.weight < 0;  // the weight's magnitude is one for the whole filter
-      add_sample(p, value, negative);
-      size_t film_index = size_t(y - s.window.y0) * film.width + (x - s.window.x0);
-      if (want_coverage) film.alpha[film_index].add(negative ? -first_hit.coverage : first_hit.coverage);
-      if (want_aovs) {
-        FilmAovs& a = film.aovs[film_index];
-        for (int k = 0; k < 3; ++k) {
-          a.albedo[k].add(first_hit.albedo[k]);
-          a.normal[k].add(first_hit.normal[k]);
-        }
-        a.depth.add(first_hit.depth);
-      }
+      SampleContext sample = sample_at(x, y, index);
+      bool negative;
+      std::optional<Ray> ray = camera_ray(x, y, sample, negative);
+      add_sample_to_film(x, y, ray, sample, negative, nullptr, c);
     }
+  }
+
+  bool is_active(const std::vector<uint8_t>& active, int x, int y) const {
+    return active.empty() || active[size_t(y - s.window.y0) * film.width + (x - s.window.x0)];
+  }
+
+  // A tile sample by sample: each sample's camera rays, coherent across the tile, are traced
+  // together as packets before each path goes on alone. Every pixel gets the same samples, in
+  // the same order, as render_pixel gives it, and each its own hit. Returns the pixels rendered.
+  uint64_t render_tile_coherent(const tbb::blocked_range2d<int>& r, uint32_t first, uint32_t end,
+                                const std::vector<uint8_t>& active) const {
+    constexpr int tile_pixels = 64;  // the largest tile run() makes: grain 8 x 8
+    struct Pending {
+      int x, y;
+      bool negative;
+      std::optional<Ray> ray;
+    };
+    Pending pending[tile_pixels];
+    Ray rays[tile_pixels];
+    HitId hits[tile_pixels];
+    int traced_of[tile_pixels];
+    RayCounts& c = counts.local();
+    uint64_t pixels = 0;
+    for (int y0 = r.rows().begin(); y0 < r.rows().end(); y0 += 8)
+      for (int x0 = r.cols().begin(); x0 < r.cols().end(); x0 += 8) {
+        int count = 0;
+        for (int y = y0; y < std::min(y0 + 8, r.rows().end()); ++y)
+          for (int x = x0; x < std::min(x0 + 8, r.cols().end()); ++x)
+            if (is_active(active, x, y)) pending[count++] = {x, y, false, std::nullopt};
+        for (uint32_t index = first; index < end; ++index) {
+          if (stop()) return pixels;
+          int traced = 0;
+          for (int i = 0; i < count; ++i) {
+            Pending& p = pending[i];
+            p.ray = camera_ray(p.x, p.y, sample_at(p.x, p.y, index), p.negative);
+            traced_of[i] = p.ray ? traced : -1;
+            if (p.ray) rays[traced++] = *p.ray;
+          }
+          intersect_nearest_coherent(*ctx.accel, rays, traced, hits);
+          for (int i = 0; i < count; ++i) {
+            const Pending& p = pending[i];
+            add_sample_to_film(p.x, p.y, p.ray, sample_at(p.x, p.y, index), p.negative,
+                               traced_of[i] >= 0 ? &hits[traced_of[i]] : nullptr, c);
+          }
+        }
+        pixels += uint64_t(count);
+      }
+    return pixels;
   }
 
   // Adds samples [first, end) to every pixel still active, until told to stop.
   void run(uint32_t first, uint32_t end, const std::vector<uint8_t>& active) const {
     const PixelWindow& w = s.window;
+    bool coherent = coherent_camera_rays && traces_packets(*ctx.accel);
     tbb::parallel_for(tbb::blocked_range2d<int>(w.y0, w.y1, 8, w.x0, w.x1, 8), [&](const tbb::blocked_range2d<int>& r) {
+      if (coherent) {
+        progress.add(render_tile_coherent(r, first, end, active) * (end - first));
+        return;
+      }
       uint64_t rendered = 0;
       for (int y = r.rows().begin(); y < r.rows().end(); ++y)
         for (int x = r.cols().begin(); x < r.cols().end(); ++x) {
           if (stop()) return;
-          if (active.empty() || active[size_t(y - w.y0) * film.width + (x - w.x0)]) render_pixel(x, y, first, end), ++rendered;
+          if (is_active(active, x, y)) render_pixel(x, y, first, end), ++rendered;
         }
       progress.add(rendered * (end - first));
     });
@@ -266,8 +336,8 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
   ProgressMeter progress(options.progress && !options.quiet, pixels * uint64_t(s.samples.end - s.samples.begin),
                          stop.deadline);
   PixelFilter filter = make_pixel_filter(s.filter, s.filter_radius);
-  PassRunner runner{ctx, s, select_integrator(s), frame, filter, want_aovs, s.transparent, options.seed, result.film, counts, stop,
-                    progress};
+  PassRunner runner{ctx, s, select_integrator(s), frame, filter, want_aovs, s.transparent,
+                    options.coherent_camera_rays, options.seed, result.film, counts, stop, progress};
 
   // More threads than TBB's limit (the cores) are not started anyway, and asking prints a warning.
   int cores = tbb::this_task_arena::max_concurrency();

@@ -91,6 +91,9 @@ struct RenderOptions {
   TextureFilterMode texture_filter = TextureFilterMode::trilinear;
   float noise_threshold = 0;      // 0 = off
   float contribution_cutoff = 0.001f;  // Whitted: stop recursing below this weight
+  // Camera rays traced a tile at a time, as Embree packets (intersect_nearest_coherent); false
+  // traces each alone: the reference the tests compare the packets with (the same image).
+  bool coherent_camera_rays = true;
   bool quiet = false;
   bool progress = false;  // print progress to stderr (the CLI sets it when stderr is a terminal)
   // --max-memory: charged for the film, the output image, the light table and the environment
