@@ -3,7 +3,7 @@
 # geometry and albedos (the tutorial's OBJ/MTL, included by a .scene), same camera, same point
 # light, same resolution, samples and path length. Runs them alternately in one session (the
 # machine is shared and noisy), prints the median wall-time ratio and each one's rays per
-# second (rays counted exactly by an LD_PRELOAD shim around rtcIntersect1/rtcOccluded1), and
+# second (rays counted exactly by an LD_PRELOAD shim around rtcIntersect1/rtcIntersect1M/rtcOccluded1), and
 # the traversal rate of random rays in the render's own mix of closest-hit and occlusion rays
 # through radiant's accelerator, for reference. A third run puts the tutorial on the watertight
 # Embree kernel radiant uses (RTC_SCENE_FLAG_ROBUST; embree_cornell_common.sh), which separates

@@ -1,4 +1,5 @@
-/* Counts the rays a program traces through Embree's single-ray API, for comparing rays per
+/* Counts the rays a program traces through Embree's single-ray and stream APIs (radiant traces
+ * camera rays as streams, rtcIntersect1M), for comparing rays per
  * second between radiant and Embree's own tutorial. Preload it:
  *   RAY_COUNTER_OUT=counts.txt LD_PRELOAD=build/bench/libray_counter.so pathtracer ...
  * At exit it writes "intersect N\noccluded M\n" to $RAY_COUNTER_OUT (or stderr). */
@@ -16,6 +17,14 @@ void rtcIntersect1(RTCScene scene, struct RTCIntersectContext* context, struct R
   if (!real) real = dlsym(RTLD_NEXT, "rtcIntersect1");
   atomic_fetch_add_explicit(&intersect_count, 1, memory_order_relaxed);
   real(scene, context, rayhit);
+}
+
+void rtcIntersect1M(RTCScene scene, struct RTCIntersectContext* context, struct RTCRayHit* rayhit, unsigned int M,
+                    size_t byteStride) {
+  static void (*real)(RTCScene, struct RTCIntersectContext*, struct RTCRayHit*, unsigned int, size_t);
+  if (!real) real = dlsym(RTLD_NEXT, "rtcIntersect1M");
+  atomic_fetch_add_explicit(&intersect_count, M, memory_order_relaxed);
+  real(scene, context, rayhit, M, byteStride);
 }
 
 void rtcOccluded1(RTCScene scene, struct RTCIntersectContext* context, struct RTCRay* ray) {
