@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 namespace radiant {
 
@@ -52,11 +53,17 @@ constexpr vec3 cross(vec3 a, vec3 b) {
 }
 inline float length(vec3 a) { return std::sqrt(dot(a, a)); }
 constexpr float length_squared(vec3 a) { return dot(a, a); }
+vec3 normalize_rescaled(vec3 a);
 // One division and three products: the compiler may not turn a / l into that itself, and three
 // divisions cost more than the rest of a normalization (the result differs by at most an ulp).
+// A vector whose squared length leaves float's normal range (the cross product of a huge
+// triangle's edges overflows it, a tiny one's underflows) is scaled down or up first; the zero
+// vector, infinities and NaN come back unchanged.
 inline vec3 normalize(vec3 a) {
-  float l = length(a);
-  return l > 0 ? a * (1 / l) : a;
+  float l2 = dot(a, a);
+  if (!(l2 >= std::numeric_limits<float>::min() && l2 <= std::numeric_limits<float>::max())) [[unlikely]]
+    return normalize_rescaled(a);
+  return a * (1 / std::sqrt(l2));
 }
 inline vec3 abs(vec3 a) { return {std::abs(a.x), std::abs(a.y), std::abs(a.z)}; }
 inline vec3 exp(vec3 a) { return {std::exp(a.x), std::exp(a.y), std::exp(a.z)}; }
