@@ -66,7 +66,8 @@ struct RenderOptions {
   double time_limit_seconds = 0;  // 0 = none; at most max_time_limit_seconds
   // When set, the time limit ends here (the CLI starts it before loading the scene).
   std::optional<std::chrono::steady_clock::time_point> deadline;
-  // When set and nonzero, the render stops at the next pixel (the CLI's SIGINT/SIGTERM handler).
+  // When set and nonzero, the render stops at the next pixel, or the next sample of a tile traced in
+  // packets (the CLI's SIGINT/SIGTERM handler).
   const std::atomic<int>* stop_request = nullptr;
   // Progressive rendering (`radiant session`): when set, passes grow from one sample per pixel
   // (1, 2, 4, ...) and this is called after each complete pass with the film and the samples
