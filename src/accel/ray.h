@@ -35,8 +35,9 @@ inline float next_float(float v, bool up) {
 
 // Moves `p` off the surface with normal `n` along the side `w` points to, by the projection of
 // the per-axis error bound `error` onto the normal, then one more ulp away from the surface:
-// the spawned ray cannot re-hit the surface it leaves, wherever that surface is.
-inline vec3 offset_ray_origin(vec3 p, vec3 error, vec3 n, vec3 w) {
+// the spawned ray cannot re-hit the surface it leaves, wherever that surface is. Always inlined:
+// called, it takes four vec3 by value, and their packing stalls on store forwarding.
+[[gnu::always_inline]] inline vec3 offset_ray_origin(vec3 p, vec3 error, vec3 n, vec3 w) {
   vec3 away = dot(w, n) < 0 ? -n : n;
   // An exact hit (a zero coordinate of an axis-aligned surface) has a zero error bound; the
   // floor keeps its step out of the denormals, which Embree's kernels flush to zero (t = -0 hits).

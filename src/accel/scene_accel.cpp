@@ -468,24 +468,34 @@ HitId intersect_nearest(const SceneAccel& accel, const Ray& ray) {
 
 bool traces_packets(const SceneAccel& accel) { return !accel.direct_shapes.enabled && !accel.calls_back; }
 
-void intersect_nearest_coherent(const SceneAccel& accel, const Ray* rays, int count, HitId* hits) {
-  if (!traces_packets(accel)) {
-    for (int i = 0; i < count; ++i) hits[i] = intersect_nearest(accel, rays[i]);
-    return;
-  }
-  // A tile's rays at a time, in one stream: Embree groups them into packets itself.
-  constexpr int stream_length = 64;
-  RTCRayHit stream[stream_length];
-  int traced[stream_length];  // which ray each stream entry is
+namespace {
+// Rays per Embree stream call: a tile's worth, small enough for the stack.
+constexpr int stream_length = 64;
+
+RTCIntersectContext stream_context(RayCoherence coherence) {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
-  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  context.flags = coherence == RayCoherence::coherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
+                                                      : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+  return context;
+}
+}  // namespace
+
+void intersect_nearest_many(const SceneAccel& accel, const Ray* const* rays, int count, HitId* hits,
+                            RayCoherence coherence) {
+  if (!traces_packets(accel)) {
+    for (int i = 0; i < count; ++i) hits[i] = intersect_nearest(accel, *rays[i]);
+    return;
+  }
+  RTCRayHit stream[stream_length];
+  int traced[stream_length];  // which ray each stream entry is
+  RTCIntersectContext context = stream_context(coherence);
   for (int begin = 0; begin < count; begin += stream_length) {
     int end = std::min(count, begin + stream_length), length = 0;
     for (int i = begin; i < end; ++i) {
       hits[i] = {};
       RTCRayHit& entry = stream[length];
-      if (!store_embree_ray(entry.ray, rays[i], accel)) [[unlikely]] {
+      if (!store_embree_ray(entry.ray, *rays[i], accel)) [[unlikely]] {
         count_untraceable(accel);
         continue;
       }
@@ -495,6 +505,29 @@ void intersect_nearest_coherent(const SceneAccel& accel, const Ray* rays, int co
     }
     rtcIntersect1M(accel.top, &context, stream, unsigned(length), sizeof(RTCRayHit));
     for (int k = 0; k < length; ++k) hits[traced[k]] = hit_of(accel, stream[k]);
+  }
+}
+
+void occluded_many(const SceneAccel& accel, const Ray* const* rays, int count, bool* occluded, RayCoherence coherence) {
+  if (!traces_packets(accel)) {
+    for (int i = 0; i < count; ++i) occluded[i] = is_occluded(accel, *rays[i]);
+    return;
+  }
+  RTCRay stream[stream_length];
+  int traced[stream_length];
+  RTCIntersectContext context = stream_context(coherence);
+  for (int begin = 0; begin < count; begin += stream_length) {
+    int end = std::min(count, begin + stream_length), length = 0;
+    for (int i = begin; i < end; ++i) {
+      occluded[i] = true;  // what is_occluded says of an untraceable ray
+      if (!store_embree_ray(stream[length], *rays[i], accel)) [[unlikely]] {
+        count_untraceable(accel);
+        continue;
+      }
+      traced[length++] = i;
+    }
+    rtcOccluded1M(accel.top, &context, stream, unsigned(length), sizeof(RTCRay));
+    for (int k = 0; k < length; ++k) occluded[traced[k]] = stream[k].tfar < 0;
   }
 }
 

@@ -86,12 +86,19 @@ void update_scene_accel(SceneAccel& accel, const SceneChanges& changes);
 
 // Nearest hit along the ray (from t = 0 to ray.tmax); none for an untraceable ray.
 HitId intersect_nearest(const SceneAccel& accel, const Ray& ray);
-// Whether intersect_nearest_coherent traces packets here (otherwise it traces ray by ray).
+// Whether intersect_nearest_many and occluded_many trace streams here (otherwise they trace ray
+// by ray: analytic shapes and alpha masks call back one ray at a time).
 bool traces_packets(const SceneAccel& accel);
-// The nearest hits of `count` rays that mostly travel together (a tile's camera rays): Embree
-// traces them as packets, which costs less per ray than one at a time when they are coherent.
-// Each hit is the one intersect_nearest gives for its ray.
-void intersect_nearest_coherent(const SceneAccel& accel, const Ray* rays, int count, HitId* hits);
+// How the rays of one call relate: a tile's camera rays travel together, and Embree sorts them
+// into packets; the bounces and shadow rays of different paths mostly do not.
+enum class RayCoherence { coherent, incoherent };
+// The nearest hits of `count` rays traced as one stream, which costs less per ray than one at a
+// time. Each hit is the one intersect_nearest gives for its ray. The rays are read where they
+// lie (copying a freshly written ray stalls on store forwarding).
+void intersect_nearest_many(const SceneAccel& accel, const Ray* const* rays, int count, HitId* hits,
+                            RayCoherence coherence);
+// is_occluded for `count` rays traced as one stream: occluded[i] for *rays[i].
+void occluded_many(const SceneAccel& accel, const Ray* const* rays, int count, bool* occluded, RayCoherence coherence);
 // True when anything blocks the ray before ray.tmax, or when the ray is untraceable.
 bool is_occluded(const SceneAccel& accel, const Ray& ray);
 
@@ -115,15 +122,34 @@ SurfaceHit make_surface_hit(const SceneAccel& accel, const Ray& ray, const HitId
 // ComputeDifferentials); analytic shapes keep none (they carry no textures).
 void set_uv_footprint(const SceneAccel& accel, const HitId& id, vec3 dpdx, vec3 dpdy, SurfaceHit& hit);
 
+// The spawn functions come in two forms: returning the ray, and writing it into `ray` field by
+// field. Assigning a returned Ray to an existing one copies it through a temporary with wide
+// loads that stall on store forwarding (the pieces were just stored narrower), which costs the
+// batched integrator, whose path state lives in memory, a tenth of its time.
+
 // A ray leaving `hit` in `direction`, with its origin offset by the error bound.
+[[gnu::always_inline]] inline void spawn_ray(Ray& ray, const SurfaceHit& hit, vec3 direction) {
+  ray.origin = offset_ray_origin(hit.position, hit.position_error, hit.geometric_normal, direction);
+  ray.direction = direction;
+  ray.tmax = std::numeric_limits<float>::infinity();
+}
 inline Ray spawn_ray(const SurfaceHit& hit, vec3 direction) {
-  return {offset_ray_origin(hit.position, hit.position_error, hit.geometric_normal, direction), direction};
+  Ray ray;
+  spawn_ray(ray, hit, direction);
+  return ray;
 }
 // A ray from `hit` towards `target`, ending just short of it (for shadow rays).
-inline Ray spawn_ray_to(const SurfaceHit& hit, vec3 target) {
+[[gnu::always_inline]] inline void spawn_ray_to(Ray& ray, const SurfaceHit& hit, vec3 target) {
   vec3 direction = target - hit.position;
   vec3 origin = offset_ray_origin(hit.position, hit.position_error, hit.geometric_normal, direction);
-  return {origin, target - origin, 1 - 1e-4f};
+  ray.origin = origin;
+  ray.direction = target - origin;
+  ray.tmax = 1 - 1e-4f;
+}
+inline Ray spawn_ray_to(const SurfaceHit& hit, vec3 target) {
+  Ray ray;
+  spawn_ray_to(ray, hit, target);
+  return ray;
 }
 
 }  // namespace radiant

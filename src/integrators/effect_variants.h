@@ -45,18 +45,19 @@ constexpr bool enabled(uint32_t runtime_effects, Effect e) {
 }
 
 namespace detail {
-template <class Fn, template <uint32_t> class Impl, size_t... I>
-constexpr std::array<Fn, sizeof...(I)> variant_table(std::index_sequence<I...>) {
-  return {&Impl<variant_mask(I)>::run...};
+template <class Variants, template <uint32_t> class Impl, size_t... I>
+constexpr Variants variant_table(std::index_sequence<I...>) {
+  return {{{&Impl<variant_mask(I)>::run, &Impl<variant_mask(I)>::run_batch}...}};
 }
 }  // namespace detail
 
-// `Impl<E>::run` compiled for every variant; returns the one serving `needed`.
-template <template <uint32_t> class Impl>
-auto select_variant(uint32_t needed) {
-  using Fn = decltype(&Impl<effect_all>::run);
-  static constexpr auto table =
-      detail::variant_table<Fn, Impl>(std::make_index_sequence<size_t(1) << effect_groups.size()>{});
+// `Impl<E>::run` and `Impl<E>::run_batch` compiled for every variant, as an `Entry` (an
+// aggregate of the two function pointers); returns the one serving `needed`.
+template <class Entry, template <uint32_t> class Impl>
+Entry select_variant(uint32_t needed) {
+  using Variants = std::array<Entry, size_t(1) << effect_groups.size()>;
+  static constexpr Variants table =
+      detail::variant_table<Variants, Impl>(std::make_index_sequence<size_t(1) << effect_groups.size()>{});
   return table[variant_index(needed)];
 }
 

@@ -7,6 +7,6 @@
 
 namespace radiant {
 
-RadianceFunction select_naive(uint32_t effects);
+Integrator select_naive(uint32_t effects);
 
 }  // namespace radiant

@@ -71,28 +71,55 @@ int hit_light_index(const LightTable& lights, const HitId& id) {
   return area < 0 ? -1 : int(lights.delta_lights.size()) + area;
 }
 
-// One light sample with MIS against BSDF sampling (next-event estimation).
+// One light sample's contribution, already scaled by the path's throughput. With opaque
+// shadows its shadow ray is left to the caller (`traces`), who may trace it with others: the
+// contribution is then `unblocked` or `blocked` by its answer. Otherwise `unblocked` is final.
+struct LightSampleResult {
+  color3 unblocked, blocked;
+  Ray shadow_ray;
+  bool traces = false;
+};
+
+// One light sample with MIS against BSDF sampling (next-event estimation) into `out`, as a
+// contribution before the path's throughput. `out` is written in place: built elsewhere and
+// copied, its ray would stall on store forwarding.
 template <uint32_t E>
-color3 sample_one_light(const RenderContext& ctx, const SurfaceHit& hit, const Bsdf& bsdf, const HitShading& f,
-                        const SampleContext& sample, int depth, RayCounts& counts) {
+[[gnu::always_inline]] inline void sample_one_light(const RenderContext& ctx, const SurfaceHit& hit, const Bsdf& bsdf, const HitShading& f,
+                      const SampleContext& sample, int depth, RayCounts& counts, LightSampleResult& out) {
+  out.traces = false;
+  out.unblocked = {};
   const LightTable& lights = *ctx.lights;
   // Random numbers are drawn only when used (one light needs no choice, a delta light no
   // point); their dimensions stay fixed, so skipping one changes no other.
   LightChoice choice;
   auto u_choice = [&] { return sample_1d(sample, dimension(depth, light_choice)); };
-  if (!choose_light(lights, hit.position, f.normal, u_choice, choice)) return {};
+  if (!choose_light(lights, hit.position, f.normal, u_choice, choice)) return;
   size_t index = choice.slot;
   float select_pdf = choice.probability;
 
+  // The contribution for the shadow ray's transmittance `t`; with opaque shadows both answers
+  // are formed now, so that the caller's choice is the value the transmittance would give.
+  auto finish = [&](vec3 direction, float distance, auto contribution) {
+    if (shadows_are_opaque<E>(ctx)) {
+      counts.shadow++;
+      out.unblocked = contribution(color3{1, 1, 1});
+      out.blocked = contribution(color3{0, 0, 0});
+      set_shadow_ray(out.shadow_ray, hit, direction, distance);
+      out.traces = true;
+      return;
+    }
+    out.unblocked = contribution(shadow_transmittance<E>(ctx, hit, direction, distance, false,
+                                                         texture_footprint_scale(sample.index), counts));
+  };
+
   if (index < lights.delta_lights.size()) {
-    if (!enabled<E>(ctx.effects, effect_direct_delta)) return {};
+    if (!enabled<E>(ctx.effects, effect_direct_delta)) return;
     DeltaLightSample light;
-    if (!sample_delta_light(ctx.scene->lights[lights.delta_lights[index]], hit.position, light)) return {};
+    if (!sample_delta_light(ctx.scene->lights[lights.delta_lights[index]], hit.position, light)) return;
     color3 f_cos = bsdf.eval(light.direction);
-    if (is_black(f_cos)) return {};
-    color3 t = shadow_transmittance<E>(ctx, hit, light.direction, light.distance, false,
-                                       texture_footprint_scale(sample.index), counts);
-    return f_cos * light.irradiance * t / select_pdf;
+    if (is_black(f_cos)) return;
+    return finish(light.direction, light.distance,
+                  [&](color3 t) { return f_cos * light.irradiance * t / select_pdf; });
   }
 
   vec3 wi;
@@ -100,153 +127,270 @@ color3 sample_one_light(const RenderContext& ctx, const SurfaceHit& hit, const B
   color3 emitted;
   float distance;
   if (index < lights.environment_slot()) {
-    if (!enabled<E>(ctx.effects, effect_emission)) return {};
+    if (!enabled<E>(ctx.effects, effect_emission)) return;
     const AreaLight& light = lights.area_lights[index - lights.delta_lights.size()];
     AreaLightSample s;
-    if (!sample_area_light(light, hit.position, sample_2d(sample, dimension(depth, light_point)), s)) return {};
-    if (!area_light_emits(light, s.normal, -s.direction)) return {};
+    if (!sample_area_light(light, hit.position, sample_2d(sample, dimension(depth, light_point)), s)) return;
+    if (!area_light_emits(light, s.normal, -s.direction)) return;
     wi = s.direction;
     light_pdf = s.pdf;
     distance = s.distance * (1 - 1e-4f);
     emitted = area_light_emission<E>(ctx, light, s.barycentric);
   } else {
-    if (!enabled<E>(ctx.effects, effect_environment)) return {};
+    if (!enabled<E>(ctx.effects, effect_environment)) return;
     light_pdf = sample_environment(lights, f.normal, sample_1d(sample, dimension(depth, environment_choice)),
                                    sample_2d(sample, dimension(depth, light_point)), wi);
-    if (!(light_pdf > 0)) return {};
+    if (!(light_pdf > 0)) return;
     distance = std::numeric_limits<float>::infinity();
     emitted = eval_environment(lights, wi);
   }
-  if (is_black(emitted)) return {};
+  if (is_black(emitted)) return;
   color3 f_cos = bsdf.eval(wi);
-  if (is_black(f_cos)) return {};
-  color3 t = shadow_transmittance<E>(ctx, hit, wi, distance, false, texture_footprint_scale(sample.index), counts);
-  if (is_black(t)) return {};
+  if (is_black(f_cos)) return;
   float pdf = select_pdf * light_pdf;
   float weight = power_heuristic(pdf, bsdf.pdf(wi));
-  return f_cos * emitted * t * (weight / pdf);
+  finish(wi, distance, [&](color3 t) {
+    if (is_black(t)) return color3{};
+    return f_cos * emitted * t * (weight / pdf);
+  });
 }
+
+// A path between two vertices: everything its loop carries from one hit to the next.
+struct PathState {
+  Ray ray;  // the ray just traced, or about to be
+  color3 radiance, throughput = {1, 1, 1};
+  const SampleContext* sample = nullptr;
+  FirstHit* first_hit = nullptr;
+  uint64_t RayCounts::*ray_kind = &RayCounts::camera;  // the kind of `ray`, counted when traced
+  bool specular_bounce = true;
+  float previous_pdf = 0;
+  vec3 previous_position, previous_normal;
+  int depth = 0, max_depth = 0;
+  int transparent_steps = 0;
+  int medium = -1;   // the absorbing volume the path is inside (a material index), or -1
+  int channel = -1;  // the colour channel the path carries after a dispersive surface, or -1
+};
+
+// Materials resolved at one vertex (one per thread, reused: they are large).
+struct VertexScratch {
+  SurfaceMaterial resolved;   // the material at the hit, when textured
+  SurfaceMaterial dispersed;  // and with its channel's IOR
+};
 
 template <uint32_t E, bool LightSampling>
 struct PathVariant {
-  static color3 run(const RenderContext& ctx, const Ray& camera_ray, const SampleContext& sample, RayCounts& counts,
-                    FirstHit* first_hit, const HitId* camera_hit) {
+  // The path's vertex at `id`, the hit of path.ray: adds what it sees, takes a light sample
+  // (its shadow ray left in `light` when light.traces) and sets the next ray. Returns whether
+  // the path goes on along path.ray.
+  [[gnu::always_inline]] static bool advance(const RenderContext& ctx, PathState& path, const HitId& id, VertexScratch& scratch,
+                      LightSampleResult& light, RayCounts& counts) {
     const LightTable& lights = *ctx.lights;
-    color3 radiance, throughput = {1, 1, 1};
-    Ray ray = camera_ray;
-    bool specular_bounce = true;
-    float previous_pdf = 0;
-    vec3 previous_position, previous_normal;
-    int depth = 0, max_depth = ctx.max_depth;
-    uint64_t* ray_counter = &counts.camera;  // the kind of the next ray traced, counted when traced
-    SurfaceMaterial resolved;                // the material at the current hit, when textured
-    int medium = -1;  // the absorbing volume the path is inside (a material index), or -1
-    int channel = -1;  // the colour channel the path carries after a dispersive surface, or -1
-    SurfaceMaterial dispersed;  // the material at the current hit with its channel's IOR
-    for (int transparent_steps = 0; transparent_steps < max_see_through_steps;) {
-      ++*ray_counter;
-      HitId id = camera_hit ? *camera_hit : intersect_nearest(*ctx.accel, ray);
-      camera_hit = nullptr;  // only the camera ray was traced beforehand
-      // Beer-Lambert along the segment just traced inside a volume (a ray escaping one, which a
-      // closed mesh cannot let happen, keeps its light).
-      if (enabled<E>(ctx.effects, effect_absorption) && medium >= 0 && id.valid())
-        throughput *= exp(ctx.absorption[size_t(medium)] * -(id.t * length(ray.direction)));
-      if (!id.valid()) {
-        // Depth 0 is the camera ray, also after it passed alpha cutouts.
-        if (enabled<E>(ctx.effects, effect_environment) && !(depth == 0 && ctx.transparent_background)) {
-          color3 background = eval_environment(lights, normalize(ray.direction));
-          float weight = 1;
-          // The environment has a selection slot only when it exists (--effects=all can switch
-          // the effect on for a scene without one).
-          if (LightSampling && !specular_bounce && lights.has_environment()) {
-            float light_pdf =
-                light_choice_probability(lights, previous_position, previous_normal, lights.environment_slot()) *
-                environment_pdf(lights, previous_normal, normalize(ray.direction));
-            weight = power_heuristic(previous_pdf, light_pdf);
-          }
-          radiance += throughput * background * weight;
+    const SampleContext& sample = *path.sample;
+    const Ray& ray = path.ray;
+    color3& radiance = path.radiance;
+    color3& throughput = path.throughput;
+    int depth = path.depth;
+    light.traces = false;
+    // Beer-Lambert along the segment just traced inside a volume (a ray escaping one, which a
+    // closed mesh cannot let happen, keeps its light).
+    if (enabled<E>(ctx.effects, effect_absorption) && path.medium >= 0 && id.valid())
+      throughput *= exp(ctx.absorption[size_t(path.medium)] * -(id.t * length(ray.direction)));
+    if (!id.valid()) {
+      // Depth 0 is the camera ray, also after it passed alpha cutouts.
+      if (enabled<E>(ctx.effects, effect_environment) && !(depth == 0 && ctx.transparent_background)) {
+        color3 background = eval_environment(lights, normalize(ray.direction));
+        float weight = 1;
+        // The environment has a selection slot only when it exists (--effects=all can switch
+        // the effect on for a scene without one).
+        if (LightSampling && !path.specular_bounce && lights.has_environment()) {
+          float light_pdf =
+              light_choice_probability(lights, path.previous_position, path.previous_normal,
+                                       lights.environment_slot()) *
+              environment_pdf(lights, path.previous_normal, normalize(ray.direction));
+          weight = power_heuristic(path.previous_pdf, light_pdf);
         }
-        break;
+        radiance += throughput * background * weight;
       }
-      SurfaceHit hit = make_surface_hit(*ctx.accel, ray, id);
-      const SurfaceMaterial& m = material_at<E>(ctx, id, hit, resolved, texture_footprint_scale(sample.index));
-      if (enabled<E>(ctx.effects, effect_alpha) && m.opacity < 1 &&
-          // Each see-through step at this vertex gets its own dimension, far above any vertex's block.
-          sample_1d(sample, dimension(depth, alpha_choice) + 0x10000u * uint32_t(transparent_steps)) >= m.opacity) {
-        ray = spawn_ray(hit, ray.direction);  // see-through: the path goes on unchanged
-        ++transparent_steps;
-        continue;
-      }
-      HitShading f = make_hit_shading<E>(ctx.effects, hit, m, ray.direction);
-      if (first_hit && depth == 0) *first_hit = {bsdf_albedo(m), f.normal, id.t * length(ray.direction), 1};
+      return false;
+    }
+    SurfaceHit hit = make_surface_hit(*ctx.accel, ray, id);
+    const SurfaceMaterial& m = material_at<E>(ctx, id, hit, scratch.resolved, texture_footprint_scale(sample.index));
+    if (enabled<E>(ctx.effects, effect_alpha) && m.opacity < 1 &&
+        // Each see-through step at this vertex gets its own dimension, far above any vertex's block.
+        sample_1d(sample, dimension(depth, alpha_choice) + 0x10000u * uint32_t(path.transparent_steps)) >=
+            m.opacity) {
+      spawn_ray(path.ray, hit, ray.direction);  // see-through: the path goes on unchanged
+      return ++path.transparent_steps < max_see_through_steps;
+    }
+    HitShading f = make_hit_shading<E>(ctx.effects, hit, m, ray.direction);
+    if (path.first_hit && depth == 0) *path.first_hit = {bsdf_albedo(m), f.normal, id.t * length(ray.direction), 1};
 
-      if (enabled<E>(ctx.effects, effect_emission) && !is_black(m.emission)) {
-        const MaterialDesc& authored = ctx.scene->materials[hit.material];
-        if (hit.front_face || authored.double_sided) {
-          float weight = 1;
-          int light_index = hit_light_index(lights, id);
-          if (LightSampling && !specular_bounce && light_index >= 0) {
-            const AreaLight& light = lights.area_lights[light_index - lights.delta_lights.size()];
-            float light_pdf = light_choice_probability(lights, previous_position, previous_normal, size_t(light_index)) *
-                              area_light_pdf(light, previous_position, hit.position, hit.geometric_normal);
-            weight = power_heuristic(previous_pdf, light_pdf);
-          }
-          radiance += throughput * m.emission * weight;
+    if (enabled<E>(ctx.effects, effect_emission) && !is_black(m.emission)) {
+      const MaterialDesc& authored = ctx.scene->materials[hit.material];
+      if (hit.front_face || authored.double_sided) {
+        float weight = 1;
+        int light_index = hit_light_index(lights, id);
+        if (LightSampling && !path.specular_bounce && light_index >= 0) {
+          const AreaLight& light = lights.area_lights[light_index - lights.delta_lights.size()];
+          float light_pdf =
+              light_choice_probability(lights, path.previous_position, path.previous_normal, size_t(light_index)) *
+              area_light_pdf(light, path.previous_position, hit.position, hit.geometric_normal);
+          weight = power_heuristic(path.previous_pdf, light_pdf);
         }
-      }
-      if (m.unlit) {
-        radiance += throughput * m.base_color;
-        break;
-      }
-      // Vertex `depth` gathers light only below max_depth; the emission above completed the
-      // direct light of the previous vertex.
-      if (depth >= max_depth) break;
-      bool dispersive = enabled<E>(ctx.effects, effect_refraction) && m.dispersion > 0 && m.transmission > 0 &&
-                        m.model == MaterialModel::metallic_roughness;
-      vec3 normal = bsdf_normal(m, f);
-      Bsdf bsdf = dispersive ? Bsdf(dispersive_material(m, sample_1d(sample, dimension(depth, dispersion_channel)),
-                                                        channel, throughput, dispersed),
-                                    normal, f.wo, anisotropy_tangent(hit, m, normal))
-                             : bsdf_at<E>(ctx, hit, m, normal, f.wo);
-      // The next direction is drawn before the light sample, which does not depend on it: its
-      // chain of dependent arithmetic (sampler, warp) then overlaps the shadow ray's traversal
-      // in the CPU instead of stalling the next ray. Dimensions are fixed, so the order changes
-      // no value.
-      float u_lobe = bsdf.chooses_lobe() ? sample_1d(sample, dimension(depth, lobe_choice)) : 0.5f;
-      auto scattered = bsdf.sample(u_lobe, sample_2d(sample, dimension(depth, bsdf_direction)));
-      if (LightSampling && !is_pure_delta(m))
-        radiance += throughput * sample_one_light<E>(ctx, hit, bsdf, f, sample, depth, counts);
-      if (!scattered || is_black(scattered->weight)) break;
-      // Without indirect light a diffuse or glossy bounce only completes this vertex's direct light.
-      if (!scattered->delta && !enabled<E>(ctx.effects, effect_indirect)) max_depth = std::min(max_depth, depth + 1);
-      if (scattered->delta) {
-        bool refracted = scattered->transmitted;
-        if (refracted && !enabled<E>(ctx.effects, effect_refraction)) break;
-        // A transmissive surface's mirror share (Fresnel, total internal reflection) belongs to
-        // refraction: switching reflection off must not make glass lose it.
-        bool transmissive = !is_black(m.kt) || m.transmission > 0;
-        if (!refracted && !transmissive && !enabled<E>(ctx.effects, effect_reflection)) break;
-        ray_counter = refracted ? &counts.refraction : &counts.reflection;
-      } else {
-        ray_counter = &counts.indirect;
-      }
-      // Crossing a surface enters its volume from the front and leaves it from the back.
-      if (enabled<E>(ctx.effects, effect_absorption) && scattered->transmitted)
-        medium = hit.front_face && !is_black(ctx.absorption[size_t(hit.material)]) ? hit.material : -1;
-      throughput *= scattered->weight;
-      specular_bounce = scattered->delta;
-      previous_pdf = scattered->pdf;
-      previous_position = hit.position;
-      previous_normal = f.normal;
-      ray = spawn_ray(hit, scattered->wi);
-      ++depth;
-      if (depth >= roulette_start_depth) {
-        float survive = std::min(1.0f, max_component(throughput));
-        if (sample_1d(sample, dimension(depth, roulette)) >= survive) break;
-        throughput /= survive;
+        radiance += throughput * m.emission * weight;
       }
     }
-    return radiance;
+    if (m.unlit) {
+      radiance += throughput * m.base_color;
+      return false;
+    }
+    // Vertex `depth` gathers light only below max_depth; the emission above completed the
+    // direct light of the previous vertex.
+    if (depth >= path.max_depth) return false;
+    bool dispersive = enabled<E>(ctx.effects, effect_refraction) && m.dispersion > 0 && m.transmission > 0 &&
+                      m.model == MaterialModel::metallic_roughness;
+    vec3 normal = bsdf_normal(m, f);
+    Bsdf bsdf = dispersive ? Bsdf(dispersive_material(m, sample_1d(sample, dimension(depth, dispersion_channel)),
+                                                      path.channel, throughput, scratch.dispersed),
+                                  normal, f.wo, anisotropy_tangent(hit, m, normal))
+                           : bsdf_at<E>(ctx, hit, m, normal, f.wo);
+    // The next direction is drawn before the light sample, which does not depend on it: its
+    // chain of dependent arithmetic (sampler, warp) then overlaps the shadow ray's traversal
+    // in the CPU instead of stalling the next ray. Dimensions are fixed, so the order changes
+    // no value.
+    float u_lobe = bsdf.chooses_lobe() ? sample_1d(sample, dimension(depth, lobe_choice)) : 0.5f;
+    auto scattered = bsdf.sample(u_lobe, sample_2d(sample, dimension(depth, bsdf_direction)));
+    if (LightSampling && !is_pure_delta(m)) {
+      sample_one_light<E>(ctx, hit, bsdf, f, sample, depth, counts, light);
+      if (light.traces) {
+        light.unblocked = throughput * light.unblocked;
+        light.blocked = throughput * light.blocked;
+      } else {
+        radiance += throughput * light.unblocked;
+      }
+    }
+    if (!scattered || is_black(scattered->weight)) return false;
+    // Without indirect light a diffuse or glossy bounce only completes this vertex's direct light.
+    if (!scattered->delta && !enabled<E>(ctx.effects, effect_indirect))
+      path.max_depth = std::min(path.max_depth, depth + 1);
+    if (scattered->delta) {
+      bool refracted = scattered->transmitted;
+      if (refracted && !enabled<E>(ctx.effects, effect_refraction)) return false;
+      // A transmissive surface's mirror share (Fresnel, total internal reflection) belongs to
+      // refraction: switching reflection off must not make glass lose it.
+      bool transmissive = !is_black(m.kt) || m.transmission > 0;
+      if (!refracted && !transmissive && !enabled<E>(ctx.effects, effect_reflection)) return false;
+      path.ray_kind = refracted ? &RayCounts::refraction : &RayCounts::reflection;
+    } else {
+      path.ray_kind = &RayCounts::indirect;
+    }
+    // Crossing a surface enters its volume from the front and leaves it from the back.
+    if (enabled<E>(ctx.effects, effect_absorption) && scattered->transmitted)
+      path.medium = hit.front_face && !is_black(ctx.absorption[size_t(hit.material)]) ? hit.material : -1;
+    throughput *= scattered->weight;
+    path.specular_bounce = scattered->delta;
+    path.previous_pdf = scattered->pdf;
+    path.previous_position = hit.position;
+    path.previous_normal = f.normal;
+    spawn_ray(path.ray, hit, scattered->wi);
+    path.depth = ++depth;
+    if (depth >= roulette_start_depth) {
+      float survive = std::min(1.0f, max_component(throughput));
+      if (sample_1d(sample, dimension(depth, roulette)) >= survive) return false;
+      throughput /= survive;
+    }
+    return true;
+  }
+
+  // A path at its camera ray, set in place (see sample_one_light).
+  static void start(PathState& path, const RenderContext& ctx, const Ray& camera_ray, const SampleContext& sample,
+                    FirstHit* first_hit) {
+    path.radiance = {};
+    path.throughput = {1, 1, 1};
+    path.ray_kind = &RayCounts::camera;
+    path.specular_bounce = true;
+    path.previous_pdf = 0;
+    path.depth = 0;
+    path.transparent_steps = 0;
+    path.medium = -1;
+    path.channel = -1;
+    path.ray.origin = camera_ray.origin;
+    path.ray.direction = camera_ray.direction;
+    path.ray.tmax = camera_ray.tmax;
+    path.sample = &sample;
+    path.first_hit = first_hit;
+    path.max_depth = ctx.max_depth;
+  }
+
+  // One path at a time: the reference the batch must match.
+  static color3 run(const RenderContext& ctx, const Ray& camera_ray, const SampleContext& sample, RayCounts& counts,
+                    FirstHit* first_hit, const HitId* camera_hit) {
+    PathState path;
+    start(path, ctx, camera_ray, sample, first_hit);
+    VertexScratch scratch;
+    LightSampleResult light;
+    for (;;) {
+      ++(counts.*path.ray_kind);
+      HitId id = camera_hit ? *camera_hit : intersect_nearest(*ctx.accel, path.ray);
+      camera_hit = nullptr;  // only the camera ray was traced beforehand
+      bool goes_on = advance(ctx, path, id, scratch, light, counts);
+      if (light.traces) path.radiance += is_occluded(*ctx.accel, light.shadow_ray) ? light.blocked : light.unblocked;
+      if (!goes_on) break;
+    }
+    return path.radiance;
+  }
+
+  // The batch's paths advance a vertex at a time together: each stage's shadow rays, then its
+  // next rays, are traced as one stream. Each path sees the same values in the same order as
+  // in run(), so its radiance is run()'s bit for bit.
+  // What a batch keeps per path, allocated once per thread: constructing it for every batch
+  // (the member initialisers) was a measurable share of the batch's time.
+  struct BatchWorkspace {
+    PathState paths[max_batch_paths];
+    LightSampleResult lights[max_batch_paths];
+    const Ray* rays[max_batch_paths];
+    HitId hits[max_batch_paths];
+    bool occluded[max_batch_paths];
+    int live[max_batch_paths], shadowed[max_batch_paths];
+    VertexScratch scratch;
+  };
+
+  static void run_batch(const RenderContext& ctx, BatchPath* batch, int count, RayCounts& counts) {
+    static thread_local BatchWorkspace workspace;
+    auto& [paths, lights, rays, hits, occluded, live, shadowed, scratch] = workspace;
+    count = std::min(count, max_batch_paths);
+    int live_count = count;
+    for (int i = 0; i < count; ++i) {
+      start(paths[i], ctx, batch[i].ray, batch[i].sample, batch[i].first_hit);
+      ++counts.camera;
+      hits[i] = batch[i].camera_hit;
+      live[i] = i;
+    }
+    while (live_count > 0) {
+      int shadow_count = 0, next_count = 0;
+      for (int k = 0; k < live_count; ++k) {
+        int i = live[k];
+        bool goes_on = advance(ctx, paths[i], hits[k], scratch, lights[i], counts);
+        if (lights[i].traces) {
+          rays[shadow_count] = &lights[i].shadow_ray;
+          shadowed[shadow_count++] = i;
+        }
+        if (goes_on) live[next_count++] = i;  // next_count <= k: live[k] was read already
+      }
+      occluded_many(*ctx.accel, rays, shadow_count, occluded, RayCoherence::incoherent);
+      for (int k = 0; k < shadow_count; ++k) {
+        const LightSampleResult& light = lights[shadowed[k]];
+        paths[shadowed[k]].radiance += occluded[k] ? light.blocked : light.unblocked;
+      }
+      for (int k = 0; k < next_count; ++k) {
+        PathState& path = paths[live[k]];
+        ++(counts.*path.ray_kind);
+        rays[k] = &path.ray;
+      }
+      intersect_nearest_many(*ctx.accel, rays, next_count, hits, RayCoherence::incoherent);
+      live_count = next_count;
+    }
+    for (int i = 0; i < count; ++i) batch[i].radiance = paths[i].radiance;
   }
 };
 
@@ -257,7 +401,7 @@ using PathWithoutLightSampling = PathVariant<E, false>;
 
 }  // namespace
 
-RadianceFunction select_path(uint32_t effects) { return select_variant<PathWithLightSampling>(effects); }
-RadianceFunction select_naive(uint32_t effects) { return select_variant<PathWithoutLightSampling>(effects); }
+Integrator select_path(uint32_t effects) { return select_variant<Integrator, PathWithLightSampling>(effects); }
+Integrator select_naive(uint32_t effects) { return select_variant<Integrator, PathWithoutLightSampling>(effects); }
 
 }  // namespace radiant

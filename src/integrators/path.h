@@ -6,6 +6,6 @@
 namespace radiant {
 
 // The path tracer compiled for the smallest effect set covering `effects`.
-RadianceFunction select_path(uint32_t effects);
+Integrator select_path(uint32_t effects);
 
 }  // namespace radiant

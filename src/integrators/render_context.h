@@ -67,7 +67,7 @@ struct RenderContext {
 
 // Radiance along a camera ray for one sample; `first_hit` (optional) receives AOV values.
 // `camera_hit` (optional) is the ray's nearest hit, already traced with its neighbours'
-// (intersect_nearest_coherent); without it the integrator traces the ray itself.
+// (intersect_nearest_many); without it the integrator traces the ray itself.
 using RadianceFunction = color3 (*)(const RenderContext& ctx, const Ray& ray, const SampleContext& sample,
                                     RayCounts& counts, FirstHit* first_hit, const HitId* camera_hit);
 
@@ -106,6 +106,37 @@ Bsdf bsdf_at(const RenderContext& ctx, const SurfaceHit& hit, const SurfaceMater
   if (enabled<E>(ctx.effects, effect_textures) || enabled<E>(ctx.effects, effect_normal_maps))
     return Bsdf(m, n, wo, tangent);
   return Bsdf(ctx.flat_bsdf_materials[hit.material], n, wo, tangent);
+}
+
+// One path of a batch: its camera ray with the hit already traced, its sample, where its AOV
+// values go (optional), and the radiance it returns.
+struct BatchPath {
+  Ray ray;
+  HitId camera_hit;
+  SampleContext sample;
+  FirstHit* first_hit = nullptr;
+  color3 radiance;
+};
+// The most paths one batch holds: a tile of 8 x 8 pixels.
+constexpr int max_batch_paths = 64;
+// Radiance along `count` camera rays (at most max_batch_paths) whose hits are already traced.
+// Each path's radiance is the RadianceFunction's for it, bit for bit; an integrator may advance
+// them together and trace their rays as streams.
+using BatchRadianceFunction = void (*)(const RenderContext& ctx, BatchPath* paths, int count, RayCounts& counts);
+
+// An integrator compiled for one effect set: one path at a time (the reference), and a batch.
+struct Integrator {
+  RadianceFunction one_path;
+  BatchRadianceFunction batch;
+};
+
+// A batch run one path at a time from its camera hit.
+inline void run_each_path(RadianceFunction one_path, const RenderContext& ctx, BatchPath* paths, int count,
+                          RayCounts& counts) {
+  for (int i = 0; i < count; ++i) {
+    BatchPath& p = paths[i];
+    p.radiance = one_path(ctx, p.ray, p.sample, counts, p.first_hit, &p.camera_hit);
+  }
 }
 
 }  // namespace radiant

@@ -106,10 +106,15 @@ struct WhittedVariant {
     return trace<E>(ctx, ray, 0, 0, {1, 1, 1}, RayKind::camera, texture_footprint_scale(sample.index), counts, first_hit,
                     camera_hit);
   }
+  // Whitted's reflection and refraction trees branch per path: its paths run one at a time
+  // from their camera hits.
+  static void run_batch(const RenderContext& ctx, BatchPath* paths, int count, RayCounts& counts) {
+    run_each_path(run, ctx, paths, count, counts);
+  }
 };
 
 }  // namespace
 
-RadianceFunction select_whitted(uint32_t effects) { return select_variant<WhittedVariant>(effects); }
+Integrator select_whitted(uint32_t effects) { return select_variant<Integrator, WhittedVariant>(effects); }
 
 }  // namespace radiant

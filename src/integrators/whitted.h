@@ -7,6 +7,6 @@
 namespace radiant {
 
 // The Whitted variant compiled for the smallest effect set covering `effects`.
-RadianceFunction select_whitted(uint32_t effects);
+Integrator select_whitted(uint32_t effects);
 
 }  // namespace radiant

@@ -62,7 +62,7 @@ uint64_t shading_materials_bytes(const SceneDesc& scene) {
   return saturating_multiply(scene.materials.size(), sizeof(SurfaceMaterial) + sizeof(BsdfMaterial) + sizeof(color3));
 }
 
-RadianceFunction select_integrator(const ResolvedSettings& s) {
+Integrator select_integrator(const ResolvedSettings& s) {
   switch (s.mode) {
     case RenderMode::whitted: return select_whitted(s.compiled_variant);
     case RenderMode::naive: return select_naive(s.compiled_variant);
@@ -101,12 +101,12 @@ struct StopCheck {
 struct PassRunner {
   const RenderContext& ctx;
   const ResolvedSettings& s;
-  RadianceFunction radiance;
+  Integrator integrator;
   CameraFrame frame;
   const PixelFilter& filter;
   bool want_aovs;
   bool want_coverage;  // a transparent render
-  bool coherent_camera_rays;
+  PathBatching batching;
   uint32_t seed;
   Film& film;
   tbb::enumerable_thread_specific<RayCounts>& counts;
@@ -127,12 +127,8 @@ struct PassRunner {
     return {s.sampler, uint32_t(y) * uint32_t(s.width) + uint32_t(x), index, uint32_t(s.spp), seed};
   }
 
-  // One sample's radiance (black where there is no ray) added to pixel (x, y) with its AOVs.
-  void add_sample_to_film(int x, int y, const std::optional<Ray>& ray, const SampleContext& sample, bool negative,
-                          const HitId* camera_hit, RayCounts& c) const {
-    FirstHit first_hit;
-    color3 value = ray ? radiance(ctx, *ray, sample, c, want_aovs || want_coverage ? &first_hit : nullptr, camera_hit)
-                       : color3{};
+  // One sample's radiance and AOV values added to pixel (x, y); a non-finite sample is dropped.
+  void add_sample_to_film(int x, int y, color3 value, const FirstHit& first_hit, bool negative, RayCounts& c) const {
     if (!is_finite(value) || (want_aovs && !is_finite(first_hit))) {
       c.nonfinite_samples++;  // dropped, AOVs and all: never reaches the film
       return;
@@ -150,13 +146,18 @@ struct PassRunner {
     }
   }
 
+  FirstHit* first_hit_wanted(FirstHit& first_hit) const { return want_aovs || want_coverage ? &first_hit : nullptr; }
+
   void render_pixel(int x, int y, uint32_t first, uint32_t end) const {
     RayCounts& c = counts.local();
     for (uint32_t index = first; index < end; ++index) {
       SampleContext sample = sample_at(x, y, index);
       bool negative;
       std::optional<Ray> ray = camera_ray(x, y, sample, negative);
-      add_sample_to_film(x, y, ray, sample, negative, nullptr, c);
+      FirstHit first_hit;
+      color3 value =
+          ray ? integrator.one_path(ctx, *ray, sample, c, first_hit_wanted(first_hit), nullptr) : color3{};
+      add_sample_to_film(x, y, value, first_hit, negative, c);
     }
   }
 
@@ -165,20 +166,21 @@ struct PassRunner {
   }
 
   // A tile sample by sample: each sample's camera rays, coherent across the tile, are traced
-  // together as packets before each path goes on alone. Every pixel gets the same samples, in
-  // the same order, as render_pixel gives it, and each its own hit. Returns the pixels rendered.
-  uint64_t render_tile_coherent(const tbb::blocked_range2d<int>& r, uint32_t first, uint32_t end,
+  // together as packets; the paths go on from their hits alone, or as a batch (all_rays). Every pixel gets the same samples, in the same order, as render_pixel gives it, and
+  // each the same value. Returns the pixels rendered.
+  uint64_t render_tile_batched(const tbb::blocked_range2d<int>& r, uint32_t first, uint32_t end,
                                 const std::vector<uint8_t>& active) const {
-    constexpr int tile_pixels = 64;  // the largest tile run() makes: grain 8 x 8
+    static_assert(max_batch_paths >= 64, "a batch holds the largest tile run() makes: grain 8 x 8");
     struct Pending {
       int x, y;
       bool negative;
-      std::optional<Ray> ray;
+      int path;  // its index in the batch, or -1 where the camera sees nothing
+      FirstHit first_hit;
     };
-    Pending pending[tile_pixels];
-    Ray rays[tile_pixels];
-    HitId hits[tile_pixels];
-    int traced_of[tile_pixels];
+    Pending pending[max_batch_paths];
+    BatchPath batch[max_batch_paths];
+    const Ray* rays[max_batch_paths];
+    HitId hits[max_batch_paths];
     RayCounts& c = counts.local();
     uint64_t pixels = 0;
     for (int y0 = r.rows().begin(); y0 < r.rows().end(); y0 += 8)
@@ -186,21 +188,33 @@ struct PassRunner {
         int count = 0;
         for (int y = y0; y < std::min(y0 + 8, r.rows().end()); ++y)
           for (int x = x0; x < std::min(x0 + 8, r.cols().end()); ++x)
-            if (is_active(active, x, y)) pending[count++] = {x, y, false, std::nullopt};
+            if (is_active(active, x, y)) pending[count++] = {x, y, false, -1, {}};
         for (uint32_t index = first; index < end; ++index) {
           if (stop()) return pixels;
-          int traced = 0;
+          int paths = 0;
           for (int i = 0; i < count; ++i) {
             Pending& p = pending[i];
-            p.ray = camera_ray(p.x, p.y, sample_at(p.x, p.y, index), p.negative);
-            traced_of[i] = p.ray ? traced : -1;
-            if (p.ray) rays[traced++] = *p.ray;
+            p.first_hit = {};
+            SampleContext sample = sample_at(p.x, p.y, index);
+            std::optional<Ray> ray = camera_ray(p.x, p.y, sample, p.negative);
+            p.path = ray ? paths : -1;
+            if (ray) {
+              BatchPath& path = batch[paths];
+              path.ray = *ray;
+              path.sample = sample;
+              path.first_hit = first_hit_wanted(p.first_hit);
+              rays[paths++] = &path.ray;
+            }
           }
-          intersect_nearest_coherent(*ctx.accel, rays, traced, hits);
+          intersect_nearest_many(*ctx.accel, rays, paths, hits, RayCoherence::coherent);
+          for (int k = 0; k < paths; ++k) batch[k].camera_hit = hits[k];
+          if (batching == PathBatching::all_rays)
+            integrator.batch(ctx, batch, paths, c);
+          else
+            run_each_path(integrator.one_path, ctx, batch, paths, c);
           for (int i = 0; i < count; ++i) {
             const Pending& p = pending[i];
-            add_sample_to_film(p.x, p.y, p.ray, sample_at(p.x, p.y, index), p.negative,
-                               traced_of[i] >= 0 ? &hits[traced_of[i]] : nullptr, c);
+            add_sample_to_film(p.x, p.y, p.path >= 0 ? batch[p.path].radiance : color3{}, p.first_hit, p.negative, c);
           }
         }
         pixels += uint64_t(count);
@@ -211,10 +225,10 @@ struct PassRunner {
   // Adds samples [first, end) to every pixel still active, until told to stop.
   void run(uint32_t first, uint32_t end, const std::vector<uint8_t>& active) const {
     const PixelWindow& w = s.window;
-    bool coherent = coherent_camera_rays && traces_packets(*ctx.accel);
+    bool batched = batching != PathBatching::none && traces_packets(*ctx.accel);
     tbb::parallel_for(tbb::blocked_range2d<int>(w.y0, w.y1, 8, w.x0, w.x1, 8), [&](const tbb::blocked_range2d<int>& r) {
-      if (coherent) {
-        progress.add(render_tile_coherent(r, first, end, active) * (end - first));
+      if (batched) {
+        progress.add(render_tile_batched(r, first, end, active) * (end - first));
         return;
       }
       uint64_t rendered = 0;
@@ -337,7 +351,7 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
                          stop.deadline);
   PixelFilter filter = make_pixel_filter(s.filter, s.filter_radius);
   PassRunner runner{ctx, s, select_integrator(s), frame, filter, want_aovs, s.transparent,
-                    options.coherent_camera_rays, options.seed, result.film, counts, stop, progress};
+                    options.path_batching, options.seed, result.film, counts, stop, progress};
 
   // More threads than TBB's limit (the cores) are not started anyway, and asking prints a warning.
   int cores = tbb::this_task_arena::max_concurrency();

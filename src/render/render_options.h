@@ -47,6 +47,16 @@ struct ShardSpec {
   ShardSplit split = ShardSplit::tiles;
 };
 
+// How a render's paths share their ray tracing (docs/performance.md measures each).
+enum class PathBatching {
+  none,         // each path alone, one ray at a time: the reference the tests compare with
+  camera_rays,  // a tile's camera rays traced together as Embree packets, then each path alone
+  // a tile's paths advance a vertex at a time together, their bounces and shadow rays traced
+  // as Embree streams (Integrator::batch): slower on the benchmark's Cornell box, see
+  // docs/performance.md
+  all_rays,
+};
+
 struct RenderOptions {
   std::optional<int> width, height, spp, max_depth;
   std::optional<RenderMode> mode;
@@ -92,9 +102,8 @@ struct RenderOptions {
   TextureFilterMode texture_filter = TextureFilterMode::trilinear;
   float noise_threshold = 0;      // 0 = off
   float contribution_cutoff = 0.001f;  // Whitted: stop recursing below this weight
-  // Camera rays traced a tile at a time, as Embree packets (intersect_nearest_coherent); false
-  // traces each alone: the reference the tests compare the packets with (the same image).
-  bool coherent_camera_rays = true;
+  // How paths share their ray tracing; every way gives the same image, bit for bit.
+  PathBatching path_batching = PathBatching::camera_rays;
   bool quiet = false;
   bool progress = false;  // print progress to stderr (the CLI sets it when stderr is a terminal)
   // --max-memory: charged for the film, the output image, the light table and the environment

@@ -1,0 +1,162 @@
+// A render whose camera rays are traced a tile at a time as Embree packets, and one whose paths
+// also advance together with their bounces and shadow rays traced as streams, are the render
+// that traces each path alone, one ray at a time (PathBatching::none, the reference), bit for
+// bit: radiance, AOVs, coverage and ray counts, for every integrator, with a lens, a filter with
+// negative lobes and a window, and with every effect the path tracer has on triangles.
+#include <doctest/doctest.h>
+
+#include "accel/scene_accel.h"
+#include "load_scene.h"
+#include "support/scene_builders.h"
+#include "support/test_support.h"
+
+using namespace radiant;
+using namespace radiant::test;
+
+namespace {
+
+bool films_identical(const Film& a, const Film& b) {
+  if (a.pixels.size() != b.pixels.size() || a.aovs.size() != b.aovs.size() || a.alpha.size() != b.alpha.size())
+    return false;
+  for (size_t i = 0; i < a.pixels.size(); ++i) {
+    const FilmPixel &p = a.pixels[i], &q = b.pixels[i];
+    if (p.samples != q.samples || p.negative_samples != q.negative_samples) return false;
+    for (int c = 0; c < 3; ++c)
+      if (!(p.sum[c] == q.sum[c]) || !(p.sum_squares[c] == q.sum_squares[c])) return false;
+  }
+  for (size_t i = 0; i < a.aovs.size(); ++i) {
+    const FilmAovs &p = a.aovs[i], &q = b.aovs[i];
+    if (!(p.depth == q.depth)) return false;
+    for (int c = 0; c < 3; ++c)
+      if (!(p.albedo[c] == q.albedo[c]) || !(p.normal[c] == q.normal[c])) return false;
+  }
+  for (size_t i = 0; i < a.alpha.size(); ++i)
+    if (!(a.alpha[i] == b.alpha[i])) return false;
+  return true;
+}
+
+// A closed box of six quads between corners `lo` and `hi`, facing out.
+void add_box(SceneDesc& scene, vec3 lo, vec3 hi, int material) {
+  vec3 a = lo, g = hi;
+  add_quad(scene, {a.x, a.y, a.z}, {a.x, g.y, a.z}, {g.x, g.y, a.z}, {g.x, a.y, a.z}, material);  // -z
+  add_quad(scene, {a.x, a.y, g.z}, {g.x, a.y, g.z}, {g.x, g.y, g.z}, {a.x, g.y, g.z}, material);  // +z
+  add_quad(scene, {a.x, a.y, a.z}, {a.x, a.y, g.z}, {a.x, g.y, g.z}, {a.x, g.y, a.z}, material);  // -x
+  add_quad(scene, {g.x, a.y, a.z}, {g.x, g.y, a.z}, {g.x, g.y, g.z}, {g.x, a.y, g.z}, material);  // +x
+  add_quad(scene, {a.x, a.y, a.z}, {g.x, a.y, a.z}, {g.x, a.y, g.z}, {a.x, a.y, g.z}, material);  // -y
+  add_quad(scene, {a.x, g.y, a.z}, {a.x, g.y, g.z}, {g.x, g.y, g.z}, {g.x, g.y, a.z}, material);  // +y
+}
+
+// Triangles only (shapes would make the render trace ray by ray): an open room under a sky,
+// a dispersive absorbing glass block, a rough metal, a mirror, an emitting panel, a point and a
+// spot light; with `cutout`, a half-transparent card as well (see-through steps, and shadows
+// that walk through occluders instead of one occlusion query each).
+SceneDesc effects_room(bool cutout) {
+  SceneDesc scene;
+  int wall = add_diffuse(scene, {0.6f, 0.55f, 0.5f});
+  add_quad(scene, {-4, 0, -4}, {-4, 0, 4}, {4, 0, 4}, {4, 0, -4}, wall);   // floor, facing up
+  add_quad(scene, {-4, 0, -4}, {4, 0, -4}, {4, 5, -4}, {-4, 5, -4}, wall);  // back wall
+  MaterialDesc glass;
+  glass.model = MaterialModel::metallic_roughness;
+  glass.metallic = 0, glass.roughness = 0, glass.transmission = 1, glass.dispersion = 2;
+  glass.thickness = 1, glass.attenuation_distance = 1.5f, glass.attenuation_color = {0.9f, 0.6f, 0.3f};
+  add_box(scene, {-1.5f, 0, -1}, {0, 1.5f, 0.5f}, add_material(scene, glass));
+  MaterialDesc metal;
+  metal.model = MaterialModel::metallic_roughness;
+  metal.base_color = {0.9f, 0.7f, 0.4f}, metal.metallic = 1, metal.roughness = 0.3f;
+  add_box(scene, {0.5f, 0, -2}, {1.8f, 2, -0.8f}, add_material(scene, metal));
+  MaterialDesc mirror;
+  mirror.kd = {0.05f, 0.05f, 0.05f}, mirror.kr = {0.8f, 0.8f, 0.8f};
+  add_quad(scene, {-3.9f, 0.2f, -3}, {-3.9f, 0.2f, 1}, {-3.9f, 3, 1}, {-3.9f, 3, -3}, add_material(scene, mirror));
+  MaterialDesc panel;
+  panel.kd = {0, 0, 0}, panel.emission = {6, 5, 4}, panel.double_sided = false;
+  add_quad(scene, {-1, 4, -1}, {1, 4, -1}, {1, 4, 1}, {-1, 4, 1}, add_material(scene, panel));  // facing down
+  if (cutout) {
+    MaterialDesc card;
+    card.model = MaterialModel::metallic_roughness;
+    card.base_color = {0.2f, 0.8f, 0.3f}, card.metallic = 0, card.alpha = 0.5f, card.alpha_mode = AlphaMode::blend;
+    add_quad(scene, {1, 0, 1}, {3, 0, 1}, {3, 2, 1}, {1, 2, 1}, add_material(scene, card));
+  }
+  scene.lights.push_back(point_light({2, 3, 2}, {8, 8, 8}));
+  LightDesc spot = point_light({-2, 3.5f, 2}, {10, 9, 8});
+  spot.kind = LightKind::spot;
+  spot.direction = normalize(vec3{1, -2, -1.5f});
+  spot.use_cone = true, spot.inner_cone = 0.3f, spot.outer_cone = 0.5f;
+  scene.lights.push_back(spot);
+  scene.environment.color = {0.2f, 0.3f, 0.5f};
+  scene.cameras.push_back(perspective_camera({0, 2, 6}, normalize(vec3{0, -0.2f, -1}), {0, 1, 0}, 50));
+  return scene;
+}
+
+// Every way of tracing; checks that the batches were used and the images agree.
+void require_same_render(const SceneDesc& scene, RenderOptions o) {
+  REQUIRE(traces_packets(*build_scene_accel(scene)));  // else every render traces ray by ray
+  o.path_batching = PathBatching::none;
+  RenderResult alone = render_scene(scene, o);
+  for (PathBatching batching : {PathBatching::camera_rays, PathBatching::all_rays}) {
+    CAPTURE(int(batching));
+    o.path_batching = batching;
+    RenderResult together = render_scene(scene, o);
+    CHECK(together.stats.rays.camera == alone.stats.rays.camera);
+    CHECK(together.stats.rays.shadow == alone.stats.rays.shadow);
+    CHECK(together.stats.rays.total() == alone.stats.rays.total());
+    CHECK(films_identical(together.film, alone.film));
+  }
+}
+
+}  // namespace
+
+TEST_CASE("batched paths: the glTF Cornell box renders the same in batches, path, naive and Whitted") {
+  SceneDesc scene = load_scene(source_path("assets/cornell.gltf").string());
+  for (RenderMode mode : {RenderMode::path, RenderMode::naive, RenderMode::whitted}) {
+    RenderOptions o;
+    o.width = 37, o.height = 29, o.spp = 3, o.mode = mode;  // tiles cut short at the edges
+    o.aovs = {"albedo", "normal", "depth"};
+    CAPTURE(int(mode));
+    require_same_render(scene, o);
+  }
+}
+
+TEST_CASE("batched paths: a lens, Mitchell's negative lobes, a window and a transparent film change nothing") {
+  SceneDesc scene = load_scene(source_path("assets/cornell.gltf").string());
+  REQUIRE(!scene.cameras.empty());
+  scene.cameras[0].lens_radius = 0.01f;
+  scene.cameras[0].focus_distance = 1;
+  RenderOptions o;
+  o.width = 40, o.height = 40, o.spp = 4, o.mode = RenderMode::path;
+  o.filter = PixelFilterKind::mitchell;
+  o.crop = PixelWindow{5, 3, 33, 38};
+  o.transparent = true;
+  require_same_render(scene, o);
+}
+
+TEST_CASE("batched paths: glass with dispersion and absorption, metal, mirror, sky, area, point and spot lights") {
+  for (bool cutout : {false, true}) {
+    CAPTURE(cutout);
+    SceneDesc scene = effects_room(cutout);
+    RenderOptions o;
+    o.width = 30, o.height = 22, o.spp = 6, o.mode = RenderMode::path, o.max_depth = 12;
+    o.aovs = {"albedo", "normal", "depth"};
+    RenderResult batched = render_scene(scene, o);
+    // The scene exercises what it is meant to: refraction, absorption, both shadow kinds.
+    CHECK((batched.settings.effects & effect_refraction) != 0);
+    CHECK((batched.settings.effects & effect_absorption) != 0);
+    CHECK(((batched.settings.effects & effect_alpha) != 0) == cutout);
+    CHECK(batched.stats.rays.refraction > 100);
+    CHECK(batched.stats.rays.shadow > 1000);
+    require_same_render(scene, o);
+    o.mode = RenderMode::naive;
+    require_same_render(scene, o);
+  }
+}
+
+TEST_CASE("batched paths: textures and normal maps of real glTF files render the same") {
+  for (const char* file : {"assets/models/checker-cube.gltf", "assets/models/normal-mapped-quad.gltf",
+                           "assets/models/instanced-boxes.glb", "assets/models/textured-cube.obj"}) {
+    CAPTURE(file);
+    SceneDesc scene = load_scene(source_path(file).string());
+    RenderOptions o;
+    o.width = 24, o.height = 24, o.spp = 4, o.mode = RenderMode::path;
+    o.env_color = color3{1, 1, 1};  // the textured OBJ is lit by the sky alone
+    require_same_render(scene, o);
+  }
+}
