@@ -118,6 +118,13 @@ TextureFilterMode parse_texture_filter(const std::string& flag, const std::strin
   throw CLI::ValidationError(flag, "unknown texture filter '" + text + "' (expected point, bilinear or trilinear)");
 }
 
+PathBatching parse_batching(const std::string& flag, const std::string& text) {
+  if (text == "none") return PathBatching::none;
+  if (text == "camera") return PathBatching::camera_rays;
+  if (text == "all") return PathBatching::all_rays;
+  throw CLI::ValidationError(flag, "unknown batching '" + text + "' (expected none, camera or all)");
+}
+
 PixelWindow parse_window(const std::string& flag, const std::string& text) {
   auto parts = split(text, ',');
   if (parts.size() != 4) throw CLI::ValidationError(flag, "expected X0,Y0,X1,Y1 in pixels, got '" + text + "'");
@@ -345,6 +352,9 @@ void RenderFlags::bind(CLI::App& app, bool image_flags) {
   app.add_option("--texture-filter", texture_filter,
                  "point (nearest texel), bilinear (full resolution) or trilinear (mip-mapped by the pixel's "
                  "footprint; default)");
+  app.add_option("--batching", batching,
+                 "How paths share ray tracing: camera (a tile's camera rays as packets; default), all (paths "
+                 "advance together, every ray in streams) or none; the image is the same");
   app.add_option("--effects", options.effects, "Switch effects off/on: e.g. -shadows,-indirect, or 'all' (generic integrator)");
   app.add_flag("--allow-external-files", allow_external_files, "Let scene files refer to files outside their folder");
   app.add_option("--max-memory", max_memory,
@@ -377,6 +387,7 @@ void RenderFlags::finish() {
   }
   if (filter_width > 0) options.filter_width = filter_width;
   if (!texture_filter.empty()) options.texture_filter = parse_texture_filter("--texture-filter", texture_filter);
+  if (!batching.empty()) options.path_batching = parse_batching("--batching", batching);
   if (!light_sampler.empty()) options.light_sampler = parse_light_sampler("--light-sampler", light_sampler);
   if (!env_color.empty()) {
     vec3 c = parse_vec3("--env-color", env_color);

@@ -35,6 +35,7 @@ SamplerKind parse_sampler(const std::string& flag, const std::string& text);
 LightSampler parse_light_sampler(const std::string& flag, const std::string& text);
 Projection parse_camera_type(const std::string& flag, const std::string& text);
 TextureFilterMode parse_texture_filter(const std::string& flag, const std::string& text);
+PathBatching parse_batching(const std::string& flag, const std::string& text);
 PixelWindow parse_window(const std::string& flag, const std::string& text);
 // "I/K" with 0 <= I < K <= 65536, and "A:B" sample indices.
 ShardSpec parse_shard(const std::string& flag, const std::string& text);
@@ -58,6 +59,7 @@ struct RenderFlags {
   RenderOptions options;
   std::string mode, sampler, light_sampler, env_color, crop, aovs, look_from, look_at, up, view, camera_type, variant;
   std::string texture_filter;
+  std::string batching;
   std::string shard, split, sample_range, filter;
   int width = 0, height = 0, spp = 0, max_depth = 0, gltf_scene = -1;
   float fov = 0;
