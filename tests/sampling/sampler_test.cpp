@@ -97,3 +97,15 @@ TEST_CASE("sampler: every value is a pure function of (pixel, index, dimension, 
     }
   }
 }
+
+TEST_CASE("sampler: the strata follow the sample count when it changes between samples of one thread") {
+  // The strata are worked out once per count; a different count must not reuse the last one's.
+  for (uint32_t samples : {16u, 9u, 16u, 25u}) {
+    uint32_t n = samples == 9 ? 3 : samples == 16 ? 4 : 5;
+    std::set<std::pair<int, int>> cells;
+    for (uint32_t i = 0; i < samples; ++i)
+      cells.insert(cell_of(sample_pixel(context(SamplerKind::jittered, i, samples)), int(n)));
+    CAPTURE(samples);
+    CHECK(cells.size() == samples);
+  }
+}
