@@ -11,6 +11,7 @@
 # and its CPU share (bench/quiet_machine.sh); ratios are per alternating triple, min/median/max.
 #
 # Usage: bench/embree_cornell.sh [--size 512] [--spp 64] [--repeats 5] [--threads 2] [--max-load 0.5]
+#                               [--radiant-flags "--batching all"]
 # Needs: embree-tools (Debian) for /usr/bin/pathtracer; builds radiant's bench targets.
 # bench/embree_cornell_noise.sh compares the two at equal noise instead of equal samples.
 set -euo pipefail
@@ -23,6 +24,7 @@ while (($#)); do
     --spp) spp=$2; shift 2 ;;
     --repeats) repeats=$2; shift 2 ;;
     --threads) threads=$2; shift 2 ;;
+    --radiant-flags) radiant_flags=$2; shift 2 ;;
     *) echo "unknown option $1" >&2; exit 2 ;;
   esac
 done

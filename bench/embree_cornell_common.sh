@@ -40,8 +40,9 @@ embree_render_configured() {
     --size "$1" "$1" --spp "$2" --max-path-length 8 -o "$3" >/dev/null 2>&1
 }
 # radiant_render SIZE SPP OUT [environment for the process...]; $radiant_seed picks the seed
-# (default 0; references use others, bench/equal_error.sh).
+# (default 0; references use others, bench/equal_error.sh) and $radiant_flags adds flags
+# (e.g. "--batching all").
 radiant_render() {
   env "${@:4}" build/radiant render "$work/cornell.scene" -o "$3" --width "$1" --height "$1" --spp "$2" --max-depth 8 \
-    --mode path --threads "$threads" --seed "${radiant_seed:-0}" --quiet
+    --mode path --threads "$threads" --seed "${radiant_seed:-0}" --quiet ${radiant_flags:-}
 }

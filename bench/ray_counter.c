@@ -1,5 +1,5 @@
 /* Counts the rays a program traces through Embree's single-ray and stream APIs (radiant traces
- * camera rays as streams, rtcIntersect1M), for comparing rays per
+ * camera rays as streams, rtcIntersect1M; with --batching all, shadow rays too, rtcOccluded1M), for comparing rays per
  * second between radiant and Embree's own tutorial. Preload it:
  *   RAY_COUNTER_OUT=counts.txt LD_PRELOAD=build/bench/libray_counter.so pathtracer ...
  * At exit it writes "intersect N\noccluded M\n" to $RAY_COUNTER_OUT (or stderr). */
@@ -32,6 +32,14 @@ void rtcOccluded1(RTCScene scene, struct RTCIntersectContext* context, struct RT
   if (!real) real = dlsym(RTLD_NEXT, "rtcOccluded1");
   atomic_fetch_add_explicit(&occluded_count, 1, memory_order_relaxed);
   real(scene, context, ray);
+}
+
+void rtcOccluded1M(RTCScene scene, struct RTCIntersectContext* context, struct RTCRay* ray, unsigned int M,
+                   size_t byteStride) {
+  static void (*real)(RTCScene, struct RTCIntersectContext*, struct RTCRay*, unsigned int, size_t);
+  if (!real) real = dlsym(RTLD_NEXT, "rtcOccluded1M");
+  atomic_fetch_add_explicit(&occluded_count, M, memory_order_relaxed);
+  real(scene, context, ray, M, byteStride);
 }
 
 __attribute__((destructor)) static void report(void) {
