@@ -114,7 +114,7 @@ int render_main(int argc, char** argv) {
     }
     job.format = format;
   }
-  if (!options.aovs.empty() && !is_float_format(image_format_name(job))) {
+  if (!options.aovs.empty() && !is_exr_format(image_format_name(job))) {
     std::cerr << "radiant render: --aov needs an EXR output (got '" << image_format_name(job) << "')\n";
     return exit_usage;
   }

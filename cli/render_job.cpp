@@ -34,7 +34,7 @@ void check_render_job_outputs(const RenderJob& job) {
   std::string extension = lowercase_extension(format);
   // A shard holds exact sums whatever the encoding: it records --half and --bit-depth for merge.
   bool shard = writes_shard(job.options);
-  if (job.options.half_float && !is_float_format(format) && !shard)
+  if (job.options.half_float && !is_exr_format(format) && !shard)
     throw std::invalid_argument("--half needs an EXR output (got '" + format + "')");
   if (job.options.bit_depth == 16 && extension != ".png" && extension != ".tif" && extension != ".tiff" && !shard)
     throw std::invalid_argument("--bit-depth 16 needs a PNG or TIFF output (got '" + format + "')");
@@ -52,12 +52,12 @@ ImageMetadata job_metadata(const std::string& scene_path, const RenderJob& job, 
 }
 
 // The image to write: what the film holds with its record, marked partial when a signal stopped
-// the render, and in a float format with the per-pixel sample counts, which say how far each
-// pixel got.
+// the render, and in EXR with the per-pixel sample counts, which say how far each pixel got (an
+// HDR file has no room for them, and asking would lose the image).
 OutputImage output_image(const std::string& scene_path, const RenderJob& job, const RenderResult& result) {
   std::vector<std::string> aovs = job.options.aovs;
   bool partial = result.stats.interrupted;
-  if (partial && is_float_format(image_format_name(job)) && std::find(aovs.begin(), aovs.end(), "spp") == aovs.end())
+  if (partial && is_exr_format(image_format_name(job)) && std::find(aovs.begin(), aovs.end(), "spp") == aovs.end())
     aovs.push_back("spp");
   OutputImage image = film_to_image(result.film, aovs);
   set_output_encoding(image, job.options, result.settings);

@@ -74,7 +74,7 @@ RenderJob parse_render_line(std::vector<std::string> words, const fs::path& base
   job.write_metadata = !flags.no_metadata;
   if (fs::path(job.output).is_relative()) job.output = (base / job.output).string();
   if (!job.stats_path.empty() && fs::path(job.stats_path).is_relative()) job.stats_path = (base / job.stats_path).string();
-  if (!job.options.aovs.empty() && !is_float_format(job.output)) throw std::invalid_argument("--aov needs an EXR output");
+  if (!job.options.aovs.empty() && !is_exr_format(job.output)) throw std::invalid_argument("--aov needs an EXR output");
   return job;
 }
 

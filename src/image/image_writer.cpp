@@ -68,6 +68,8 @@ bool is_float_format(const std::string& path) {
   return ext == ".exr" || ext == ".hdr";
 }
 
+bool is_exr_format(const std::string& path) { return lowercase_extension(path) == ".exr"; }
+
 bool stores_alpha(const std::string& path) {
   std::string ext = lowercase_extension(path);
   return ext == ".png" || ext == ".tif" || ext == ".tiff" || ext == ".exr";

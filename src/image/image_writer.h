@@ -28,6 +28,10 @@ struct OutputImage {
 // True for the formats radiant writes as linear floating point: EXR and HDR (TIFF float is not
 // chosen; PFM has no writer in OpenImageIO 2.4).
 bool is_float_format(const std::string& path);
+// True for the format that holds named channels beyond R, G, B, A and half floats: EXR (HDR's
+// RGBE has three channels and one encoding). AOVs, a partial render's sample counts and --half
+// need it.
+bool is_exr_format(const std::string& path);
 
 // True for the formats radiant writes with an alpha channel (--transparent): PNG, TIFF, EXR.
 bool stores_alpha(const std::string& path);

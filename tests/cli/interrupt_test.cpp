@@ -86,6 +86,18 @@ TEST_CASE("interrupt: SIGTERM mid-render writes the EXR so far with its per-pixe
   CHECK(hidden_files(dir.path).empty());
 }
 
+TEST_CASE("interrupt: SIGTERM mid-render to HDR writes the image so far, three channels (no room for the counts)") {
+  ScratchDir dir("sigterm-hdr");
+  fs::path scene = dir.write("closed.scene", closed_sphere_scene);
+  fs::path out = dir.file("out.hdr");
+  CommandResult r = interrupt(args_with({"render", scene, "-o", out}, slow_render), SIGTERM);
+  CHECK(r.exit_code == 143);
+  TestImage image = read_image(out);
+  CHECK(image.width == 32);
+  CHECK(image.channels == 3);
+  CHECK(hidden_files(dir.path).empty());
+}
+
 TEST_CASE("interrupt: SIGINT during a batch writes the view in progress as partial and renders no further line") {
   ScratchDir dir("sigint-batch");
   dir.write("closed.scene", closed_sphere_scene);

@@ -60,12 +60,20 @@ TEST_CASE("output: --aov writes albedo, normal, depth, variance and spp channels
   CHECK(img.at(1, 2, 2) == doctest::Approx(0.75).epsilon(0.01));
 }
 
-TEST_CASE("output: --aov needs an EXR file (usage error, nothing written)") {
+TEST_CASE("output: --aov and --half need an EXR file, also against a float HDR (usage error, nothing written)") {
   ScratchDir dir("aov-png");
   fs::path scene = dir.write("plane.scene", plane_scene);
-  CommandResult r = run_radiant("render " + quoted(scene) + " -o " + quoted(dir.file("x.png")) + " --aov albedo");
-  CHECK(r.exit_code == 2);
-  CHECK_FALSE(fs::exists(dir.file("x.png")));
+  for (const char* name : {"x.png", "x.hdr"}) {
+    CAPTURE(name);
+    CommandResult r = run_radiant("render " + quoted(scene) + " -o " + quoted(dir.file(name)) + " --aov albedo");
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find("--aov needs an EXR output") != std::string::npos);
+    CHECK_FALSE(fs::exists(dir.file(name)));
+  }
+  CommandResult half = run_radiant("render " + quoted(scene) + " -o " + quoted(dir.file("y.hdr")) + " --half");
+  CHECK(half.exit_code != 0);
+  CHECK(half.err.find("--half needs an EXR output") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir.file("y.hdr")));
 }
 
 TEST_CASE("output: an environment map lights the scene: a plane under a sky of 1 over a black ground shows its albedo") {
