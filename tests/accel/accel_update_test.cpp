@@ -72,7 +72,7 @@ bool same_bits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 }  // namespace
 
-TEST_CASE("scene changes: moved instances, deformed meshes and shapes; none when the scene is built differently") {
+TEST_CASE("scene changes: moved instances, deformed meshes and shapes, none when the scene is built differently") {
   SceneDesc before = frame_scene(0), after = frame_scene(1);
   std::optional<SceneChanges> changes = scene_changes(before, after);
   REQUIRE(changes);

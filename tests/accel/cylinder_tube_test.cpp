@@ -44,7 +44,7 @@ TEST_CASE("cylinder: rays along the axis hit the top and the bottom cap with the
   check_hit(cylinder(), {{0.3f, 0.2f, -5}, {0, 0, 1}}, 5, {0, 0, -1});
 }
 
-TEST_CASE("cylinder: a ray across the side hits it with the radial normal; above or beside it misses") {
+TEST_CASE("cylinder: a ray across the side hits it with the radial normal, above or beside it misses") {
   check_hit(cylinder(), {{5, 0, 1}, {-1, 0, 0}}, 4, {1, 0, 0});
   check_hit(cylinder(), {{0, -5, 0.5f}, {0, 1, 0}}, 4, {0, -1, 0});
   CHECK_FALSE(hits(cylinder(), {{5, 0, 2.5f}, {-1, 0, 0}}));  // above the top cap
@@ -71,7 +71,7 @@ TEST_CASE("tube: infinite along its axis, open: side hits at any height, axis-pa
   check_hit(tube(), {{0, 0, 7}, {0, 1, 0}}, 1, {0, 1, 0});  // from inside: the far wall
 }
 
-TEST_CASE("sphere: a ray through the centre hits the near side; a ray passing beside it misses") {
+TEST_CASE("sphere: a ray through the centre hits the near side, a ray passing beside it misses") {
   ShapeDesc s;
   s.kind = ShapeKind::sphere;
   s.center = {0, 0, -5};

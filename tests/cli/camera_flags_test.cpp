@@ -11,7 +11,7 @@
 using namespace radiant::test;
 namespace fs = std::filesystem;
 
-TEST_CASE("camera flags: panoramas and a lens render; their default image shapes follow the projection") {
+TEST_CASE("camera flags: panoramas and a lens render, their default image shapes follow the projection") {
   ScratchDir dir("camera-flags");
   fs::path scene = dir.write("s.scene", lit_sphere_scene);
   struct Case {

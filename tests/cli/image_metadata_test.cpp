@@ -42,7 +42,7 @@ TEST_CASE("image metadata: a render records radiant's version, its command line,
   }
 }
 
-TEST_CASE("image metadata: a batch image records the script and its line; --no-metadata on a line records nothing") {
+TEST_CASE("image metadata: a batch image records the script and its line, --no-metadata on a line records nothing") {
   ScratchDir dir("metadata-batch");
   dir.write("plane.scene", lit_plane_scene);
   fs::path script = dir.write("views.txt", std::string("scene plane.scene\n  render -o a.png") + tiny +
@@ -55,7 +55,7 @@ TEST_CASE("image metadata: a batch image records the script and its line; --no-m
   CHECK(same_pixels(dir.file("a.png"), dir.file("b.png")));
 }
 
-TEST_CASE("image metadata: merge --no-metadata writes the same bytes twice; shards without a record leave their settings") {
+TEST_CASE("image metadata: merge --no-metadata writes the same bytes twice, shards without a record leave their settings") {
   ScratchDir dir("metadata-merge");
   fs::path scene = dir.write("plane.scene", lit_plane_scene);
   std::string shards;

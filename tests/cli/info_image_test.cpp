@@ -48,7 +48,7 @@ TEST_CASE("info IMAGE: size, channels, pixel type and radiant's metadata, as tex
   CHECK(shard_info.out.find("    radiant:shard: 1/2\n") != std::string::npos);
 }
 
-TEST_CASE("info IMAGE: an image radiant did not record says so; an unreadable one is an error naming it") {
+TEST_CASE("info IMAGE: an image radiant did not record says so, an unreadable one is an error naming it") {
   ScratchDir dir("info-foreign");
   fs::path foreign = dir.file("photo.png");
   ImageWriteSpec spec;

@@ -162,7 +162,7 @@ TEST_CASE("render cli: adaptive sampling reports the distribution of per-pixel s
   CHECK(json["estimated_relative_error"] > 0);
 }
 
-TEST_CASE("render cli: --camera picks a camera by index or name; an unknown one is a usage error listing the cameras") {
+TEST_CASE("render cli: --camera picks a camera by index or name, an unknown one is a usage error listing the cameras") {
   ScratchDir dir("cli-camera");
   fs::path scene = dir.write("two.scene",
                              "@camera front\nposition 0 0 5\ndirection 0 0 -1\n"

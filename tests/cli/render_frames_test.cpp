@@ -67,7 +67,7 @@ TEST_CASE("render --frames: the file is read once and frame N is the image of a 
   CHECK(same_pixels(dir.file("alone.png"), dir.file("f-02.png")));
 }
 
-TEST_CASE("render --frames: a floor, a morphing and a turning triangle update the accelerator; each frame is a separate render's") {
+TEST_CASE("render --frames: a floor, a morphing and a turning triangle update the accelerator, each frame is a separate render's") {
   GltfBuilder b;
   b.floats({-2, -1, -2, 2, -1, -2, 2, -1, 2, -2, -1, 2}, "VEC3", 3);  // 0: floor
   b.floats({-0.5f, -0.5f, 0, 0.5f, -0.5f, 0, 0, 0.5f, 0}, "VEC3", 3);  // 1: triangle

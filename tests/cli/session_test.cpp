@@ -133,7 +133,7 @@ TEST_CASE("session: a bad command names its line, the session goes on, and quit 
   CHECK_FALSE(fs::exists(dir.file("nowhere.xyz")));
 }
 
-TEST_CASE("session: without a scene, commands that need one say so; the end of input exits cleanly") {
+TEST_CASE("session: without a scene, commands that need one say so, the end of input exits cleanly") {
   ScratchDir dir("session-empty");
   RadiantProcess session({"session", "-o", dir.file("view.png").string()}, piped());
   session.write_stdin("turn 0 10 0\nrender " + copy_scene(dir).string() + "\nset width 16\nset height 16\nset spp 1\n");

@@ -166,7 +166,7 @@ TEST_CASE("merge cli: --keep-accum merges part of the shards into a shard that m
   CHECK_FALSE(fs::exists(refused));
 }
 
-TEST_CASE("merge cli: a sobol render of samples 0:4 extended by samples 4:16 of 16 spp equals a 16-spp render; jittered is refused") {
+TEST_CASE("merge cli: a sobol render of samples 0:4 extended by samples 4:16 of 16 spp equals a 16-spp render, jittered is refused") {
   ScratchDir dir("merge-extend");
   std::string scene = quoted(source_path("assets/cornell.gltf")), base = " --width 10 --height 8 --max-depth 2";
   fs::path single = dir.file("single.exr"), early = dir.file("early.exr"), later = dir.file("later.exr"),

@@ -57,7 +57,7 @@ TEST_CASE("transparent cli: PNG holds straight alpha, the EXR's premultiplied co
   CHECK(partial > 0);
 }
 
-TEST_CASE("transparent cli: without --transparent the sky is seen and there is no alpha; .scene's transparent turns it on") {
+TEST_CASE("transparent cli: without --transparent the sky is seen and there is no alpha, .scene's transparent turns it on") {
   ScratchDir dir("transparent-setting");
   fs::path plain = dir.file("plain.exr"), set = dir.file("set.exr"), flag = dir.file("flag.exr");
   radiant_ok("render " + sphere() + " -o " + quoted(plain) + sphere_flags);

@@ -129,7 +129,7 @@ TEST_CASE("exact sum: 2^24 terms of the largest float squared fit without overfl
   CHECK(total.value() == std::ldexp(square, 24));
 }
 
-TEST_CASE("exact sum: a stored state comes back; states no sum reaches are refused") {
+TEST_CASE("exact sum: a stored state comes back, states no sum reaches are refused") {
   ExactSum sum;
   for (double t : adversarial_terms()) sum.add(t);
   ExactSum back;

@@ -85,7 +85,7 @@ TEST_CASE("shard merge: an interrupted shard is refused") {
   CHECK(refusal(shards) == "shard-1.exr: the shard is incomplete (interrupted by SIGTERM); render it again");
 }
 
-TEST_CASE("shard merge: sobol sample ranges of a larger total extend a render; jittered ones cannot") {
+TEST_CASE("shard merge: sobol sample ranges of a larger total extend a render, jittered ones cannot") {
   NamedShard first = tile_shard(0), more = tile_shard(0);
   for (NamedShard* s : {&first, &more}) s->info.x0 = 0, s->info.y0 = 0, s->info.x1 = 16, s->info.y1 = 8, s->info.shard_count = 0;
   first.info.spp = 8, first.info.sample_end = 8;

@@ -40,7 +40,7 @@ TEST_CASE("exr header: an attribute declaring more bytes than the file holds is 
   CHECK(error.find("corrupt OpenEXR header") != std::string::npos);
 }
 
-TEST_CASE("exr header: a data window of 2^30 scanlines in a small file is refused; one it can index is not") {
+TEST_CASE("exr header: a data window of 2^30 scanlines in a small file is refused, one it can index is not") {
   ScratchDir dir("exr-window");
   CHECK(check_exr_header(dir.write("tall.exr", exr_file(0, (1 << 30) - 1, 64)).string()).problem.find("chunks") !=
         std::string::npos);

@@ -35,7 +35,7 @@ std::string libraries_loaded_rendering(const ScratchDir& dir, const fs::path& sc
 
 }  // namespace
 
-TEST_CASE("image files: a render to PNG never loads OpenImageIO; a render to EXR loads it through the module") {
+TEST_CASE("image files: a render to PNG never loads OpenImageIO, a render to EXR loads it through the module") {
   ScratchDir png_dir("io-png"), exr_dir("io-exr");
   std::string png_run = libraries_loaded_rendering(png_dir, png_dir.write("plane.scene", lit_plane_scene),
                                                    png_dir.file("out.png"));

@@ -74,7 +74,7 @@ TEST_CASE("render metadata: PNG keeps ASCII in tEXt, UTF-8 beyond it in iTXt, an
   CHECK(read_image_header(path, nullptr).metadata == written);
 }
 
-TEST_CASE("render metadata: an image radiant did not record has no record; a damaged record names the attribute") {
+TEST_CASE("render metadata: an image radiant did not record has no record, a damaged record names the attribute") {
   CHECK_FALSE(parse_render_metadata({}).has_value());
   ImageMetadata foreign = {{"Software", "GIMP 2.10"}, {"Comment", "holiday"}, {"Title", "beach"}};
   CHECK_FALSE(parse_render_metadata(foreign).has_value());
@@ -96,7 +96,7 @@ TEST_CASE("render metadata: radiant's attributes are Software and Comment when S
                                                    {"radiant:spp", "4"}});
 }
 
-TEST_CASE("render metadata: a packed description gives back every attribute; a foreign description stays as it is") {
+TEST_CASE("render metadata: a packed description gives back every attribute, a foreign description stays as it is") {
   ImageMetadata metadata = render_metadata(every_field());
   ImageMetadata packed = packed_metadata(metadata);
   REQUIRE(packed.size() == 2);  // Software for viewers, and the description

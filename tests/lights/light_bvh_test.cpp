@@ -162,7 +162,7 @@ TEST_CASE("light BVH: behind every one-sided light, where none reaches, the choi
   CHECK(light_choice_probability(lights, below, up, 6) + light_choice_probability(lights, below, up, 7) > 0.5);
 }
 
-TEST_CASE("light BVH: a point beside one cluster of lights chooses that cluster; power sampling cannot") {
+TEST_CASE("light BVH: a point beside one cluster of lights chooses that cluster, power sampling cannot") {
   SceneDesc scene;
   int lamp = add_emitter(scene, {1, 1, 1}, false);
   for (int i = 0; i < 8; ++i) add_ceiling_lamp(scene, -10 + 0.5f * float(i), 1, 0, 0.1f, lamp);

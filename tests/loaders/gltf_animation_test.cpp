@@ -118,7 +118,7 @@ TEST_CASE("gltf animation: animations are chosen by name or index, and an unknow
   CHECK(load_error(dir, path, options) == "a.gltf: --animation 'walk': no such animation (2 animations: still, move)");
 }
 
-TEST_CASE("gltf animation: --frame N --fps F --same-noise renders the image of --time N/F; --frame needs --fps") {
+TEST_CASE("gltf animation: --frame N --fps F --same-noise renders the image of --time N/F, --frame needs --fps") {
   ScratchDir dir("gltf-animation-cli");
   std::string gltf = animated("translation", 0, {0, 1}, {-0.5f, -0.5f, 0, 0.5f, 0, 0}, "LINEAR", "VEC3");
   std::string path = dir.write("a.gltf", gltf).string();

@@ -81,7 +81,7 @@ TEST_CASE("obj: without vn, faces are flat unless a smoothing group asks for sha
   CHECK(mesh.normals[1].x < 0);
 }
 
-TEST_CASE("obj: a file of bare faces is flat and grey; its missing light is render's warning, not the loader's") {
+TEST_CASE("obj: a file of bare faces is flat and grey, its missing light is render's warning, not the loader's") {
   ScratchDir dir("obj-dark");
   std::string path = dir.write("a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").string();
   SceneDesc scene = load_scene(path);

@@ -97,7 +97,7 @@ struct StripedScene {
   }
 };
 
-TEST_CASE("trilinear lookups blend the two levels around the footprint's; point and bilinear ignore it") {
+TEST_CASE("trilinear lookups blend the two levels around the footprint's, point and bilinear ignore it") {
   StripedScene striped;
   CHECK(striped.value(1, TextureFilterMode::trilinear) == 0);  // one texel: level 0
   CHECK(striped.value(2, TextureFilterMode::trilinear) == doctest::Approx(0.5f));

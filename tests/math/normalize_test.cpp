@@ -30,7 +30,7 @@ TEST_CASE("normalize: unit length for vectors whose squared length overflows or 
   CHECK(normalize(vec3{3e19f, -4e19f, 0}).x == doctest::Approx(0.6f));
 }
 
-TEST_CASE("normalize: the plain formula in float's normal range; zero, infinities and NaN unchanged") {
+TEST_CASE("normalize: the plain formula in float's normal range, zero, infinities and NaN unchanged") {
   for (vec3 v : {vec3{1, 2, 3}, vec3{-1e18f, 5, 2e17f}, vec3{1e-18f, 0, 0}}) CHECK(same_bits(normalize(v), v * (1 / length(v))));
   CHECK(same_bits(normalize(vec3{0, 0, 0}), vec3{0, 0, 0}));
   float inf = std::numeric_limits<float>::infinity();

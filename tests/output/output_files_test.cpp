@@ -89,7 +89,7 @@ TEST_CASE("output place: a missing folder, a file for a folder and a folder for 
   CHECK_THROWS_WITH(check_output_folder(dir.file("file.txt").string()), doctest::Contains("is not a folder"));
 }
 
-TEST_CASE("distinct files: the same file by path spelling, symlink or hard link is refused; repeated inputs are fine") {
+TEST_CASE("distinct files: the same file by path spelling, symlink or hard link is refused, repeated inputs are fine") {
   ScratchDir dir("distinct");
   fs::path scene = dir.write("scene.gltf", "{}");
   fs::create_symlink(scene, dir.file("link.gltf"));

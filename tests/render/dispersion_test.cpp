@@ -79,7 +79,7 @@ std::array<int, 3> measured_lit_columns(const Film& film) {
   return lit;
 }
 
-TEST_CASE("dispersion: each channel refracts with its own wavelength's IOR; dispersion 0 bends all alike") {
+TEST_CASE("dispersion: each channel refracts with its own wavelength's IOR, dispersion 0 bends all alike") {
   RenderOptions o;
   o.width = width, o.height = 8, o.spp = 48, o.max_depth = 4;
   o.mode = RenderMode::path;

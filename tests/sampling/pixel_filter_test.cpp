@@ -91,7 +91,7 @@ TEST_CASE("pixel filter: the sampling density is the filter's |f| over its integ
   }
 }
 
-TEST_CASE("pixel filter: weights average to 1 with one magnitude per filter; only Mitchell's lobes are negative") {
+TEST_CASE("pixel filter: weights average to 1 with one magnitude per filter, only Mitchell's lobes are negative") {
   for (PixelFilterKind kind : all_filters) {
     CAPTURE(pixel_filter_name(kind));
     PixelFilter filter = make_pixel_filter(kind, default_filter_radius(kind));
