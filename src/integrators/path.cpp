@@ -156,19 +156,20 @@ template <uint32_t E>
 }
 
 // A path between two vertices: everything its loop carries from one hit to the next.
+// PathVariant::start sets every field; previous_* are read only after a bounce wrote them.
 struct PathState {
   Ray ray;  // the ray just traced, or about to be
-  color3 radiance, throughput = {1, 1, 1};
-  const SampleContext* sample = nullptr;
-  FirstHit* first_hit = nullptr;
-  uint64_t RayCounts::*ray_kind = &RayCounts::camera;  // the kind of `ray`, counted when traced
-  bool specular_bounce = true;
-  float previous_pdf = 0;
+  color3 radiance, throughput;
+  const SampleContext* sample;
+  FirstHit* first_hit;
+  uint64_t RayCounts::*ray_kind;  // the kind of `ray`, counted when traced
+  bool specular_bounce;
+  float previous_pdf;
   vec3 previous_position, previous_normal;
-  int depth = 0, max_depth = 0;
-  int transparent_steps = 0;
-  int medium = -1;   // the absorbing volume the path is inside (a material index), or -1
-  int channel = -1;  // the colour channel the path carries after a dispersive surface, or -1
+  int depth, max_depth;
+  int transparent_steps;
+  int medium;   // the absorbing volume the path is inside (a material index), or -1
+  int channel;  // the colour channel the path carries after a dispersive surface, or -1
 };
 
 // Materials resolved at one vertex (one per thread, reused: they are large).
@@ -302,7 +303,8 @@ struct PathVariant {
     return true;
   }
 
-  // A path at its camera ray, set in place (see sample_one_light).
+  // A path at its camera ray, set field by field in place (see sample_one_light): the batch's
+  // workspace reuses its states.
   static void start(PathState& path, const RenderContext& ctx, const Ray& camera_ray, const SampleContext& sample,
                     FirstHit* first_hit) {
     path.radiance = {};
@@ -340,9 +342,6 @@ struct PathVariant {
     return path.radiance;
   }
 
-  // The batch's paths advance a vertex at a time together: each stage's shadow rays, then its
-  // next rays, are traced as one stream. Each path sees the same values in the same order as
-  // in run(), so its radiance is run()'s bit for bit.
   // What a batch keeps per path, allocated once per thread: constructing it for every batch
   // (the member initialisers) was a measurable share of the batch's time.
   struct BatchWorkspace {
@@ -355,6 +354,9 @@ struct PathVariant {
     VertexScratch scratch;
   };
 
+  // The batch's paths advance a vertex at a time together: each stage's shadow rays, then its
+  // next rays, are traced as one stream. Each path sees the same values in the same order as
+  // in run(), so its radiance is run()'s bit for bit.
   static void run_batch(const RenderContext& ctx, BatchPath* batch, int count, RayCounts& counts) {
     static thread_local BatchWorkspace workspace;
     auto& [paths, lights, rays, hits, occluded, live, shadowed, scratch] = workspace;
