@@ -71,9 +71,10 @@ int hit_light_index(const LightTable& lights, const HitId& id) {
   return area < 0 ? -1 : int(lights.delta_lights.size()) + area;
 }
 
-// One light sample's contribution, already scaled by the path's throughput. With opaque
-// shadows its shadow ray is left to the caller (`traces`), who may trace it with others: the
-// contribution is then `unblocked` or `blocked` by its answer. Otherwise `unblocked` is final.
+// One light sample's contribution (sample_one_light leaves it before the path's throughput,
+// advance scales it). With opaque shadows its shadow ray is left to the caller (`traces`), who
+// may trace it with others: the contribution is then `unblocked` or `blocked` by its answer.
+// Otherwise `unblocked` is final.
 struct LightSampleResult {
   color3 unblocked, blocked;
   Ray shadow_ray;
@@ -84,8 +85,9 @@ struct LightSampleResult {
 // contribution before the path's throughput. `out` is written in place: built elsewhere and
 // copied, its ray would stall on store forwarding.
 template <uint32_t E>
-[[gnu::always_inline]] inline void sample_one_light(const RenderContext& ctx, const SurfaceHit& hit, const Bsdf& bsdf, const HitShading& f,
-                      const SampleContext& sample, int depth, RayCounts& counts, LightSampleResult& out) {
+[[gnu::always_inline]] inline void sample_one_light(const RenderContext& ctx, const SurfaceHit& hit, const Bsdf& bsdf,
+                                                    const HitShading& f, const SampleContext& sample, int depth,
+                                                    RayCounts& counts, LightSampleResult& out) {
   out.traces = false;
   out.unblocked = {};
   const LightTable& lights = *ctx.lights;
@@ -183,8 +185,8 @@ struct PathVariant {
   // The path's vertex at `id`, the hit of path.ray: adds what it sees, takes a light sample
   // (its shadow ray left in `light` when light.traces) and sets the next ray. Returns whether
   // the path goes on along path.ray.
-  [[gnu::always_inline]] static bool advance(const RenderContext& ctx, PathState& path, const HitId& id, VertexScratch& scratch,
-                      LightSampleResult& light, RayCounts& counts) {
+  [[gnu::always_inline]] static bool advance(const RenderContext& ctx, PathState& path, const HitId& id,
+                                             VertexScratch& scratch, LightSampleResult& light, RayCounts& counts) {
     const LightTable& lights = *ctx.lights;
     const SampleContext& sample = *path.sample;
     const Ray& ray = path.ray;

@@ -166,8 +166,9 @@ struct PassRunner {
   }
 
   // A tile sample by sample: each sample's camera rays, coherent across the tile, are traced
-  // together as packets; the paths go on from their hits alone, or as a batch (all_rays). Every pixel gets the same samples, in the same order, as render_pixel gives it, and
-  // each the same value. Returns the pixels rendered.
+  // together as packets; the paths go on from their hits alone, or as a batch (all_rays).
+  // Every pixel gets the same samples, in the same order, as render_pixel gives it, and each the
+  // same value. Returns the pixels rendered.
   uint64_t render_tile_batched(const tbb::blocked_range2d<int>& r, uint32_t first, uint32_t end,
                                 const std::vector<uint8_t>& active) const {
     static_assert(max_batch_paths >= 64, "a batch holds the largest tile run() makes: grain 8 x 8");
