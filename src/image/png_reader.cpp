@@ -5,7 +5,9 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstdint>
 #include <cstring>
+#include <string>
 #include <vector>
 
 namespace radiant {
@@ -154,6 +156,39 @@ bool is_png_file(const std::string& path) {
   return png;
 }
 
+// libpng allocates a metadata chunk's declared length before reading it: a 200-byte file
+// declaring a 1.7 GB text chunk asked for 1.7 GB (found by the image fuzzer), and libpng's own
+// chunk limit does not cover text chunks. So the chunk headers are walked first: metadata (any
+// chunk but pixel data, IDAT, which libpng streams) that runs past the end of the file or is
+// longer than max_png_metadata_chunk_bytes is refused. Leaves the file at its start.
+static bool check_chunk_lengths(FILE* file, std::string& error) {
+  long offset = 8;  // after the signature
+  if (std::fseek(file, 0, SEEK_END) != 0) return error = std::strerror(errno), false;
+  long size = std::ftell(file);
+  unsigned char header[8];
+  while (offset + 8 <= size) {
+    if (std::fseek(file, offset, SEEK_SET) != 0 || std::fread(header, 1, 8, file) != 8) break;
+    uint32_t length = uint32_t(header[0]) << 24 | uint32_t(header[1]) << 16 | uint32_t(header[2]) << 8 | header[3];
+    std::string type(reinterpret_cast<const char*>(header) + 4, 4);
+    bool pixels = type == "IDAT";
+    std::string where = "PNG chunk '" + type + "' at byte " + std::to_string(offset) + " declares " +
+                        std::to_string(length) + " bytes";
+    if (pixels && uint64_t(length) + 12 > uint64_t(size - offset)) break;  // truncated: libpng reports it
+    if (uint64_t(length) + 12 > uint64_t(size - offset)) {
+      error = where + ", past the end of the file (" + std::to_string(size) + " bytes)";
+      return false;
+    }
+    if (!pixels && length > max_png_metadata_chunk_bytes) {
+      error = where + ", more than a metadata chunk may hold (" + std::to_string(max_png_metadata_chunk_bytes) + ")";
+      return false;
+    }
+    if (type == "IEND") break;
+    offset += 12 + long(length);
+  }
+  std::rewind(file);
+  return true;
+}
+
 std::unique_ptr<ImageSource> open_png(const std::string& path, std::string& error) {
   auto state = std::make_unique<PngState>();
   state->file = std::fopen(path.c_str(), "rb");
@@ -167,6 +202,7 @@ std::unique_ptr<ImageSource> open_png(const std::string& path, std::string& erro
     error = "cannot start libpng";
     return nullptr;
   }
+  if (!check_chunk_lengths(state->file, error)) return nullptr;
   if (!read_header(*state)) {
     error = state->message;
     return nullptr;

@@ -3,12 +3,17 @@
 // message; and a PNG then needs no OpenImageIO at all, like the PNG writer.
 #pragma once
 
+#include <cstddef>
 #include <memory>
 #include <string>
 
 #include "image/image_io_module.h"
 
 namespace radiant {
+
+// The largest metadata chunk (text, ICC profile, ...) a PNG may hold: the largest allocation
+// its header can ask libpng for.
+constexpr size_t max_png_metadata_chunk_bytes = size_t(8) << 20;
 
 // Whether the file at `path` starts with the PNG signature.
 bool is_png_file(const std::string& path);
