@@ -47,10 +47,14 @@ LightIterator partition_lights(LightIterator begin, LightIterator end, const Lig
       LightBounds& bucket = buckets[size_t(bucket_of(*it, axis, low, span))];
       bucket = merge(bucket, it->bounds);
     }
+    // Every split's two sides from one sweep each way: merging is the build's dearest step.
+    std::array<LightBounds, split_buckets> above_split{};  // [s]: buckets s + 1 and after
+    for (int split = split_buckets - 2; split >= 0; --split)
+      above_split[size_t(split)] = merge(above_split[size_t(split + 1)], buckets[size_t(split + 1)]);
+    LightBounds below;
     for (int split = 0; split < split_buckets - 1; ++split) {
-      LightBounds below, above;
-      for (int b = 0; b <= split; ++b) below = merge(below, buckets[size_t(b)]);
-      for (int b = split + 1; b < split_buckets; ++b) above = merge(above, buckets[size_t(b)]);
+      below = merge(below, buckets[size_t(split)]);
+      const LightBounds& above = above_split[size_t(split)];
       float cost = group_cost(below, extent, axis) + group_cost(above, extent, axis);
       if (cost < best_cost) best_cost = cost, best_axis = axis, best_bucket = split;
     }
