@@ -10,6 +10,12 @@
 # (power / BVH: how many times lower the BVH's error is), and every run records the load and its
 # CPU share (bench/quiet_machine.sh).
 #
+# Two errors are reported: over the whole image, and over the lit surfaces alone (the pixels that
+# see no lamp: those where the reference is saturated, grown by one pixel to take the lamps'
+# partly covered edges). The lamps seen directly are the same for both samplers (emission is
+# not light-sampled), but their edges' antialiasing noise is most of the whole image's error at
+# 16 spp; the lit surfaces show what light selection changes.
+#
 # Before the timing, both render --equal-spp samples per pixel (the scene's own 16 by default):
 # the error at equal samples, which is not a timing and holds on any machine.
 #
@@ -55,14 +61,30 @@ clamped_linear "$work/reference1.exr" "$work/reference1c.exr"
 clamped_linear "$work/reference2.exr" "$work/reference2c.exr"
 reference_error=$(reference_error "$work/reference1c.exr" "$work/reference2c.exr")
 level=$(mean_value "$work/reference1c.exr")
+# keep.exr: 1 on the lit surfaces, 0 on and next to a lamp seen directly.
+oiiotool "$work/reference1c.exr" --maxchan --subc 0.999 --mulc 1e6 --clamp:min=0:max=1 --dilate 3x3 \
+  --mulc -1 --addc 1 --ch 0,0,0 --chnames R,G,B -o "$work/keep.exr"
+lit_share=$(mean_value "$work/keep.exr")
+oiiotool "$work/reference1c.exr" "$work/keep.exr" --mul -o "$work/reference1m.exr"
+oiiotool "$work/reference2c.exr" "$work/keep.exr" --mul -o "$work/reference2m.exr"
+reference_error_lit=$(reference_error "$work/reference1m.exr" "$work/reference2m.exr")
+level_lit=$(mean_value "$work/reference1m.exr")
 
-# relative_error_of IMAGE.exr: sets relative (see above).
+# relative_error_of IMAGE.exr: sets relative and relative_lit (see above). The masked images'
+# RMS and mean are over every pixel, zeros included: RMS / sqrt(share) and mean / share are
+# those of the lit pixels.
 relative_error_of() {
   clamped_linear "$1" "$work/clamped.exr"
-  local own
+  oiiotool "$work/clamped.exr" "$work/keep.exr" --mul -o "$work/masked.exr"
+  local own own_lit
   own=$(own_error "$(rms_error "$work/clamped.exr" "$work/reference1c.exr")" "$reference_error")
+  own_lit=$(own_error "$(rms_error "$work/masked.exr" "$work/reference1m.exr")" "$reference_error_lit")
   relative=$(awk -v e="$own" -v m="$level" 'BEGIN {printf "%.4g", e / m}')
+  relative_lit=$(awk -v e="$own_lit" -v m="$level_lit" -v f="$lit_share" 'BEGIN {printf "%.4g", e * sqrt(f) / m}')
 }
+
+# ratio P B: P / B, how many times lower B is.
+ratio() { awk -v p="$1" -v b="$2" 'BEGIN {printf "%.4g", (b > 0 ? p / b : 0)}'; }
 
 # measure SAMPLER: renders for $seconds, sets timed_seconds/timed_note, spp_reached and relative.
 measure() {
@@ -73,26 +95,29 @@ measure() {
 
 render power 0 "$work/power_equal.exr" --spp "$equal_spp"
 relative_error_of "$work/power_equal.exr"
-power_equal=$relative
+power_equal=$relative power_equal_lit=$relative_lit
 render bvh 0 "$work/bvh_equal.exr" --spp "$equal_spp"
 relative_error_of "$work/bvh_equal.exr"
-bvh_equal=$relative
+bvh_equal=$relative bvh_equal_lit=$relative_lit
 
 require_quiet_machine "$max_load"
-ratios=() log=""
+ratios=() ratios_lit=() log=""
 for ((i = 0; i < repeats; i++)); do
-  measure power; p=$relative p_spp=$spp_reached p_note="$timed_seconds s, $timed_note"
-  measure bvh; b=$relative b_spp=$spp_reached b_note="$timed_seconds s, $timed_note"
-  ratios+=("$(awk -v p="$p" -v b="$b" 'BEGIN {printf "%.4g", (b > 0 ? p / b : 0)}')")
-  log+="| $((i + 1)) | $p_spp | $p | $p_note | $b_spp | $b | $b_note |"$'\n'
+  measure power; p=$relative pl=$relative_lit p_spp=$spp_reached p_note="$timed_seconds s, $timed_note"
+  measure bvh; b=$relative bl=$relative_lit b_spp=$spp_reached b_note="$timed_seconds s, $timed_note"
+  ratios+=("$(ratio "$p" "$b")") ratios_lit+=("$(ratio "$pl" "$bl")")
+  log+="| $((i + 1)) | $p_spp | $p | $pl | $p_note | $b_spp | $b | $bl | $b_note |"$'\n'
 done
 
 echo "assets/many-lights.scene (400 emissive quads), ${width}x${height}, path, depth 3, $threads threads, $seconds s each"
 echo "relative error = RMS error (linear, clamped to [0, 1]) / mean of the reference ($level), the reference's own"
 echo "error ($reference_error, from two $reference_spp-spp BVH renders on seeds 1 and 2) removed"
-echo "at $equal_spp spp: relative error power $power_equal, BVH $bvh_equal (power / BVH $(awk -v p="$power_equal" -v b="$bvh_equal" 'BEGIN {printf "%.3g", (b > 0 ? p / b : 0)}'))"
+echo "lit surfaces: the $lit_share of the pixels that see no lamp (level $level_lit, reference error $reference_error_lit)"
+echo "at $equal_spp spp, whole image: relative error power $power_equal, BVH $bvh_equal (power / BVH $(ratio "$power_equal" "$bvh_equal"))"
+echo "at $equal_spp spp, lit surfaces: relative error power $power_equal_lit, BVH $bvh_equal_lit (power / BVH $(ratio "$power_equal_lit" "$bvh_equal_lit"))"
 echo "at equal time:"
-echo "| run | power spp | power relative error | power time (load, CPU share) | BVH spp | BVH relative error | BVH time |"
-echo "|---|---|---|---|---|---|---|"
+echo "| run | power spp | power error, whole | power error, lit | power time (load, CPU share) | BVH spp | BVH error, whole | BVH error, lit | BVH time |"
+echo "|---|---|---|---|---|---|---|---|---|"
 printf '%s' "$log"
-summarize_ratios "relative error, power / BVH, at equal time" "${ratios[@]}"
+summarize_ratios "relative error of the whole image, power / BVH, at equal time" "${ratios[@]}"
+summarize_ratios "relative error of the lit surfaces, power / BVH, at equal time" "${ratios_lit[@]}"
