@@ -12,6 +12,9 @@
 #
 # Usage: bench/embree_cornell.sh [--size 512] [--spp 64] [--repeats 5] [--threads 2] [--max-load 0.5]
 #                               [--radiant-flags "--batching all"]
+#                               [--scene cornell.scene|cornell.gltf|cornell-lambertian.gltf]
+# --scene picks radiant's file for the same box (embree_cornell_common.sh): the .scene (default),
+# or glTF with the general metallic-roughness model or with exactly Lambertian materials.
 # Needs: embree-tools (Debian) for /usr/bin/pathtracer; builds radiant's bench targets.
 # bench/embree_cornell_noise.sh compares the two at equal noise instead of equal samples.
 set -euo pipefail
@@ -25,6 +28,7 @@ while (($#)); do
     --repeats) repeats=$2; shift 2 ;;
     --threads) threads=$2; shift 2 ;;
     --radiant-flags) radiant_flags=$2; shift 2 ;;
+    --scene) radiant_scene=$2; shift 2 ;;
     *) echo "unknown option $1" >&2; exit 2 ;;
   esac
 done

@@ -23,6 +23,12 @@ attenuation 0 0 1
 @mesh
 file cornell_box.obj
 SCENE
+# The same box as glTF (bench/cornell_obj_to_gltf.py): the general metallic-roughness model
+# (metallic 0, roughness 1), and the same made exactly Lambertian (specularFactor 0).
+python3 bench/cornell_obj_to_gltf.py "$work/cornell_box.obj" "$work/cornell_box.mtl" "$work/cornell.gltf"
+python3 bench/cornell_obj_to_gltf.py "$work/cornell_box.obj" "$work/cornell_box.mtl" "$work/cornell-lambertian.gltf" --lambertian
+[[ -f $work/${radiant_scene:-cornell.scene} ]] ||
+  { echo "--scene: one of cornell.scene, cornell.gltf, cornell-lambertian.gltf, not ${radiant_scene:-}" >&2; exit 2; }
 
 # embree_render SIZE SPP OUT.ppm [environment for the process...]
 embree_render() { embree_render_configured "" "$@"; }
@@ -40,9 +46,9 @@ embree_render_configured() {
     --size "$1" "$1" --spp "$2" --max-path-length 8 -o "$3" >/dev/null 2>&1
 }
 # radiant_render SIZE SPP OUT [environment for the process...]; $radiant_seed picks the seed
-# (default 0; references use others, bench/equal_error.sh) and $radiant_flags adds flags
-# (e.g. "--batching all").
+# (default 0; references use others, bench/equal_error.sh), $radiant_flags adds flags
+# (e.g. "--batching all") and $radiant_scene picks the file (default cornell.scene).
 radiant_render() {
-  env "${@:4}" build/radiant render "$work/cornell.scene" -o "$3" --width "$1" --height "$1" --spp "$2" --max-depth 8 \
+  env "${@:4}" build/radiant render "$work/${radiant_scene:-cornell.scene}" -o "$3" --width "$1" --height "$1" --spp "$2" --max-depth 8 \
     --mode path --threads "$threads" --seed "${radiant_seed:-0}" --quiet ${radiant_flags:-}
 }

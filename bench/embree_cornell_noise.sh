@@ -17,6 +17,8 @@
 #
 # Usage: bench/embree_cornell_noise.sh [--size 512] [--spp 64] [--reference-spp 1024] [--repeats 5]
 #                                      [--threads 2] [--max-load 0.5]
+#                                      [--scene cornell.scene|cornell.gltf|cornell-lambertian.gltf]
+# (--scene: radiant's file for the box, as in bench/embree_cornell.sh.)
 # Needs: embree-tools (pathtracer), openimageio-tools (oiiotool; scripts/setup.sh installs it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -29,6 +31,7 @@ while (($#)); do
     --reference-spp) reference_spp=$2; shift 2 ;;
     --repeats) repeats=$2; shift 2 ;;
     --threads) threads=$2; shift 2 ;;
+    --scene) radiant_scene=$2; shift 2 ;;
     *) echo "unknown option $1" >&2; exit 2 ;;
   esac
 done
