@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# radiant against Embree's tutorial path tracer at equal samples, both running at once: each
+# round starts the two together, one thread each on its own core, so both see the same clock
+# and the same background; which one starts first alternates. On a virtual machine whose
+# effective clock drifts between runs (bench/embree_cornell.sh has seen the tutorial take 9.5 s
+# and 13.9 s for the same render in one session), this ratio is steadier than one of runs in
+# turn. It measures one thread each, not the two-thread render the other benchmark times; both
+# processes' whole CPU time counts (loading and building included, as in that one's wall time).
+# radiant writes PNG: EXR and PPM load OpenImageIO, about 0.4 s of start-up on this machine.
+#
+# Usage: bench/embree_cornell_paired.sh [--rounds 10] [--size 256] [--spp 32]
+#                                       [--scene cornell.scene|cornell.gltf|cornell-lambertian.gltf]
+# Needs: embree-tools (pathtracer).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+rounds=10 size=256 spp=32 threads=1
+while (($#)); do
+  case $1 in
+    --rounds) rounds=$2; shift 2 ;;
+    --size) size=$2; shift 2 ;;
+    --spp) spp=$2; shift 2 ;;
+    --scene) radiant_scene=$2; shift 2 ;;
+    *) echo "unknown option $1" >&2; exit 2 ;;
+  esac
+done
+cmake --build build --target radiant -j2 >/dev/null
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+source bench/embree_cornell_common.sh
+source bench/quiet_machine.sh
+
+# cpu_seconds OUT_FILE COMMAND...: the command's user + system CPU time, written to OUT_FILE.
+cpu_seconds() {
+  local out=$1 TIMEFORMAT='%U %S'
+  shift
+  { time "$@" >/dev/null; } 2>"$out.time"
+  awk '{print $1 + $2}' "$out.time" >"$out"
+}
+tutorial() { cpu_seconds "$work/tutorial" embree_render "$size" "$spp" "$work/tutorial.ppm"; }
+radiant() { cpu_seconds "$work/radiant" radiant_render "$size" "$spp" "$work/radiant.png"; }
+
+ratios=()
+for ((i = 0; i < rounds; i++)); do
+  if ((i % 2)); then
+    radiant & tutorial & wait
+  else
+    tutorial & radiant & wait
+  fi
+  t=$(<"$work/tutorial") r=$(<"$work/radiant")
+  echo "round $((i + 1)): tutorial $t s, radiant $r s (CPU)"
+  ratios+=("$(awk -v t="$t" -v r="$r" 'BEGIN {print r / t}')")
+done
+echo "Cornell box (Embree tutorial scene; radiant's file ${radiant_scene:-cornell.scene}), ${size}x${size}, $spp spp, path length 8"
+summarize_ratios "CPU time ratio radiant / Embree tutorial, one thread each, run together" "${ratios[@]}"
