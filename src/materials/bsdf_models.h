@@ -77,6 +77,7 @@ struct MetallicRoughnessLobes : MetallicRoughnessParams {
   vec3 wo;             // local, wo.z > 0
   float eta = 1.5f;    // of the glass: n_transmitted / n_incident seen from wo
   float p_specular = 0, p_diffuse = 0, p_transmission = 0;
+  float coating_o = 1;  // light crossing the plastic's coating along wo: every diffuse eval needs it
 };
 // `tangent` (world space, any length; zero when unknown) orients an anisotropic lobe's frame.
 MetallicRoughnessLobes make_metallic_roughness_lobes(const MetallicRoughnessParams& params, vec3 n, vec3 wo,

@@ -77,7 +77,7 @@ bool refraction_half_vector(const MetallicRoughnessLobes& l, vec3 wi, vec3& h) {
 }
 
 color3 eval_diffuse(const MetallicRoughnessLobes& l, vec3 wi) {
-  float coating = coating_transmittance(l, l.wo.z) * coating_transmittance(l, wi.z);
+  float coating = l.coating_o * coating_transmittance(l, wi.z);
   return l.base * (l.plastic * coating * inv_pi * wi.z);
 }
 
@@ -177,10 +177,11 @@ MetallicRoughnessLobes make_metallic_roughness_lobes(const MetallicRoughnessPara
   if (!(l.wo.z > 1e-7f) || !is_finite(l.wo)) return l;
   bool colored = max_component(l.base) > 0;
   float cos_o = l.wo.z;
+  l.coating_o = coating_transmittance(l, cos_o);
   float specular = selection_weight(l.metal > 0 || l.plastic * l.specular > 0 || l.glass > 0,
                                     mean(specular_fresnel(l, cos_o)), l.smooth);
   float diffuse = selection_weight(l.plastic > 0 && colored,
-                                   l.plastic * mean(l.base) * coating_transmittance(l, cos_o), false);
+                                   l.plastic * mean(l.base) * l.coating_o, false);
   float transmittance = 1 - fresnel_dielectric(cos_o, l.eta);
   float transmitted =
       selection_weight(l.glass > 0 && colored, l.glass * mean(l.base) * transmittance, l.smooth);
