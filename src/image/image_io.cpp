@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "image/exr_header_check.h"
+#include "image/exr_writer.h"
 #include "image/packed_metadata.h"
 #include "image/png_reader.h"
 #include "image/png_writer.h"
@@ -131,6 +132,8 @@ void write_image_file(TemporaryFile& file, const ImageWriteSpec& spec, const voi
   if (writes_as_png(file.target(), spec)) {
     std::vector<unsigned char> bytes = encode_png(spec, static_cast<const float*>(pixels), error);
     if (error.empty()) file.write(bytes.data(), bytes.size());
+  } else if (writes_as_exr(file.target(), spec)) {
+    error = write_exr(file, spec, pixels);
   } else {
     // Only EXR keeps every attribute: other formats get them packed into their description.
     ImageWriteSpec stored = spec;

@@ -1,5 +1,6 @@
-// Image files for the rest of radiant: PNG read and written directly (libpng), everything else
-// through the OpenImageIO module (image_io_module.h), loaded the first time it is needed.
+// Image files for the rest of radiant: PNG read and written directly (libpng), EXR written
+// directly (exr_writer.h), everything else through the OpenImageIO module (image_io_module.h),
+// loaded the first time it is needed.
 #pragma once
 
 #include <memory>
@@ -28,9 +29,9 @@ ImageHeader read_image_header(const std::string& path, MemoryBudget* budget);
 
 // Writes `pixels` (spec.channel_names.size() floats per pixel, or 4-byte values of
 // spec.channel_types, top row first) to `file` in the format its target's extension names: 8-bit
-// PNG directly, any other format through the module (metadata packed when the format is not
-// EXR: packed_metadata.h). Values for uint8 are display values in
-// [0, 1]. Throws std::runtime_error naming the target.
+// PNG and float EXR directly, any other format through the module (metadata packed when the
+// format is not EXR: packed_metadata.h). Values for uint8 are display values in [0, 1]. Throws
+// std::runtime_error naming the target.
 void write_image_file(TemporaryFile& file, const ImageWriteSpec& spec, const void* pixels);
 
 // The path's extension in lower case, with its dot (".png"), or "".

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "image/exr_writer.h"
 #include "image/image_io.h"
 #include "image/png_writer.h"
 
@@ -82,7 +83,8 @@ float linear_to_srgb(float v) {
 void check_image_output(const std::string& path) {
   OutputImage color_only;  // what decides the writer: the format and the first three channels
   color_only.channels = {"R", "G", "B"};
-  if (writes_as_png(path, output_spec(path, color_only))) return;
+  ImageWriteSpec spec = output_spec(path, color_only);
+  if (writes_as_png(path, spec) || writes_as_exr(path, spec)) return;
   std::string extension = lowercase_extension(path);
   if (extension.empty())
     throw std::invalid_argument("cannot write '" + path + "': no extension names its image format (.png, .exr, ...)");

@@ -76,6 +76,18 @@ void TemporaryFile::write(const void* data, size_t size) {
   }
 }
 
+void TemporaryFile::write_at(uint64_t offset, const void* data, size_t size) {
+  if (descriptor_ < 0) fail("written after it was closed");
+  const char* bytes = static_cast<const char*>(data);
+  while (size > 0) {
+    ssize_t written = ::pwrite(descriptor_, bytes, size, off_t(offset));
+    if (written < 0 && errno == EINTR) continue;
+    if (written < 0) fail(std::strerror(errno));
+    bytes += written, offset += uint64_t(written);
+    size -= size_t(written);
+  }
+}
+
 void TemporaryFile::finish() {
   if (descriptor_ < 0) return;
   // fsync reports the errors of writes the kernel had only buffered; close those of some file

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 
 namespace radiant {
@@ -27,6 +28,9 @@ class TemporaryFile {
 
   void write(const void* data, size_t size);
   void write(const std::string& text) { write(text.data(), text.size()); }
+  // Overwrites bytes already written, at `offset` from the start (a table of offsets that is
+  // known only after what it points to).
+  void write_at(uint64_t offset, const void* data, size_t size);
   // Flushes to the disk and closes. Idempotent.
   void finish();
   // finish(), then renames onto the target.

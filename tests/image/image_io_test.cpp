@@ -1,5 +1,5 @@
-// Image files: PNG written without OpenImageIO, everything else through the module, which a
-// render loads only when its output needs it.
+// Image files: PNG and EXR written without OpenImageIO, everything else through the module,
+// which a render loads only when its output needs it.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -35,19 +35,24 @@ std::string libraries_loaded_rendering(const ScratchDir& dir, const fs::path& sc
 
 }  // namespace
 
-TEST_CASE("image files: a render to PNG never loads OpenImageIO, a render to EXR loads it through the module") {
-  ScratchDir png_dir("io-png"), exr_dir("io-exr");
+TEST_CASE("image files: a render to PNG or EXR never loads OpenImageIO, a render to TIFF loads it through the module") {
+  ScratchDir png_dir("io-png"), exr_dir("io-exr"), tiff_dir("io-tiff");
   std::string png_run = libraries_loaded_rendering(png_dir, png_dir.write("plane.scene", lit_plane_scene),
                                                    png_dir.file("out.png"));
   std::string exr_run = libraries_loaded_rendering(exr_dir, exr_dir.write("plane.scene", lit_plane_scene),
                                                    exr_dir.file("out.exr"));
+  std::string tiff_run = libraries_loaded_rendering(tiff_dir, tiff_dir.write("plane.scene", lit_plane_scene),
+                                                    tiff_dir.file("out.tif"));
   CHECK(png_run.find("libembree3") != std::string::npos);  // the log does list what was loaded
-  CHECK(png_run.find("libOpenImageIO") == std::string::npos);
-  CHECK(png_run.find("libradiant_oiio") == std::string::npos);
-  CHECK(exr_run.find("libradiant_oiio") != std::string::npos);
-  CHECK(exr_run.find("libOpenImageIO") != std::string::npos);
+  for (const std::string& run : {png_run, exr_run}) {
+    CHECK(run.find("libOpenImageIO") == std::string::npos);
+    CHECK(run.find("libradiant_oiio") == std::string::npos);
+  }
+  CHECK(tiff_run.find("libradiant_oiio") != std::string::npos);
+  CHECK(tiff_run.find("libOpenImageIO") != std::string::npos);
   CHECK(fs::exists(png_dir.file("out.png")));
   CHECK(fs::exists(exr_dir.file("out.exr")));
+  CHECK(fs::exists(tiff_dir.file("out.tif")));
 }
 
 TEST_CASE("image files: a PNG written directly reads back as sRGB, each value rounded to 8 bits") {
