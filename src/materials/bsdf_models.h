@@ -63,6 +63,7 @@ struct MetallicRoughnessParams {
   // the untinted F0 of the ior that the exact Fresnel curve is rescaled from.
   float specular = 1;
   color3 specular_f0 = {0.04f, 0.04f, 0.04f};
+  float specular_f0_max = 0.04f;  // its largest channel
   float ior_f0 = 0.04f;
   // KHR_materials_iridescence: the share of the thin film's Fresnel in the metal's and the
   // plastic's specular reflection, the film, and the index above it (1.5 under a clearcoat).

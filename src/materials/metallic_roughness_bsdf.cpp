@@ -18,9 +18,11 @@ constexpr float min_lobe_weight = 0.05f;
 // The plastic's coating reflectance (KHR_materials_specular): the exact Fresnel curve of its ior,
 // rescaled to run from the tinted F0 at normal incidence to 1 at grazing, times its strength.
 // With iridescence, a share of it is the thin film's reflectance over that F0 instead.
+float coating_rise(const MetallicRoughnessLobes& l, float cos) {
+  return l.ior_f0 < 1 ? std::max((fresnel_dielectric(cos, l.ior) - l.ior_f0) / (1 - l.ior_f0), 0.0f) : 1;
+}
 color3 coating_fresnel(const MetallicRoughnessLobes& l, float cos) {
-  float rise = l.ior_f0 < 1 ? (fresnel_dielectric(cos, l.ior) - l.ior_f0) / (1 - l.ior_f0) : 1;
-  color3 f = l.specular_f0 + (color3{1, 1, 1} - l.specular_f0) * std::max(rise, 0.0f);
+  color3 f = l.specular_f0 + (color3{1, 1, 1} - l.specular_f0) * coating_rise(l, cos);
   if (l.iridescence > 0) f = lerp(f, thin_film_fresnel(cos, l.film_outside_ior, l.film, l.specular_f0), l.iridescence);
   return f * l.specular;
 }
@@ -34,16 +36,19 @@ color3 metal_fresnel(const MetallicRoughnessLobes& l, float cos) {
 
 // Fresnel reflectance of the mixed specular lobe at microfacet cosine `cos_h`.
 color3 specular_fresnel(const MetallicRoughnessLobes& l, float cos_h) {
-  float glass = l.glass * fresnel_dielectric(cos_h, l.eta);
+  float glass = l.glass > 0 ? l.glass * fresnel_dielectric(cos_h, l.eta) : 0;
   color3 plastic = l.plastic > 0 ? coating_fresnel(l, cos_h) * l.plastic : color3{0, 0, 0};
   color3 metal = l.metal > 0 ? metal_fresnel(l, cos_h) * l.metal : color3{0, 0, 0};
   return metal + plastic + color3{glass, glass, glass};
 }
 
 // Light crossing the plastic's coating at cosine `cos`: what its brightest channel does not
-// reflect (the extension's 1 − specular · max(F)); symmetric in wo and wi: reciprocity.
+// reflect (the extension's 1 − specular · max(F)); symmetric in wo and wi: reciprocity. Without
+// iridescence the brightest channel is the one with the largest F0, whatever the cosine, so
+// only that channel is worked out.
 float coating_transmittance(const MetallicRoughnessLobes& l, float cos) {
-  return 1 - max_component(coating_fresnel(l, cos));
+  if (l.iridescence > 0) return 1 - max_component(coating_fresnel(l, cos));
+  return 1 - (l.specular_f0_max + (1 - l.specular_f0_max) * coating_rise(l, cos)) * l.specular;
 }
 
 // The GGX terms, anisotropic (KHR_materials_anisotropy) only where the material is.
@@ -160,6 +165,7 @@ MetallicRoughnessParams make_metallic_roughness_params(const SurfaceMaterial& m)
   p.glass = (1 - metallic) * transmission;
   p.specular = std::clamp(m.specular, 0.0f, 1.0f);
   p.specular_f0 = tinted_dielectric_f0(p.ior, m.specular_color);
+  p.specular_f0_max = max_component(p.specular_f0);
   p.ior_f0 = dielectric_f0(p.ior);
   p.iridescence = std::clamp(m.iridescence, 0.0f, 1.0f);
   p.film = {m.iridescence_ior, std::max(m.iridescence_thickness, 0.0f)};
@@ -182,9 +188,8 @@ MetallicRoughnessLobes make_metallic_roughness_lobes(const MetallicRoughnessPara
                                     mean(specular_fresnel(l, cos_o)), l.smooth);
   float diffuse = selection_weight(l.plastic > 0 && colored,
                                    l.plastic * mean(l.base) * l.coating_o, false);
-  float transmittance = 1 - fresnel_dielectric(cos_o, l.eta);
-  float transmitted =
-      selection_weight(l.glass > 0 && colored, l.glass * mean(l.base) * transmittance, l.smooth);
+  float transmitted = l.glass > 0 && colored ? l.glass * mean(l.base) * (1 - fresnel_dielectric(cos_o, l.eta)) : 0;
+  transmitted = selection_weight(l.glass > 0 && colored, transmitted, l.smooth);
   float total = specular + diffuse + transmitted;
   if (total <= 0) return l;
   l.p_specular = specular / total;
