@@ -147,10 +147,11 @@ template <uint32_t E>
     emitted = eval_environment(lights, wi);
   }
   if (is_black(emitted)) return;
-  color3 f_cos = bsdf.eval(wi);
+  float bsdf_pdf;
+  color3 f_cos = bsdf.eval(wi, bsdf_pdf);
   if (is_black(f_cos)) return;
   float pdf = select_pdf * light_pdf;
-  float weight = power_heuristic(pdf, bsdf.pdf(wi));
+  float weight = power_heuristic(pdf, bsdf_pdf);
   finish(wi, distance, [&](color3 t) {
     if (is_black(t)) return color3{};
     return f_cos * emitted * t * (weight / pdf);

@@ -4,6 +4,7 @@
 #include <initializer_list>
 #include <type_traits>
 
+#include "materials/lobe_sampling.h"
 #include "materials/metallic_roughness.h"
 
 namespace radiant {
@@ -80,6 +81,25 @@ float Bsdf::pdf(vec3 wi) const {
   if (auto* l = std::get_if<MetallicRoughnessLobes>(&lobes_)) return pdf_local(*l, to_local(l->frame, wi));
   if (auto* l = std::get_if<LayeredLobes>(&lobes_)) return pdf_local(*l, to_local(l->frame, wi));
   return 0;
+}
+
+namespace {
+
+// The models with a local frame, out of line: inlined, their code made every call of
+// Bsdf::eval(wi, pdf) save registers, the Lambertian's too.
+[[gnu::noinline]] color3 eval_local_with_pdf(const BsdfLobes& lobes, vec3 wi, float& pdf) {
+  if (auto* l = std::get_if<PhongLobes>(&lobes)) return eval_with_pdf(*l, to_local(l->frame, wi), pdf);
+  if (auto* l = std::get_if<MetallicRoughnessLobes>(&lobes)) return eval_with_pdf(*l, to_local(l->frame, wi), pdf);
+  if (auto* l = std::get_if<LayeredLobes>(&lobes)) return eval_with_pdf(*l, to_local(l->frame, wi), pdf);
+  pdf = 0;
+  return {0, 0, 0};
+}
+
+}  // namespace
+
+color3 Bsdf::eval(vec3 wi, float& pdf) const {
+  if (auto* l = std::get_if<LambertLobes>(&lobes_)) return eval_world(*l, wi, pdf);
+  return eval_local_with_pdf(lobes_, wi, pdf);
 }
 
 std::optional<BsdfSample> Bsdf::sample(float u_lobe, vec2 u) const {

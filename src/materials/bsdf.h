@@ -39,6 +39,8 @@ class Bsdf {
   color3 eval(vec3 wi) const;
   // Solid-angle pdf that sample() picks wi through a non-delta lobe.
   float pdf(vec3 wi) const;
+  // eval(wi), with pdf(wi) in `pdf`: cheaper than the two apart.
+  color3 eval(vec3 wi, float& pdf) const;
   // Samples a direction; u_lobe picks a lobe, u the direction within it. nullopt when absorbed.
   std::optional<BsdfSample> sample(float u_lobe, vec2 u) const;
   // False when at most one lobe can be chosen: sample() then ignores u_lobe, and the path

@@ -24,6 +24,7 @@ struct LambertLobes : LambertParams {
 LambertLobes make_lambert_lobes(const LambertParams& params, vec3 n, vec3 wo);
 // These take world-space directions.
 color3 eval_world(const LambertLobes& l, vec3 wi);
+color3 eval_world(const LambertLobes& l, vec3 wi, float& pdf);  // and pdf_world in `pdf`
 float pdf_world(const LambertLobes& l, vec3 wi);
 std::optional<BsdfSample> sample_world(const LambertLobes& l, vec2 u);
 
@@ -79,12 +80,15 @@ struct MetallicRoughnessLobes : MetallicRoughnessParams {
   float eta = 1.5f;    // of the glass: n_transmitted / n_incident seen from wo
   float p_specular = 0, p_diffuse = 0, p_transmission = 0;
   float coating_o = 1;  // light crossing the plastic's coating along wo: every diffuse eval needs it
+  float lambda_o = 0;   // Smith's GGX Lambda along wo (rough lobes): every masking term needs it
 };
 // `tangent` (world space, any length; zero when unknown) orients an anisotropic lobe's frame.
 MetallicRoughnessLobes make_metallic_roughness_lobes(const MetallicRoughnessParams& params, vec3 n, vec3 wo,
                                                      vec3 tangent = {});
 color3 eval_local(const MetallicRoughnessLobes& l, vec3 wi);
 float pdf_local(const MetallicRoughnessLobes& l, vec3 wi);
+// Both at once, sharing the half vector and the microfacet density (lobe_sampling.h).
+color3 eval_with_pdf(const MetallicRoughnessLobes& l, vec3 wi, float& pdf);
 std::optional<BsdfSample> sample_local(const MetallicRoughnessLobes& l, float u_lobe, vec2 u);
 bool is_metallic_roughness_pure_delta(const SurfaceMaterial& m);
 

@@ -27,6 +27,14 @@ color3 eval_world(const LambertLobes& l, vec3 wi) {
   return l.albedo * (inv_pi * cos_i);
 }
 
+color3 eval_world(const LambertLobes& l, vec3 wi, float& pdf) {
+  float cos_i = dot(l.n, wi);
+  pdf = 0;
+  if (!l.valid || !(cos_i >= min_cosine)) return {0, 0, 0};
+  pdf = cos_i * inv_pi;
+  return l.albedo * (inv_pi * cos_i);
+}
+
 float pdf_world(const LambertLobes& l, vec3 wi) {
   float cos_i = dot(l.n, wi);
   if (!l.valid || !(cos_i >= min_cosine)) return 0;

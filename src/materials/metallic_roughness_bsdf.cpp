@@ -51,15 +51,20 @@ float coating_transmittance(const MetallicRoughnessLobes& l, float cos) {
   return 1 - (l.specular_f0_max + (1 - l.specular_f0_max) * coating_rise(l, cos)) * l.specular;
 }
 
-// The GGX terms, anisotropic (KHR_materials_anisotropy) only where the material is.
+// The GGX terms, anisotropic (KHR_materials_anisotropy) only where the material is. Lambda along
+// wo is the lobes' own (l.lambda_o): each masking term needs it.
 float microfacet_density(const MetallicRoughnessLobes& l, vec3 h) {
   return l.anisotropic ? ggx_distribution(h, l.anisotropic_alpha) : ggx_distribution(h, l.alpha);
 }
-float microfacet_masking_shadowing(const MetallicRoughnessLobes& l, vec3 wi) {
-  return l.anisotropic ? ggx_masking_shadowing(l.wo, wi, l.anisotropic_alpha) : ggx_masking_shadowing(l.wo, wi, l.alpha);
+float microfacet_lambda(const MetallicRoughnessLobes& l, vec3 w) {
+  return l.anisotropic ? ggx_lambda(w, l.anisotropic_alpha) : ggx_lambda(w, l.alpha);
 }
-float visible_normal_pdf(const MetallicRoughnessLobes& l, vec3 h) {
-  return l.anisotropic ? ggx_visible_normal_pdf(l.wo, h, l.anisotropic_alpha) : ggx_visible_normal_pdf(l.wo, h, l.alpha);
+float microfacet_masking_shadowing(const MetallicRoughnessLobes& l, vec3 wi) {
+  return 1 / (1 + l.lambda_o + microfacet_lambda(l, wi));
+}
+// The density of visible normals h (Heitz 2018), given h's density.
+float visible_normal_pdf(const MetallicRoughnessLobes& l, vec3 h, float density) {
+  return 1 / (1 + l.lambda_o) * std::max(0.0f, dot(l.wo, h)) * density / l.wo.z;
 }
 vec3 sample_visible_normal(const MetallicRoughnessLobes& l, vec2 u) {
   return l.anisotropic ? sample_ggx_visible_normal(l.wo, l.anisotropic_alpha, u) : sample_ggx_visible_normal(l.wo, l.alpha, u);
@@ -86,19 +91,16 @@ color3 eval_diffuse(const MetallicRoughnessLobes& l, vec3 wi) {
   return l.base * (l.plastic * coating * inv_pi * wi.z);
 }
 
-color3 eval_rough_reflection(const MetallicRoughnessLobes& l, vec3 wi) {
+// The rough lobes add their f(wo, wi) * |cos| to `f` and their share of the pdf to `pdf`, each
+// only when asked: evaluating both shares the half vector and the microfacet density.
+template <bool WithF, bool WithPdf>
+void add_rough_reflection(const MetallicRoughnessLobes& l, vec3 wi, color3& f, float& pdf) {
   vec3 h = normalize(l.wo + wi);
   float cos_h = dot(l.wo, h);
-  if (cos_h <= 0) return {0, 0, 0};
-  float d = microfacet_density(l, h) * microfacet_masking_shadowing(l, wi);
-  return specular_fresnel(l, cos_h) * (d / (4 * l.wo.z));
-}
-
-float pdf_rough_reflection(const MetallicRoughnessLobes& l, vec3 wi) {
-  vec3 h = normalize(l.wo + wi);
-  float cos_h = dot(l.wo, h);
-  if (cos_h <= 0) return 0;
-  return visible_normal_pdf(l, h) / (4 * cos_h);
+  if (cos_h <= 0) return;
+  float density = microfacet_density(l, h);
+  if constexpr (WithF) f += specular_fresnel(l, cos_h) * (density * microfacet_masking_shadowing(l, wi) / (4 * l.wo.z));
+  if constexpr (WithPdf) pdf += l.p_specular * (visible_normal_pdf(l, h, density) / (4 * cos_h));
 }
 
 // The squared denominator of the refraction Jacobian, or 0 when degenerate.
@@ -107,24 +109,38 @@ float refraction_denominator(const MetallicRoughnessLobes& l, vec3 wi, vec3 h) {
   return denominator * denominator;
 }
 
-color3 eval_rough_transmission(const MetallicRoughnessLobes& l, vec3 wi) {
+template <bool WithF, bool WithPdf>
+void add_rough_transmission(const MetallicRoughnessLobes& l, vec3 wi, color3& f, float& pdf) {
   vec3 h;
-  if (!refraction_half_vector(l, wi, h)) return {0, 0, 0};
+  if (!refraction_half_vector(l, wi, h)) return;
   float denominator = refraction_denominator(l, wi, h);
-  if (denominator < 1e-12f) return {0, 0, 0};
-  float cos_h = dot(l.wo, h);
-  float transmittance = l.glass * (1 - fresnel_dielectric(cos_h, l.eta));
-  float f = microfacet_density(l, h) * microfacet_masking_shadowing(l, wi) * std::abs(dot(wi, h)) *
-            cos_h / (l.wo.z * denominator);
-  return l.base * (transmittance * f);
+  if (denominator < 1e-12f) return;
+  float density = microfacet_density(l, h);
+  if constexpr (WithF) {
+    float cos_h = dot(l.wo, h);
+    float transmittance = l.glass * (1 - fresnel_dielectric(cos_h, l.eta));
+    float g = density * microfacet_masking_shadowing(l, wi) * std::abs(dot(wi, h)) * cos_h / (l.wo.z * denominator);
+    f += l.base * (transmittance * g);
+  }
+  if constexpr (WithPdf) pdf += l.p_transmission * (visible_normal_pdf(l, h, density) * std::abs(dot(wi, h)) / denominator);
 }
 
-float pdf_rough_transmission(const MetallicRoughnessLobes& l, vec3 wi) {
-  vec3 h;
-  if (!refraction_half_vector(l, wi, h)) return 0;
-  float denominator = refraction_denominator(l, wi, h);
-  if (denominator < 1e-12f) return 0;
-  return visible_normal_pdf(l, h) * std::abs(dot(wi, h)) / denominator;
+// f(wo, wi) * |cos| of the non-delta lobes, and the pdf that sample_local picks wi through them,
+// each only when asked (0 where not finite).
+template <bool WithF, bool WithPdf>
+color3 evaluate(const MetallicRoughnessLobes& l, vec3 wi, float& pdf) {
+  color3 f;
+  pdf = 0;
+  if (!l.valid || std::abs(wi.z) < 1e-7f) return f;
+  if (wi.z > 0) {
+    if (WithF && l.p_diffuse > 0) f += eval_diffuse(l, wi);
+    if (WithPdf) pdf += l.p_diffuse * wi.z * inv_pi;
+    if (!l.smooth && l.p_specular > 0) add_rough_reflection<WithF, WithPdf>(l, wi, f, pdf);
+  } else if (!l.smooth && l.p_transmission > 0) {
+    add_rough_transmission<WithF, WithPdf>(l, wi, f, pdf);
+  }
+  if (!std::isfinite(pdf)) pdf = 0;
+  return is_finite(f) ? f : color3{0, 0, 0};
 }
 
 std::optional<BsdfSample> sample_specular(const MetallicRoughnessLobes& l, vec2 u) {
@@ -184,6 +200,7 @@ MetallicRoughnessLobes make_metallic_roughness_lobes(const MetallicRoughnessPara
   bool colored = max_component(l.base) > 0;
   float cos_o = l.wo.z;
   l.coating_o = coating_transmittance(l, cos_o);
+  if (!l.smooth) l.lambda_o = microfacet_lambda(l, l.wo);
   float specular = selection_weight(l.metal > 0 || l.plastic * l.specular > 0 || l.glass > 0,
                                     mean(specular_fresnel(l, cos_o)), l.smooth);
   float diffuse = selection_weight(l.plastic > 0 && colored,
@@ -200,28 +217,17 @@ MetallicRoughnessLobes make_metallic_roughness_lobes(const MetallicRoughnessPara
 }
 
 color3 eval_local(const MetallicRoughnessLobes& l, vec3 wi) {
-  if (!l.valid || std::abs(wi.z) < 1e-7f) return {0, 0, 0};
-  color3 f;
-  if (wi.z > 0) {
-    if (l.p_diffuse > 0) f += eval_diffuse(l, wi);
-    if (!l.smooth && l.p_specular > 0) f += eval_rough_reflection(l, wi);
-  } else if (!l.smooth && l.p_transmission > 0) {
-    f += eval_rough_transmission(l, wi);
-  }
-  return is_finite(f) ? f : color3{0, 0, 0};
+  float unused;
+  return evaluate<true, false>(l, wi, unused);
 }
 
 float pdf_local(const MetallicRoughnessLobes& l, vec3 wi) {
-  if (!l.valid || std::abs(wi.z) < 1e-7f) return 0;
-  float pdf = 0;
-  if (wi.z > 0) {
-    pdf += l.p_diffuse * wi.z * inv_pi;
-    if (!l.smooth && l.p_specular > 0) pdf += l.p_specular * pdf_rough_reflection(l, wi);
-  } else if (!l.smooth && l.p_transmission > 0) {
-    pdf += l.p_transmission * pdf_rough_transmission(l, wi);
-  }
-  return std::isfinite(pdf) ? pdf : 0;
+  float pdf;
+  evaluate<false, true>(l, wi, pdf);
+  return pdf;
 }
+
+color3 eval_with_pdf(const MetallicRoughnessLobes& l, vec3 wi, float& pdf) { return evaluate<true, true>(l, wi, pdf); }
 
 std::optional<BsdfSample> sample_local(const MetallicRoughnessLobes& l, float u_lobe, vec2 u) {
   if (!l.valid) return std::nullopt;

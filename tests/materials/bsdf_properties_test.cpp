@@ -74,7 +74,7 @@ TEST_CASE("bsdf reciprocity: f(wo, wi) == f(wi, wo) for reflection") {
   }
 }
 
-TEST_CASE("bsdf consistency: weight is eval over pdf, and eval and pdf vanish together") {
+TEST_CASE("bsdf consistency: weight is eval over pdf, eval and pdf vanish together, and eval with pdf is both") {
   vec3 n = normalize(vec3{-0.4f, 0.1f, 0.8f});
   vec3 t, b;
   orthonormal_basis(n, t, b);
@@ -98,6 +98,17 @@ TEST_CASE("bsdf consistency: weight is eval over pdf, and eval and pdf vanish to
         bool scatters = !is_black(Bsdf(config.material, n, wo).eval(wi));
         bool sampled = Bsdf(config.material, n, wo).pdf(wi) > 0;
         CHECK(scatters == sampled);
+        // Evaluated together (light sampling's MIS), both are what each gives alone, bit for bit.
+        for (vec3 direction : {wi, s ? s->wi : wi}) {
+          Bsdf bsdf(config.material, n, wo);
+          float pdf_together = -1;
+          color3 f_together = bsdf.eval(direction, pdf_together);
+          color3 f_alone = bsdf.eval(direction);
+          CHECK(f_together.x == f_alone.x);
+          CHECK(f_together.y == f_alone.y);
+          CHECK(f_together.z == f_alone.z);
+          CHECK(pdf_together == bsdf.pdf(direction));
+        }
       }
     }
   }
