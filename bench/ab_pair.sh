@@ -5,7 +5,15 @@
 # Prints each round's CPU seconds (A/B) and the median ratio B/A. An A/A run shows the noise:
 # rounds spread about ±5%, medians of 10 rounds within about 1%.
 #
+# Each is pinned to its own core (taskset), and the cores swap every round, so that a fixed
+# difference between the cores cancels in the geometric mean of the ratios over an even number
+# of rounds (printed too). On the eighteenth session's VM, in most rounds one of the two runs
+# took about 4.0 s and the other 3.1 s for the same work, and the slow core changed between
+# rounds: such noise only averages out. Changes of a few percent are better measured in
+# instructions (docs/performance.md, "How to measure an instruction count").
+#
 # Usage: bench/ab_pair.sh BINARY_A BINARY_B [--rounds 10] [--size 256] [--spp 32]
+#        [--scene cornell.scene|cornell.gltf|cornell-lambertian.gltf]
 # Needs: embree-tools (the tutorial's scene).
 set -euo pipefail
 (($# >= 2)) || { echo "usage: $0 BINARY_A BINARY_B [--rounds N] [--size N] [--spp N]" >&2; exit 2; }
@@ -18,6 +26,7 @@ while (($#)); do
     --rounds) rounds=$2; shift 2 ;;
     --size) size=$2; shift 2 ;;
     --spp) spp=$2; shift 2 ;;
+    --scene) radiant_scene=$2; shift 2 ;;
     *) echo "unknown option $1" >&2; exit 2 ;;
   esac
 done
@@ -26,21 +35,24 @@ trap 'rm -rf "$work"' EXIT
 source bench/embree_cornell_common.sh
 source bench/quiet_machine.sh
 
-# cpu_seconds BINARY OUT_FILE: the render's user CPU time, written to OUT_FILE.
+# cpu_seconds CORE BINARY OUT_FILE: the render's user CPU time on CORE, written to OUT_FILE.
 cpu_seconds() {
-  local TIMEFORMAT=%U
-  { time "$1" render "$work/cornell.scene" -o "$2.png" --width "$size" --height "$size" --spp "$spp" \
+  local TIMEFORMAT=%U core=$1
+  shift
+  { time taskset -c "$core" "$1" render "$work/${radiant_scene:-cornell.scene}" -o "$2.png" --width "$size" --height "$size" --spp "$spp" \
       --max-depth 8 --mode path --threads "$threads" --quiet >/dev/null; } 2>"$2"
 }
 ratios=()
 for ((i = 0; i < rounds; i++)); do
   if ((i % 2)); then
-    cpu_seconds "$binary_b" "$work/b" & cpu_seconds "$binary_a" "$work/a" & wait
+    cpu_seconds 0 "$binary_b" "$work/b" & cpu_seconds 1 "$binary_a" "$work/a" & wait
   else
-    cpu_seconds "$binary_a" "$work/a" & cpu_seconds "$binary_b" "$work/b" & wait
+    cpu_seconds 0 "$binary_a" "$work/a" & cpu_seconds 1 "$binary_b" "$work/b" & wait
   fi
   a=$(<"$work/a") b=$(<"$work/b")
   echo "round $((i + 1)): A $a s, B $b s"
   ratios+=("$(awk -v a="$a" -v b="$b" 'BEGIN {print b / a}')")
 done
 printf 'median CPU time ratio B/A over %d rounds: %.3f\n' "$rounds" "$(median "${ratios[@]}")"
+printf 'geometric mean of the ratios (core speeds cancel over an even number of rounds): %.3f\n' \
+  "$(printf '%s\n' "${ratios[@]}" | awk '{s += log($1)} END {print exp(s / NR)}')"
