@@ -15,12 +15,15 @@ namespace {
 // Smallest selection weight of a present non-delta lobe: its pdf must never be 0 where it scatters.
 constexpr float min_lobe_weight = 0.05f;
 
-// The plastic's coating reflectance (KHR_materials_specular): the exact Fresnel curve of its ior,
-// rescaled to run from the tinted F0 at normal incidence to 1 at grazing, times its strength.
-// With iridescence, a share of it is the thin film's reflectance over that F0 instead.
+// The exact Fresnel curve of the coating's ior, rescaled to run from 0 at normal incidence to 1
+// at grazing.
 float coating_rise(const MetallicRoughnessLobes& l, float cos) {
   return l.ior_f0 < 1 ? std::max((fresnel_dielectric(cos, l.ior) - l.ior_f0) / (1 - l.ior_f0), 0.0f) : 1;
 }
+
+// The plastic's coating reflectance (KHR_materials_specular): that curve run from the tinted F0
+// at normal incidence to 1 at grazing, times its strength. With iridescence, a share of it is
+// the thin film's reflectance over that F0 instead.
 color3 coating_fresnel(const MetallicRoughnessLobes& l, float cos) {
   color3 f = l.specular_f0 + (color3{1, 1, 1} - l.specular_f0) * coating_rise(l, cos);
   if (l.iridescence > 0) f = lerp(f, thin_film_fresnel(cos, l.film_outside_ior, l.film, l.specular_f0), l.iridescence);

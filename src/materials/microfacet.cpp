@@ -62,14 +62,4 @@ float ggx_lambda(vec3 w, vec2 alpha) {
   return (std::sqrt(1 + stretched / cos2) - 1) / 2;
 }
 
-float ggx_masking_shadowing(vec3 wo, vec3 wi, vec2 alpha) {
-  return 1 / (1 + ggx_lambda(wo, alpha) + ggx_lambda(wi, alpha));
-}
-
-float ggx_visible_normal_pdf(vec3 wo, vec3 m, vec2 alpha) {
-  if (wo.z <= 0) return 0;
-  float masking = 1 / (1 + ggx_lambda(wo, alpha));
-  return masking * std::max(0.0f, dot(wo, m)) * ggx_distribution(m, alpha) / wo.z;
-}
-
 }  // namespace radiant

@@ -19,11 +19,11 @@ vec3 sample_ggx_visible_normal(vec3 wo, float alpha, vec2 u);
 float ggx_visible_normal_pdf(vec3 wo, vec3 m, float alpha);
 
 // The same for anisotropic GGX (KHR_materials_anisotropy): alpha.x along the frame's x axis,
-// alpha.y along y. Separate functions, so that isotropic materials keep the cheaper ones.
+// alpha.y along y. Separate functions, so that isotropic materials keep the cheaper ones. The
+// metallic-roughness model forms G2 and the visible-normal density from these itself, keeping
+// Lambda along wo once per vertex.
 float ggx_distribution(vec3 m, vec2 alpha);
 float ggx_lambda(vec3 w, vec2 alpha);
-float ggx_masking_shadowing(vec3 wo, vec3 wi, vec2 alpha);
 vec3 sample_ggx_visible_normal(vec3 wo, vec2 alpha, vec2 u);
-float ggx_visible_normal_pdf(vec3 wo, vec3 m, vec2 alpha);
 
 }  // namespace radiant
