@@ -1,5 +1,6 @@
 #include "integrators/path.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "integrators/background.h"
@@ -12,6 +13,7 @@
 #include "lights/light_selection.h"
 #include "materials/bsdf.h"
 #include "materials/dispersion.h"
+#include "sampling/sampler.h"
 #include "sampling/warp.h"
 
 namespace radiant {
@@ -81,20 +83,38 @@ struct LightSampleResult {
   bool traces = false;
 };
 
+// A vertex's random numbers drawn ahead, for a whole batch at once (sample_2d_many): the values
+// the vertex would draw itself, to the bit (a 1D value is the first of its dimension's pair).
+// Those a scene cannot use are not drawn (`has`); run() draws each when it needs it.
+struct VertexDraws {
+  vec2 direction;      // bsdf_direction
+  vec2 light_point;    // light_point
+  float light_choice;  // light_choice
+  float lobe_choice;   // lobe_choice
+  float roulette;      // roulette, of the next vertex (the path's depth + 1; used from its start depth)
+  uint32_t drawn = 0;  // the dimensions drawn: a bit (1 << VertexDimension) each
+  bool lobe_choice_used = false;  // set by the vertex: whether its BSDF chose a lobe
+
+  bool has(VertexDimension d) const { return drawn & (1u << d); }
+};
+
 // One light sample with MIS against BSDF sampling (next-event estimation) into `out`, as a
 // contribution before the path's throughput. `out` is written in place: built elsewhere and
 // copied, its ray would stall on store forwarding.
 template <uint32_t E>
 [[gnu::always_inline]] inline void sample_one_light(const RenderContext& ctx, const SurfaceHit& hit, const Bsdf& bsdf,
                                                     const HitShading& f, const SampleContext& sample, int depth,
-                                                    RayCounts& counts, LightSampleResult& out) {
+                                                    const VertexDraws* drawn, RayCounts& counts,
+                                                    LightSampleResult& out) {
   out.traces = false;
   out.unblocked = {};
   const LightTable& lights = *ctx.lights;
   // Random numbers are drawn only when used (one light needs no choice, a delta light no
   // point); their dimensions stay fixed, so skipping one changes no other.
   LightChoice choice;
-  auto u_choice = [&] { return sample_1d(sample, dimension(depth, light_choice)); };
+  auto u_choice = [&] {
+    return drawn && drawn->has(light_choice) ? drawn->light_choice : sample_1d(sample, dimension(depth, light_choice));
+  };
   if (!choose_light(lights, hit.position, f.normal, u_choice, choice)) return;
   size_t index = choice.slot;
   float select_pdf = choice.probability;
@@ -132,7 +152,8 @@ template <uint32_t E>
     if (!enabled<E>(ctx.effects, effect_emission)) return;
     const AreaLight& light = lights.area_lights[index - lights.delta_lights.size()];
     AreaLightSample s;
-    if (!sample_area_light(light, hit.position, sample_2d(sample, dimension(depth, light_point)), s)) return;
+    vec2 u_point = drawn && drawn->has(light_point) ? drawn->light_point : sample_2d(sample, dimension(depth, light_point));
+    if (!sample_area_light(light, hit.position, u_point, s)) return;
     if (!area_light_emits(light, s.normal, -s.direction)) return;
     wi = s.direction;
     light_pdf = s.pdf;
@@ -140,8 +161,8 @@ template <uint32_t E>
     emitted = area_light_emission<E>(ctx, light, s.barycentric);
   } else {
     if (!enabled<E>(ctx.effects, effect_environment)) return;
-    light_pdf = sample_environment(lights, f.normal, sample_1d(sample, dimension(depth, environment_choice)),
-                                   sample_2d(sample, dimension(depth, light_point)), wi);
+    vec2 u_point = drawn && drawn->has(light_point) ? drawn->light_point : sample_2d(sample, dimension(depth, light_point));
+    light_pdf = sample_environment(lights, f.normal, sample_1d(sample, dimension(depth, environment_choice)), u_point, wi);
     if (!(light_pdf > 0)) return;
     distance = std::numeric_limits<float>::infinity();
     emitted = eval_environment(lights, wi);
@@ -185,9 +206,10 @@ template <uint32_t E, bool LightSampling>
 struct PathVariant {
   // The path's vertex at `id`, the hit of path.ray: adds what it sees, takes a light sample
   // (its shadow ray left in `light` when light.traces) and sets the next ray. Returns whether
-  // the path goes on along path.ray.
+  // the path goes on along path.ray. `drawn`, when given, holds random numbers drawn ahead.
   [[gnu::always_inline]] static bool advance(const RenderContext& ctx, PathState& path, const HitId& id,
-                                             VertexScratch& scratch, LightSampleResult& light, RayCounts& counts) {
+                                             VertexDraws* drawn, VertexScratch& scratch,
+                                             LightSampleResult& light, RayCounts& counts) {
     const LightTable& lights = *ctx.lights;
     const SampleContext& sample = *path.sample;
     const Ray& ray = path.ray;
@@ -262,10 +284,15 @@ struct PathVariant {
     // chain of dependent arithmetic (sampler, warp) then overlaps the shadow ray's traversal
     // in the CPU instead of stalling the next ray. Dimensions are fixed, so the order changes
     // no value.
-    float u_lobe = bsdf.chooses_lobe() ? sample_1d(sample, dimension(depth, lobe_choice)) : 0.5f;
-    auto scattered = bsdf.sample(u_lobe, sample_2d(sample, dimension(depth, bsdf_direction)));
+    float u_lobe = 0.5f;
+    if (bsdf.chooses_lobe()) {
+      if (drawn) drawn->lobe_choice_used = true;
+      u_lobe = drawn && drawn->has(lobe_choice) ? drawn->lobe_choice : sample_1d(sample, dimension(depth, lobe_choice));
+    }
+    auto scattered = bsdf.sample(
+        u_lobe, drawn && drawn->has(bsdf_direction) ? drawn->direction : sample_2d(sample, dimension(depth, bsdf_direction)));
     if (LightSampling && !is_pure_delta(m)) {
-      sample_one_light<E>(ctx, hit, bsdf, f, sample, depth, counts, light);
+      sample_one_light<E>(ctx, hit, bsdf, f, sample, depth, drawn, counts, light);
       if (light.traces) {
         light.unblocked = throughput * light.unblocked;
         light.blocked = throughput * light.blocked;
@@ -300,7 +327,8 @@ struct PathVariant {
     path.depth = ++depth;
     if (depth >= roulette_start_depth) {
       float survive = std::min(1.0f, max_component(throughput));
-      if (sample_1d(sample, dimension(depth, roulette)) >= survive) return false;
+      float u = drawn && drawn->has(roulette) ? drawn->roulette : sample_1d(sample, dimension(depth, roulette));
+      if (u >= survive) return false;
       throughput /= survive;
     }
     return true;
@@ -338,7 +366,7 @@ struct PathVariant {
       ++(counts.*path.ray_kind);
       HitId id = camera_hit ? *camera_hit : intersect_nearest(*ctx.accel, path.ray);
       camera_hit = nullptr;  // only the camera ray was traced beforehand
-      bool goes_on = advance(ctx, path, id, scratch, light, counts);
+      bool goes_on = advance(ctx, path, id, nullptr, scratch, light, counts);
       if (light.traces) path.radiance += is_occluded(*ctx.accel, light.shadow_ray) ? light.blocked : light.unblocked;
       if (!goes_on) break;
     }
@@ -355,14 +383,65 @@ struct PathVariant {
     bool occluded[max_batch_paths];
     int live[max_batch_paths], shadowed[max_batch_paths];
     VertexScratch scratch;
+    // A stage's draws, and whether the last stage's BSDFs chose lobes (then this one draws
+    // their choices ahead too).
+    SobolLanes lanes;
+    VertexDraws drawn[max_batch_paths];
+    bool lobe_choices = true;
   };
+
+  // Every live path's random numbers for the vertex it is at, drawn together in SIMD, a group
+  // of lanes per dimension: those its scene can use (a light point only with area or
+  // environment lights, a light choice only with one to make, roulette once a path can reach
+  // its start depth). Other samplers than Sobol draw as run() does.
+  static void draw_ahead(const RenderContext& ctx, BatchWorkspace& w, int live_count) {
+    const LightTable& lights = *ctx.lights;
+    const PathState* paths = w.paths;
+    const int* live = w.live;
+    bool sobol = live_count > 0 && paths[live[0]].sample->kind == SamplerKind::sobol;
+    uint32_t wants = 0;
+    if (sobol) {
+      wants = 1u << bsdf_direction;
+      if (LightSampling && (!lights.area_lights.empty() || lights.has_environment())) wants |= 1u << light_point;
+      if (LightSampling && light_choice_draws(lights)) wants |= 1u << light_choice;
+      if (w.lobe_choices) wants |= 1u << lobe_choice;
+      for (int k = 0; k < live_count; ++k)
+        if (paths[live[k]].depth + 1 >= roulette_start_depth) wants |= 1u << roulette;
+    }
+    SobolLanes& lanes = w.lanes;
+    lanes.count = 0;
+    constexpr VertexDimension groups[] = {bsdf_direction, light_point, light_choice, lobe_choice, roulette};
+    static_assert(SobolLanes::capacity >= std::size(groups) * max_batch_paths);
+    for (VertexDimension d : groups) {
+      if (!(wants & (1u << d))) continue;
+      for (int k = 0; k < live_count; ++k) {
+        const PathState& path = paths[live[k]];
+        lanes.add(*path.sample, dimension(d == roulette ? path.depth + 1 : path.depth, d));
+      }
+    }
+    draw_sobol_lanes(lanes);
+    int group = 0;
+    auto next_group = [&](VertexDimension d) { return wants & (1u << d) ? live_count * group++ : -1; };
+    int direction = next_group(bsdf_direction), point = next_group(light_point), choice = next_group(light_choice),
+        lobe = next_group(lobe_choice), survival = next_group(roulette);
+    for (int k = 0; k < live_count; ++k) {
+      VertexDraws& v = w.drawn[k];
+      v.drawn = wants;
+      v.lobe_choice_used = false;
+      if (direction >= 0) v.direction = {lanes.x[direction + k], lanes.y[direction + k]};
+      if (point >= 0) v.light_point = {lanes.x[point + k], lanes.y[point + k]};
+      if (choice >= 0) v.light_choice = lanes.x[choice + k];
+      if (lobe >= 0) v.lobe_choice = lanes.x[lobe + k];
+      if (survival >= 0) v.roulette = lanes.x[survival + k];
+    }
+  }
 
   // The batch's paths advance a vertex at a time together: each stage's shadow rays, then its
   // next rays, are traced as one stream. Each path sees the same values in the same order as
   // in run(), so its radiance is run()'s bit for bit.
   static void run_batch(const RenderContext& ctx, BatchPath* batch, int count, RayCounts& counts) {
     static thread_local BatchWorkspace workspace;
-    auto& [paths, lights, rays, hits, occluded, live, shadowed, scratch] = workspace;
+    auto& [paths, lights, rays, hits, occluded, live, shadowed, scratch, lanes, drawn, lobe_choices] = workspace;
     count = std::min(count, max_batch_paths);
     int live_count = count;
     for (int i = 0; i < count; ++i) {
@@ -373,15 +452,17 @@ struct PathVariant {
     }
     while (live_count > 0) {
       int shadow_count = 0, next_count = 0;
+      draw_ahead(ctx, workspace, live_count);
       for (int k = 0; k < live_count; ++k) {
         int i = live[k];
-        bool goes_on = advance(ctx, paths[i], hits[k], scratch, lights[i], counts);
+        bool goes_on = advance(ctx, paths[i], hits[k], &drawn[k], scratch, lights[i], counts);
         if (lights[i].traces) {
           rays[shadow_count] = &lights[i].shadow_ray;
           shadowed[shadow_count++] = i;
         }
         if (goes_on) live[next_count++] = i;  // next_count <= k: live[k] was read already
       }
+      lobe_choices = std::any_of(drawn, drawn + live_count, [](const VertexDraws& v) { return v.lobe_choice_used; });
       occluded_many(*ctx.accel, rays, shadow_count, occluded, RayCoherence::incoherent);
       for (int k = 0; k < shadow_count; ++k) {
         const LightSampleResult& light = lights[shadowed[k]];

@@ -19,11 +19,16 @@ float light_choice_probability_by_bvh(const LightTable& lights, vec3 p, vec3 n, 
 // only when there is a choice to make (one light under power sampling has none); false when
 // none can be chosen. Power sampling ignores p and n and stays inline: a scene with few lights
 // pays one branch for the BVH.
+// Whether choose_light draws a number (for drawing it ahead).
+inline bool light_choice_draws(const LightTable& lights) {
+  return lights.sampler == LightSampler::bvh || lights.selection.size() > 1;
+}
+
 template <class DrawU>
 inline bool choose_light(const LightTable& lights, vec3 p, vec3 n, DrawU draw_u, LightChoice& choice) {
   if (lights.sampler == LightSampler::bvh) return choose_light_by_bvh(lights, p, n, draw_u(), choice);
   if (lights.selection.empty()) return false;
-  choice.slot = lights.selection.size() > 1 ? sample_discrete(lights.selection, draw_u()) : 0;
+  choice.slot = light_choice_draws(lights) ? sample_discrete(lights.selection, draw_u()) : 0;
   choice.probability = lights.selection.pmf[choice.slot];
   return true;
 }

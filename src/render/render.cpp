@@ -113,11 +113,11 @@ struct PassRunner {
   const StopCheck& stop;
   ProgressMeter& progress;
 
-  // The camera ray of sample `sample` at pixel (x, y), and the filter's weight sign; none where
-  // the projection sees nothing (outside a fisheye's circle).
-  std::optional<Ray> camera_ray(int x, int y, const SampleContext& sample, bool& negative) const {
+  // The camera ray of sample `sample` at pixel (x, y) through `pixel_pair` (its sample_pixel), and
+  // the filter's weight sign; none where the projection sees nothing (outside a fisheye's circle).
+  std::optional<Ray> camera_ray(int x, int y, const SampleContext& sample, vec2 pixel_pair, bool& negative) const {
     // The pixel pair warped by the filter: the box of one pixel keeps it as it is.
-    FilterSample placed = sample_filter(filter, sample_pixel(sample));
+    FilterSample placed = sample_filter(filter, pixel_pair);
     negative = placed.weight < 0;  // the weight's magnitude is one for the whole filter
     vec2 lens = frame.lens_radius > 0 ? sample_2d(sample, lens_dimension) : vec2{0.5f, 0.5f};
     return generate_camera_ray(frame, float(x) + placed.position.x, float(y) + placed.position.y, lens);
@@ -153,7 +153,7 @@ struct PassRunner {
     for (uint32_t index = first; index < end; ++index) {
       SampleContext sample = sample_at(x, y, index);
       bool negative;
-      std::optional<Ray> ray = camera_ray(x, y, sample, negative);
+      std::optional<Ray> ray = camera_ray(x, y, sample, sample_pixel(sample), negative);
       FirstHit first_hit;
       color3 value =
           ray ? integrator.one_path(ctx, *ray, sample, c, first_hit_wanted(first_hit), nullptr) : color3{};
@@ -182,6 +182,10 @@ struct PassRunner {
     BatchPath batch[max_batch_paths];
     const Ray* rays[max_batch_paths];
     HitId hits[max_batch_paths];
+    // The Sobol sampler's pixel pairs (dimension 0, as sample_pixel draws them), a tile's at once.
+    static thread_local SobolLanes pixel_pairs;
+    static_assert(SobolLanes::capacity >= max_batch_paths);
+    bool sobol = s.sampler == SamplerKind::sobol;
     RayCounts& c = counts.local();
     uint64_t pixels = 0;
     for (int y0 = r.rows().begin(); y0 < r.rows().end(); y0 += 8)
@@ -193,11 +197,17 @@ struct PassRunner {
         for (uint32_t index = first; index < end; ++index) {
           if (stop()) return pixels;
           int paths = 0;
+          if (sobol) {
+            pixel_pairs.count = 0;
+            for (int i = 0; i < count; ++i) pixel_pairs.add(sample_at(pending[i].x, pending[i].y, index), 0);
+            draw_sobol_lanes(pixel_pairs);
+          }
           for (int i = 0; i < count; ++i) {
             Pending& p = pending[i];
             p.first_hit = {};
             SampleContext sample = sample_at(p.x, p.y, index);
-            std::optional<Ray> ray = camera_ray(p.x, p.y, sample, p.negative);
+            vec2 pixel_pair = sobol ? vec2{pixel_pairs.x[i], pixel_pairs.y[i]} : sample_pixel(sample);
+            std::optional<Ray> ray = camera_ray(p.x, p.y, sample, pixel_pair, p.negative);
             p.path = ray ? paths : -1;
             if (ray) {
               BatchPath& path = batch[paths];

@@ -5,56 +5,11 @@
 
 #include "math/fast_divisor.h"
 #include "sampling/hash.h"
+#include "sampling/sobol.h"
 
 namespace radiant {
 
 namespace {
-
-constexpr uint32_t reverse_bits(uint32_t v) {
-  v = __builtin_bswap32(v);  // one instruction for the byte and half-word stages (GCC, Clang)
-  v = ((v >> 1) & 0x55555555U) | ((v & 0x55555555U) << 1);
-  v = ((v >> 2) & 0x33333333U) | ((v & 0x33333333U) << 2);
-  return ((v >> 4) & 0x0F0F0F0FU) | ((v & 0x0F0F0F0FU) << 4);
-}
-
-// Sobol dimension 1 (primitive polynomial x + 1: m_k = m_{k-1} ^ 2 m_{k-1}), bit-reversed and
-// tabulated per byte of the index: four lookups instead of a loop over its 32 bits.
-struct Sobol1Tables {
-  uint32_t byte[4][256];
-};
-constexpr Sobol1Tables make_sobol1_tables() {
-  uint32_t columns[32] = {};
-  uint32_t m = 1;
-  for (int k = 0; k < 32; ++k) {
-    columns[k] = reverse_bits(m << (31 - k));
-    m = m ^ (m << 1);
-  }
-  Sobol1Tables t{};
-  for (int b = 0; b < 4; ++b)
-    for (uint32_t value = 0; value < 256; ++value)
-      for (int bit = 0; bit < 8; ++bit)
-        if (value & (1u << bit)) t.byte[b][value] ^= columns[8 * b + bit];
-  return t;
-}
-constexpr Sobol1Tables sobol1_tables = make_sobol1_tables();
-
-// Sobol dimension 1 of `index`, bit-reversed.
-uint32_t sobol1_reversed(uint32_t index) {
-  return sobol1_tables.byte[0][index & 0xFF] ^ sobol1_tables.byte[1][(index >> 8) & 0xFF] ^
-         sobol1_tables.byte[2][(index >> 16) & 0xFF] ^ sobol1_tables.byte[3][index >> 24];
-}
-
-// The Laine-Karras hash: each bit is flipped by a function of the bits below it and the seed
-// (the constants of Burley 2020 / pbrt-v4's FastOwenScrambler). Applied to bit-reversed digits
-// it is a nested uniform (Owen) scramble.
-constexpr uint32_t laine_karras(uint32_t v, uint32_t seed) {
-  v ^= v * 0x3d20adeaU;
-  v += seed;
-  v *= (seed >> 16) | 1;
-  v ^= v * 0x05526c56U;
-  v ^= v * 0x53a22864U;
-  return v;
-}
 
 // Element i of a pseudo-random permutation of [0, length) chosen by `seed` (Kensler 2013).
 uint32_t permutation_element(uint32_t i, const FastDivisor& length, uint32_t seed) {
@@ -68,30 +23,6 @@ uint32_t permutation_element(uint32_t i, const FastDivisor& length, uint32_t see
     i &= w, i ^= i >> 5;
   } while (i >= length.d);
   return length.remainder(i + seed);
-}
-
-// Shuffled, Owen-scrambled Sobol (Burley 2020, "Practical Hash-based Owen Scrambling"): each pair
-// of dimensions is the first two Sobol dimensions, Owen-scrambled by its own seeds, with the
-// sample index itself Owen-scrambled (shuffled) by a third, so that pairs are not correlated
-// with each other. The shuffle maps every aligned block of 2^k indices onto an aligned block,
-// so the first 2^k samples of a pixel are still a (0,k,2)-net in every pair. The pixel pair
-// keeps the unshuffled order (every prefix of a pixel's samples is then well spread, for
-// progressive and adaptive rendering).
-struct ShuffledSobol {
-  uint32_t index;  // the shuffled sample index
-  uint32_t seed;   // of this pair; the two scrambles derive from it
-};
-ShuffledSobol shuffled_sobol(const SampleContext& c, uint32_t dimension) {
-  uint32_t h = hash3(c.pixel, dimension, c.seed);
-  uint32_t index = dimension == 0 ? c.index : reverse_bits(laine_karras(reverse_bits(c.index), h));
-  return {index, h};
-}
-// Sobol dimension 0 is the radical inverse: its bit-reversed digits are the index itself.
-float sobol_x(const ShuffledSobol& s) {
-  return bits_to_unit_float(reverse_bits(laine_karras(s.index, mix_bits(s.seed ^ 0xa511e9b3U))));
-}
-float sobol_y(const ShuffledSobol& s) {
-  return bits_to_unit_float(reverse_bits(laine_karras(sobol1_reversed(s.index), mix_bits(s.seed ^ 0x63d83595U))));
 }
 
 float random_value(const SampleContext& c, uint32_t dimension) {
@@ -145,13 +76,13 @@ vec2 sample_pixel(const SampleContext& c) {
 
 float sample_1d(const SampleContext& c, uint32_t dimension) {
   if (c.kind != SamplerKind::sobol) return random_value(c, dimension);
-  return sobol_x(shuffled_sobol(c, dimension));
+  return bits_to_unit_float(sobol::x_bits(sobol::shuffle(c.pixel, c.index, dimension, c.seed)));
 }
 
 vec2 sample_2d(const SampleContext& c, uint32_t dimension) {
   if (c.kind != SamplerKind::sobol) return {random_value(c, dimension), random_value(c, dimension + 1)};
-  ShuffledSobol s = shuffled_sobol(c, dimension);
-  return {sobol_x(s), sobol_y(s)};
+  sobol::ShuffledIndex s = sobol::shuffle(c.pixel, c.index, dimension, c.seed);
+  return {bits_to_unit_float(sobol::x_bits(s)), bits_to_unit_float(sobol::y_bits(s))};
 }
 
 }  // namespace radiant

@@ -19,8 +19,9 @@ struct SampleContext {
 };
 
 // Position inside the pixel, in [0,1)^2. grid: cell centres; jittered: one random point per
-// cell; random: independent; sobol: shuffled Owen-scrambled Sobol. One sample shoots through the centre
-// for grid and jittered.
+// cell; random: independent; sobol: shuffled Owen-scrambled Sobol, the pair of dimension 0
+// (sample_2d's, and draw_sobol_lanes' for dimension 0). One sample shoots through the centre for
+// grid and jittered.
 vec2 sample_pixel(const SampleContext& context);
 
 // The lens point of a thin-lens camera: a fixed pair far above every path vertex's block
@@ -32,5 +33,22 @@ constexpr uint32_t lens_dimension = 0xF0000000u;
 // the other samplers use independent random values.
 float sample_1d(const SampleContext& context, uint32_t dimension);
 vec2 sample_2d(const SampleContext& context, uint32_t dimension);
+
+// Many Sobol pairs drawn at once (SamplerKind::sobol only), laid out one array per field so
+// that the draw runs across them in SIMD: fill the first `count` lanes' inputs, call
+// draw_sobol_lanes, read x and y. Lane i's (x, y) is sample_2d({sobol, pixel[i], index[i], _,
+// seed[i]}, dimension[i]) to the bit (a 1D value is the pair's x, as sample_1d's).
+struct SobolLanes {
+  static constexpr int capacity = 320;
+  alignas(32) uint32_t pixel[capacity], index[capacity], dimension[capacity], seed[capacity];
+  alignas(32) float x[capacity], y[capacity];
+  int count = 0;
+
+  void add(const SampleContext& c, uint32_t d) {
+    pixel[count] = c.pixel, index[count] = c.index, dimension[count] = d, seed[count] = c.seed;
+    ++count;
+  }
+};
+void draw_sobol_lanes(SobolLanes& lanes);
 
 }  // namespace radiant

@@ -1,9 +1,12 @@
-// Samplers: strata coverage, progressive prefixes, and purity.
+// Samplers: strata coverage, progressive prefixes, purity, and the Sobol pairs drawn in SIMD.
 #include <doctest/doctest.h>
 
+#include <bit>
 #include <set>
+#include <vector>
 
 #include "sampling/sampler.h"
+#include "sampling/sobol.h"
 
 using namespace radiant;
 
@@ -107,5 +110,58 @@ TEST_CASE("sampler: the strata follow the sample count when it changes between s
       cells.insert(cell_of(sample_pixel(context(SamplerKind::jittered, i, samples)), int(n)));
     CAPTURE(samples);
     CHECK(cells.size() == samples);
+  }
+}
+
+TEST_CASE("sampler: Sobol dimension 1 by shift-and-mask steps is the product with its generator matrix") {
+  // The generator matrix from the direction numbers of the polynomial x + 1 (m_k = m_{k-1} ^ 2 m_{k-1}),
+  // column k the bit-reversed direction number m_k 2^(31-k), as Joe and Kuo define them.
+  uint32_t columns[32];
+  uint32_t m = 1;
+  for (int k = 0; k < 32; ++k) {
+    columns[k] = sobol::reverse_bits(m << (31 - k));
+    m ^= m << 1;
+  }
+  uint32_t state = 12345;
+  for (int n = 0; n < 200000; ++n) {
+    uint32_t index = n < 70000 ? uint32_t(n) : (state = state * 1664525u + 1013904223u);
+    uint32_t product = 0;
+    for (int k = 0; k < 32; ++k)
+      if (index >> k & 1) product ^= columns[k];
+    CAPTURE(index);
+    REQUIRE(sobol::sobol1_reversed(index) == product);
+  }
+}
+
+TEST_CASE("sampler: Sobol pairs drawn many at once are sample_2d's and sample_1d's to the bit") {
+  SobolLanes lanes;
+  std::vector<SampleContext> contexts;
+  std::vector<uint32_t> dimensions;
+  uint32_t state = 99;
+  auto next = [&] { return state = state * 1664525u + 1013904223u; };
+  for (int i = 0; i < SobolLanes::capacity; ++i) {
+    // Small and huge indices, pixels and seeds, and dimension 0 (the unshuffled pixel pair).
+    SampleContext c{SamplerKind::sobol, i % 3 ? next() % 4096 : next(), i % 5 ? next() % 256 : next(), 64,
+                    i % 7 ? next() % 4 : next()};
+    uint32_t d = i % 11 == 0 ? 0 : 2 + next() % 200;
+    contexts.push_back(c);
+    dimensions.push_back(d);
+    lanes.add(c, d);
+  }
+  // Counts that end inside and at the end of a SIMD register.
+  for (int count : {SobolLanes::capacity, 13, 8, 1}) {
+    lanes.count = count;
+    draw_sobol_lanes(lanes);
+    for (int i = 0; i < count; ++i) {
+      CAPTURE(i);
+      vec2 expected = sample_2d(contexts[size_t(i)], dimensions[size_t(i)]);
+      REQUIRE(std::bit_cast<uint32_t>(lanes.x[i]) == std::bit_cast<uint32_t>(expected.x));
+      REQUIRE(std::bit_cast<uint32_t>(lanes.y[i]) == std::bit_cast<uint32_t>(expected.y));
+      if (dimensions[size_t(i)] > 0)
+        REQUIRE(std::bit_cast<uint32_t>(lanes.x[i]) ==
+                std::bit_cast<uint32_t>(sample_1d(contexts[size_t(i)], dimensions[size_t(i)])));
+      else
+        REQUIRE(std::bit_cast<uint32_t>(lanes.y[i]) == std::bit_cast<uint32_t>(sample_pixel(contexts[size_t(i)]).y));
+    }
   }
 }
