@@ -13,6 +13,7 @@
 #include "lights/light_selection.h"
 #include "materials/bsdf.h"
 #include "materials/dispersion.h"
+#include "sampling/cosine_warp.h"
 #include "sampling/sampler.h"
 #include "sampling/warp.h"
 
@@ -88,6 +89,7 @@ struct LightSampleResult {
 // Those a scene cannot use are not drawn (`has`); run() draws each when it needs it.
 struct VertexDraws {
   vec2 direction;      // bsdf_direction
+  vec3 cosine;         // sample_cosine_hemisphere(direction), drawn with it
   vec2 light_point;    // light_point
   float light_choice;  // light_choice
   float lobe_choice;   // lobe_choice
@@ -289,8 +291,9 @@ struct PathVariant {
       if (drawn) drawn->lobe_choice_used = true;
       u_lobe = drawn && drawn->has(lobe_choice) ? drawn->lobe_choice : sample_1d(sample, dimension(depth, lobe_choice));
     }
-    auto scattered = bsdf.sample(
-        u_lobe, drawn && drawn->has(bsdf_direction) ? drawn->direction : sample_2d(sample, dimension(depth, bsdf_direction)));
+    auto scattered = drawn && drawn->has(bsdf_direction)
+                         ? bsdf.sample(u_lobe, drawn->direction, drawn->cosine)
+                         : bsdf.sample(u_lobe, sample_2d(sample, dimension(depth, bsdf_direction)));
     if (LightSampling && !is_pure_delta(m)) {
       sample_one_light<E>(ctx, hit, bsdf, f, sample, depth, drawn, counts, light);
       if (light.traces) {
@@ -386,6 +389,7 @@ struct PathVariant {
     // A stage's draws, and whether the last stage's BSDFs chose lobes (then this one draws
     // their choices ahead too).
     SobolLanes lanes;
+    float cosine_x[max_batch_paths], cosine_y[max_batch_paths], cosine_z[max_batch_paths];
     VertexDraws drawn[max_batch_paths];
     bool lobe_choices = true;
   };
@@ -424,11 +428,18 @@ struct PathVariant {
     auto next_group = [&](VertexDimension d) { return wants & (1u << d) ? live_count * group++ : -1; };
     int direction = next_group(bsdf_direction), point = next_group(light_point), choice = next_group(light_choice),
         lobe = next_group(lobe_choice), survival = next_group(roulette);
+    // The directions warped for diffuse lobes, whichever lobe each path's BSDF will choose: a
+    // warp across the lanes costs less than a branch on the lobe would.
+    if (direction >= 0)
+      cosine_hemisphere_many(lanes.x + direction, lanes.y + direction, live_count, w.cosine_x, w.cosine_y, w.cosine_z);
     for (int k = 0; k < live_count; ++k) {
       VertexDraws& v = w.drawn[k];
       v.drawn = wants;
       v.lobe_choice_used = false;
-      if (direction >= 0) v.direction = {lanes.x[direction + k], lanes.y[direction + k]};
+      if (direction >= 0) {
+        v.direction = {lanes.x[direction + k], lanes.y[direction + k]};
+        v.cosine = {w.cosine_x[k], w.cosine_y[k], w.cosine_z[k]};
+      }
       if (point >= 0) v.light_point = {lanes.x[point + k], lanes.y[point + k]};
       if (choice >= 0) v.light_choice = lanes.x[choice + k];
       if (lobe >= 0) v.lobe_choice = lanes.x[lobe + k];
@@ -441,7 +452,8 @@ struct PathVariant {
   // in run(), so its radiance is run()'s bit for bit.
   static void run_batch(const RenderContext& ctx, BatchPath* batch, int count, RayCounts& counts) {
     static thread_local BatchWorkspace workspace;
-    auto& [paths, lights, rays, hits, occluded, live, shadowed, scratch, lanes, drawn, lobe_choices] = workspace;
+    auto& [paths, lights, rays, hits, occluded, live, shadowed, scratch, lanes, cosine_x, cosine_y, cosine_z, drawn,
+           lobe_choices] = workspace;
     count = std::min(count, max_batch_paths);
     int live_count = count;
     for (int i = 0; i < count; ++i) {

@@ -110,6 +110,14 @@ std::optional<BsdfSample> Bsdf::sample(float u_lobe, vec2 u) const {
   return std::nullopt;
 }
 
+std::optional<BsdfSample> Bsdf::sample(float u_lobe, vec2 u, vec3 cosine) const {
+  if (auto* l = std::get_if<LambertLobes>(&lobes_)) return sample_warped(*l, cosine);
+  if (auto* l = std::get_if<PhongLobes>(&lobes_)) return sample_local(*l, u_lobe, u, &cosine);
+  if (auto* l = std::get_if<MetallicRoughnessLobes>(&lobes_)) return sample_local(*l, u_lobe, u, &cosine);
+  if (auto* l = std::get_if<LayeredLobes>(&lobes_)) return sample_local(*l, u_lobe, u, &cosine);
+  return std::nullopt;
+}
+
 bool Bsdf::chooses_lobe() const {
   auto count = [](std::initializer_list<float> probabilities) {
     int n = 0;

@@ -43,6 +43,9 @@ class Bsdf {
   color3 eval(vec3 wi, float& pdf) const;
   // Samples a direction; u_lobe picks a lobe, u the direction within it. nullopt when absorbed.
   std::optional<BsdfSample> sample(float u_lobe, vec2 u) const;
+  // sample(u_lobe, u) with `cosine` = sample_cosine_hemisphere(u) worked out already (a batch's
+  // at once, in SIMD): the diffuse and sheen lobes take it instead of warping u again.
+  std::optional<BsdfSample> sample(float u_lobe, vec2 u, vec3 cosine) const;
   // False when at most one lobe can be chosen: sample() then ignores u_lobe, and the path
   // tracer skips drawing it.
   bool chooses_lobe() const;

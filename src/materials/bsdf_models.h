@@ -27,6 +27,8 @@ color3 eval_world(const LambertLobes& l, vec3 wi);
 color3 eval_world(const LambertLobes& l, vec3 wi, float& pdf);  // and pdf_world in `pdf`
 float pdf_world(const LambertLobes& l, vec3 wi);
 std::optional<BsdfSample> sample_world(const LambertLobes& l, vec2 u);
+// sample_world with `local` = sample_cosine_hemisphere(u) already worked out.
+std::optional<BsdfSample> sample_warped(const LambertLobes& l, vec3 local);
 
 // Phong: normalized diffuse + modified-Phong lobe, delta mirror (kr) and delta transmission (kt).
 // The weights and lobe choice depend on the material only.
@@ -47,7 +49,7 @@ struct PhongLobes : PhongWeights {
 PhongLobes make_phong_lobes(const PhongWeights& w, vec3 n, vec3 wo);
 color3 eval_local(const PhongLobes& l, vec3 wi);
 float pdf_local(const PhongLobes& l, vec3 wi);
-std::optional<BsdfSample> sample_local(const PhongLobes& l, float u_lobe, vec2 u);
+std::optional<BsdfSample> sample_local(const PhongLobes& l, float u_lobe, vec2 u, const vec3* cosine = nullptr);
 bool is_phong_pure_delta(const SurfaceMaterial& m);
 
 // glTF metallic-roughness: GGX specular over Lambert, metal, and (rough or smooth) transmission.
@@ -89,7 +91,8 @@ color3 eval_local(const MetallicRoughnessLobes& l, vec3 wi);
 float pdf_local(const MetallicRoughnessLobes& l, vec3 wi);
 // Both at once, sharing the half vector and the microfacet density (lobe_sampling.h).
 color3 eval_with_pdf(const MetallicRoughnessLobes& l, vec3 wi, float& pdf);
-std::optional<BsdfSample> sample_local(const MetallicRoughnessLobes& l, float u_lobe, vec2 u);
+std::optional<BsdfSample> sample_local(const MetallicRoughnessLobes& l, float u_lobe, vec2 u,
+                                       const vec3* cosine = nullptr);
 bool is_metallic_roughness_pure_delta(const SurfaceMaterial& m);
 
 // KHR_materials_clearcoat and KHR_materials_sheen: a clear dielectric GGX coat (ior 1.5) over a
@@ -115,6 +118,6 @@ struct LayeredLobes : LayeredParams {
 LayeredLobes make_layered_lobes(const LayeredParams& params, vec3 n, vec3 wo, vec3 tangent = {});
 color3 eval_local(const LayeredLobes& l, vec3 wi);
 float pdf_local(const LayeredLobes& l, vec3 wi);
-std::optional<BsdfSample> sample_local(const LayeredLobes& l, float u_lobe, vec2 u);
+std::optional<BsdfSample> sample_local(const LayeredLobes& l, float u_lobe, vec2 u, const vec3* cosine = nullptr);
 
 }  // namespace radiant

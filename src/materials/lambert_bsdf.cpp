@@ -42,12 +42,15 @@ float pdf_world(const LambertLobes& l, vec3 wi) {
 }
 
 std::optional<BsdfSample> sample_world(const LambertLobes& l, vec2 u) {
+  return sample_warped(l, sample_cosine_hemisphere(u));
+}
+
+std::optional<BsdfSample> sample_warped(const LambertLobes& l, vec3 local) {
   // One named result on every path, so that it is built where the caller wants it (NRVO). A
   // local copied into the return value is written as floats and read back as 16-byte blocks,
   // which stalls the CPU's store forwarding: that took a third of this function's time.
   std::optional<BsdfSample> s;
   if (!l.valid) return s;
-  vec3 local = sample_cosine_hemisphere(u);
   if (!(local.z >= min_cosine)) return s;
   s.emplace();
   s->wi = to_world(make_shading_frame(l.n), local);

@@ -112,14 +112,14 @@ float pdf_local(const LayeredLobes& l, vec3 wi) {
   return std::isfinite(pdf) ? pdf : 0;
 }
 
-std::optional<BsdfSample> sample_local(const LayeredLobes& l, float u_lobe, vec2 u) {
+std::optional<BsdfSample> sample_local(const LayeredLobes& l, float u_lobe, vec2 u, const vec3* cosine) {
   if (!l.valid) return std::nullopt;
   if (u_lobe < l.p_coat) return sample_coat(l, u);
-  if (u_lobe < l.p_coat + l.p_sheen) return mixture_sample(l, sample_cosine_hemisphere(u));
+  if (u_lobe < l.p_coat + l.p_sheen) return mixture_sample(l, cosine ? *cosine : sample_cosine_hemisphere(u));
   // The rest of u_lobe chooses among the base's lobes.
   float p_base = 1 - l.p_coat - l.p_sheen;
   float u_base = std::min((u_lobe - l.p_coat - l.p_sheen) / p_base, 0x1.fffffep-1f);
-  std::optional<BsdfSample> s = sample_local(l.base_lobes, u_base, u);
+  std::optional<BsdfSample> s = sample_local(l.base_lobes, u_base, u, cosine);
   if (!s) return std::nullopt;
   vec3 wi = to_local(l.frame, s->wi);
   if (!s->delta) return mixture_sample(l, wi);

@@ -232,10 +232,10 @@ float pdf_local(const MetallicRoughnessLobes& l, vec3 wi) {
 
 color3 eval_with_pdf(const MetallicRoughnessLobes& l, vec3 wi, float& pdf) { return evaluate<true, true>(l, wi, pdf); }
 
-std::optional<BsdfSample> sample_local(const MetallicRoughnessLobes& l, float u_lobe, vec2 u) {
+std::optional<BsdfSample> sample_local(const MetallicRoughnessLobes& l, float u_lobe, vec2 u, const vec3* cosine) {
   if (!l.valid) return std::nullopt;
   if (u_lobe < l.p_specular) return sample_specular(l, u);
-  if (u_lobe < l.p_specular + l.p_diffuse) return mixture_sample(l, sample_cosine_hemisphere(u));
+  if (u_lobe < l.p_specular + l.p_diffuse) return mixture_sample(l, cosine ? *cosine : sample_cosine_hemisphere(u));
   if (l.p_transmission > 0) return sample_transmission(l, u);
   return std::nullopt;
 }

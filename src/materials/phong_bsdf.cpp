@@ -78,10 +78,10 @@ float pdf_local(const PhongLobes& l, vec3 wi) {
   return pdf;
 }
 
-std::optional<BsdfSample> sample_local(const PhongLobes& l, float u_lobe, vec2 u) {
+std::optional<BsdfSample> sample_local(const PhongLobes& l, float u_lobe, vec2 u, const vec3* cosine) {
   if (!l.valid) return std::nullopt;
   float threshold = l.p_diffuse;
-  if (u_lobe < threshold) return mixture_sample(l, sample_cosine_hemisphere(u));
+  if (u_lobe < threshold) return mixture_sample(l, cosine ? *cosine : sample_cosine_hemisphere(u));
   if (u_lobe < (threshold += l.p_glossy)) return mixture_sample(l, sample_phong_lobe(l, u));
   if (u_lobe < (threshold += l.p_mirror)) return delta_sample(l, reflect_local(l.wo), l.kr, l.p_mirror);
   if (l.p_transmission > 0) return sample_delta_transmission(l);

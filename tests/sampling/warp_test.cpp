@@ -1,9 +1,13 @@
 // Warps: the cosine-weighted hemisphere against the concentric mapping worked out in double
-// precision with libm's sine and cosine.
+// precision with libm's sine and cosine, and the same warp run across many samples in SIMD.
 #include <doctest/doctest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
+#include "sampling/cosine_warp.h"
 #include "sampling/warp.h"
 
 using namespace radiant;
@@ -52,4 +56,27 @@ TEST_CASE("warp: the centre of the square maps to the normal") {
   CHECK(d.x == 0);
   CHECK(d.y == 0);
   CHECK(d.z == 1);
+}
+
+TEST_CASE("warp: cosine-weighted directions warped many at once are the scalar warp's to the bit") {
+  // The centre (the pole), the corners and edges of the square, the diagonals (where the major
+  // axis changes), and random points.
+  std::vector<float> ux = {0.5f, 0, 0, 0x1.fffffep-1f, 0.25f, 0.75f, 0.5f, 0.5f, 0.3f};
+  std::vector<float> uy = {0.5f, 0, 0x1.fffffep-1f, 0.5f, 0.25f, 0.25f, 0.1f, 0x1.fffffep-1f, 0.7f};
+  uint32_t state = 7;
+  auto next = [&] { return float((state = state * 1664525u + 1013904223u) >> 8) * 0x1p-24f; };
+  while (ux.size() < 1003) ux.push_back(next()), uy.push_back(next());
+  std::vector<float> x(ux.size()), y(ux.size()), z(ux.size());
+  cosine_hemisphere_many(ux.data(), uy.data(), int(ux.size()), x.data(), y.data(), z.data());
+  for (size_t i = 0; i < ux.size(); ++i) {
+    CAPTURE(ux[i]);
+    CAPTURE(uy[i]);
+    vec3 d = sample_cosine_hemisphere({ux[i], uy[i]});
+    REQUIRE(std::bit_cast<uint32_t>(x[i]) == std::bit_cast<uint32_t>(d.x));
+    REQUIRE(std::bit_cast<uint32_t>(y[i]) == std::bit_cast<uint32_t>(d.y));
+    REQUIRE(std::bit_cast<uint32_t>(z[i]) == std::bit_cast<uint32_t>(d.z));
+  }
+  CHECK(x[0] == 0);
+  CHECK(y[0] == 0);
+  CHECK(z[0] == 1);
 }
