@@ -353,8 +353,8 @@ void RenderFlags::bind(CLI::App& app, bool image_flags) {
                  "point (nearest texel), bilinear (full resolution) or trilinear (mip-mapped by the pixel's "
                  "footprint; default)");
   app.add_option("--batching", batching,
-                 "How paths share ray tracing: camera (a tile's camera rays as packets; default), all (paths "
-                 "advance together, every ray in streams) or none; the image is the same");
+                 "How paths share ray tracing: all (paths advance together, every ray in streams; default), "
+                 "camera (a tile's camera rays as packets, then each path alone) or none; the image is the same");
   app.add_option("--effects", options.effects, "Switch effects off/on: e.g. -shadows,-indirect, or 'all' (generic integrator)");
   app.add_flag("--allow-external-files", allow_external_files, "Let scene files refer to files outside their folder");
   app.add_option("--max-memory", max_memory,

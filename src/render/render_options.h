@@ -52,8 +52,8 @@ enum class PathBatching {
   none,         // each path alone, one ray at a time: the reference the tests compare with
   camera_rays,  // a tile's camera rays traced together as Embree packets, then each path alone
   // a tile's paths advance a vertex at a time together, their bounces and shadow rays traced
-  // as Embree streams (Integrator::batch): slower on the benchmark's Cornell box, see
-  // docs/performance.md
+  // as Embree streams and their random numbers drawn and warped in SIMD (Integrator::batch):
+  // the default, the fastest on the benchmark's Cornell boxes (docs/performance.md)
   all_rays,
 };
 
@@ -102,8 +102,9 @@ struct RenderOptions {
   TextureFilterMode texture_filter = TextureFilterMode::trilinear;
   float noise_threshold = 0;      // 0 = off
   float contribution_cutoff = 0.001f;  // Whitted: stop recursing below this weight
-  // How paths share their ray tracing; every way gives the same image, bit for bit.
-  PathBatching path_batching = PathBatching::camera_rays;
+  // How paths share their ray tracing; every way gives the same image, bit for bit. The batch
+  // (all_rays) is the fastest since its random numbers and warps run in SIMD.
+  PathBatching path_batching = PathBatching::all_rays;
   bool quiet = false;
   bool progress = false;  // print progress to stderr (the CLI sets it when stderr is a terminal)
   // --max-memory: charged for the film, the output image, the light table and the environment
