@@ -84,7 +84,7 @@ struct LightSampleResult {
   bool traces = false;
 };
 
-// A vertex's random numbers drawn ahead, for a whole batch at once (sample_2d_many): the values
+// A vertex's random numbers drawn ahead, for a whole batch at once (draw_sobol_lanes): the values
 // the vertex would draw itself, to the bit (a 1D value is the first of its dimension's pair).
 // Those a scene cannot use are not drawn (`has`); run() draws each when it needs it.
 struct VertexDraws {
@@ -116,6 +116,9 @@ template <uint32_t E>
   LightChoice choice;
   auto u_choice = [&] {
     return drawn && drawn->has(light_choice) ? drawn->light_choice : sample_1d(sample, dimension(depth, light_choice));
+  };
+  auto u_light_point = [&] {
+    return drawn && drawn->has(light_point) ? drawn->light_point : sample_2d(sample, dimension(depth, light_point));
   };
   if (!choose_light(lights, hit.position, f.normal, u_choice, choice)) return;
   size_t index = choice.slot;
@@ -154,7 +157,7 @@ template <uint32_t E>
     if (!enabled<E>(ctx.effects, effect_emission)) return;
     const AreaLight& light = lights.area_lights[index - lights.delta_lights.size()];
     AreaLightSample s;
-    vec2 u_point = drawn && drawn->has(light_point) ? drawn->light_point : sample_2d(sample, dimension(depth, light_point));
+    vec2 u_point = u_light_point();
     if (!sample_area_light(light, hit.position, u_point, s)) return;
     if (!area_light_emits(light, s.normal, -s.direction)) return;
     wi = s.direction;
@@ -163,8 +166,8 @@ template <uint32_t E>
     emitted = area_light_emission<E>(ctx, light, s.barycentric);
   } else {
     if (!enabled<E>(ctx.effects, effect_environment)) return;
-    vec2 u_point = drawn && drawn->has(light_point) ? drawn->light_point : sample_2d(sample, dimension(depth, light_point));
-    light_pdf = sample_environment(lights, f.normal, sample_1d(sample, dimension(depth, environment_choice)), u_point, wi);
+    float u_environment = sample_1d(sample, dimension(depth, environment_choice));
+    light_pdf = sample_environment(lights, f.normal, u_environment, u_light_point(), wi);
     if (!(light_pdf > 0)) return;
     distance = std::numeric_limits<float>::infinity();
     emitted = eval_environment(lights, wi);
@@ -386,8 +389,9 @@ struct PathVariant {
     bool occluded[max_batch_paths];
     int live[max_batch_paths], shadowed[max_batch_paths];
     VertexScratch scratch;
-    // A stage's draws, and whether the last stage's BSDFs chose lobes (then this one draws
-    // their choices ahead too).
+    // A stage's draws (draw_ahead): the Sobol lanes, the directions' cosine warps, each live
+    // path's values, and whether the last stage's BSDFs chose lobes (then this one draws their
+    // choices ahead too).
     SobolLanes lanes;
     float cosine_x[max_batch_paths], cosine_y[max_batch_paths], cosine_z[max_batch_paths];
     VertexDraws drawn[max_batch_paths];

@@ -59,7 +59,9 @@ constexpr ShuffledIndex shuffle(uint32_t pixel, uint32_t index, uint32_t dimensi
   return {shuffled, h};
 }
 // Sobol dimension 0 is the radical inverse: its bit-reversed digits are the index itself.
-constexpr uint32_t x_bits(ShuffledIndex s) { return reverse_bits(laine_karras(s.index, mix_bits(s.seed ^ 0xa511e9b3U))); }
+constexpr uint32_t x_bits(ShuffledIndex s) {
+  return reverse_bits(laine_karras(s.index, mix_bits(s.seed ^ 0xa511e9b3U)));
+}
 constexpr uint32_t y_bits(ShuffledIndex s) {
   return reverse_bits(laine_karras(sobol1_reversed(s.index), mix_bits(s.seed ^ 0x63d83595U)));
 }
