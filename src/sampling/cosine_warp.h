@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "math/lane_isa.h"
 #include "math/vec.h"
 
 namespace radiant {
@@ -49,6 +50,7 @@ inline vec3 cosine_hemisphere(float ux, float uy) {
 }
 
 // cosine_hemisphere for `count` samples (u_x[i], u_y[i]), into x, y, z: the same bits, in SIMD.
-void cosine_hemisphere_many(const float* u_x, const float* u_y, int count, float* x, float* y, float* z);
+void cosine_hemisphere_many(const float* u_x, const float* u_y, int count, float* x, float* y, float* z,
+                            LaneIsa isa = LaneIsa::best);
 
 }  // namespace radiant

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 
+#include "math/lane_isa.h"
 #include "math/vec.h"
 #include "scene/scene_desc.h"
 
@@ -35,8 +36,8 @@ float sample_1d(const SampleContext& context, uint32_t dimension);
 vec2 sample_2d(const SampleContext& context, uint32_t dimension);
 
 // Many Sobol pairs drawn at once (SamplerKind::sobol only), laid out one array per field so
-// that the draw runs across them in SIMD: fill the first `count` lanes' inputs, call
-// draw_sobol_lanes, read x and y. Lane i's (x, y) is sample_2d({sobol, pixel[i], index[i], _,
+// that the draw runs across them in SIMD (math/lane_isa.h): fill the first `count` lanes'
+// inputs, call draw_sobol_lanes, read x and y. Lane i's (x, y) is sample_2d({sobol, pixel[i], index[i], _,
 // seed[i]}, dimension[i]) to the bit (a 1D value is the pair's x, as sample_1d's).
 struct SobolLanes {
   static constexpr int capacity = 320;
@@ -49,6 +50,6 @@ struct SobolLanes {
     ++count;
   }
 };
-void draw_sobol_lanes(SobolLanes& lanes);
+void draw_sobol_lanes(SobolLanes& lanes, LaneIsa isa = LaneIsa::best);
 
 }  // namespace radiant

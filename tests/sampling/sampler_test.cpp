@@ -148,20 +148,26 @@ TEST_CASE("sampler: Sobol pairs drawn many at once are sample_2d's and sample_1d
     dimensions.push_back(d);
     lanes.add(c, d);
   }
-  // Counts that end inside and at the end of a SIMD register.
-  for (int count : {SobolLanes::capacity, 13, 8, 1}) {
-    lanes.count = count;
-    draw_sobol_lanes(lanes);
-    for (int i = 0; i < count; ++i) {
-      CAPTURE(i);
-      vec2 expected = sample_2d(contexts[size_t(i)], dimensions[size_t(i)]);
-      REQUIRE(std::bit_cast<uint32_t>(lanes.x[i]) == std::bit_cast<uint32_t>(expected.x));
-      REQUIRE(std::bit_cast<uint32_t>(lanes.y[i]) == std::bit_cast<uint32_t>(expected.y));
-      if (dimensions[size_t(i)] > 0)
-        REQUIRE(std::bit_cast<uint32_t>(lanes.x[i]) ==
-                std::bit_cast<uint32_t>(sample_1d(contexts[size_t(i)], dimensions[size_t(i)])));
-      else
-        REQUIRE(std::bit_cast<uint32_t>(lanes.y[i]) == std::bit_cast<uint32_t>(sample_pixel(contexts[size_t(i)]).y));
+  // Counts that end inside and at the end of a SIMD register, with every instruction set this
+  // CPU runs (they must agree, or shards from different machines would not merge to one image).
+  for (LaneIsa isa : {LaneIsa::best, LaneIsa::baseline, LaneIsa::avx2}) {
+    if (!lane_isa_available(isa)) continue;
+    CAPTURE(int(isa));
+    for (int count : {SobolLanes::capacity, 13, 8, 1}) {
+      lanes.count = count;
+      draw_sobol_lanes(lanes, isa);
+      for (int i = 0; i < count; ++i) {
+        CAPTURE(i);
+        const SampleContext& c = contexts[size_t(i)];
+        uint32_t d = dimensions[size_t(i)];
+        vec2 expected = sample_2d(c, d);
+        REQUIRE(std::bit_cast<uint32_t>(lanes.x[i]) == std::bit_cast<uint32_t>(expected.x));
+        REQUIRE(std::bit_cast<uint32_t>(lanes.y[i]) == std::bit_cast<uint32_t>(expected.y));
+        if (d > 0)
+          REQUIRE(std::bit_cast<uint32_t>(lanes.x[i]) == std::bit_cast<uint32_t>(sample_1d(c, d)));
+        else
+          REQUIRE(std::bit_cast<uint32_t>(lanes.y[i]) == std::bit_cast<uint32_t>(sample_pixel(c).y));
+      }
     }
   }
 }

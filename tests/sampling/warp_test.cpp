@@ -66,17 +66,21 @@ TEST_CASE("warp: cosine-weighted directions warped many at once are the scalar w
   uint32_t state = 7;
   auto next = [&] { return float((state = state * 1664525u + 1013904223u) >> 8) * 0x1p-24f; };
   while (ux.size() < 1003) ux.push_back(next()), uy.push_back(next());
-  std::vector<float> x(ux.size()), y(ux.size()), z(ux.size());
-  cosine_hemisphere_many(ux.data(), uy.data(), int(ux.size()), x.data(), y.data(), z.data());
-  for (size_t i = 0; i < ux.size(); ++i) {
-    CAPTURE(ux[i]);
-    CAPTURE(uy[i]);
-    vec3 d = sample_cosine_hemisphere({ux[i], uy[i]});
-    REQUIRE(std::bit_cast<uint32_t>(x[i]) == std::bit_cast<uint32_t>(d.x));
-    REQUIRE(std::bit_cast<uint32_t>(y[i]) == std::bit_cast<uint32_t>(d.y));
-    REQUIRE(std::bit_cast<uint32_t>(z[i]) == std::bit_cast<uint32_t>(d.z));
+  for (LaneIsa isa : {LaneIsa::best, LaneIsa::baseline, LaneIsa::avx2}) {
+    if (!lane_isa_available(isa)) continue;
+    CAPTURE(int(isa));
+    std::vector<float> x(ux.size()), y(ux.size()), z(ux.size());
+    cosine_hemisphere_many(ux.data(), uy.data(), int(ux.size()), x.data(), y.data(), z.data(), isa);
+    for (size_t i = 0; i < ux.size(); ++i) {
+      CAPTURE(ux[i]);
+      CAPTURE(uy[i]);
+      vec3 d = sample_cosine_hemisphere({ux[i], uy[i]});
+      REQUIRE(std::bit_cast<uint32_t>(x[i]) == std::bit_cast<uint32_t>(d.x));
+      REQUIRE(std::bit_cast<uint32_t>(y[i]) == std::bit_cast<uint32_t>(d.y));
+      REQUIRE(std::bit_cast<uint32_t>(z[i]) == std::bit_cast<uint32_t>(d.z));
+    }
+    CHECK(x[0] == 0);
+    CHECK(y[0] == 0);
+    CHECK(z[0] == 1);
   }
-  CHECK(x[0] == 0);
-  CHECK(y[0] == 0);
-  CHECK(z[0] == 1);
 }
