@@ -15,15 +15,15 @@ struct LightChoice {
 bool choose_light_by_bvh(const LightTable& lights, vec3 p, vec3 n, float u, LightChoice& choice);
 float light_choice_probability_by_bvh(const LightTable& lights, vec3 p, vec3 n, size_t slot);
 
-// Chooses a light for point `p` with shading normal `n`, calling `draw_u` for a number in [0,1)
-// only when there is a choice to make (one light under power sampling has none); false when
-// none can be chosen. Power sampling ignores p and n and stays inline: a scene with few lights
-// pays one branch for the BVH.
 // Whether choose_light draws a number (for drawing it ahead).
 inline bool light_choice_draws(const LightTable& lights) {
   return lights.sampler == LightSampler::bvh || lights.selection.size() > 1;
 }
 
+// Chooses a light for point `p` with shading normal `n`, calling `draw_u` for a number in [0,1)
+// only when there is a choice to make (one light under power sampling has none); false when
+// none can be chosen. Power sampling ignores p and n and stays inline: a scene with few lights
+// pays one branch for the BVH.
 template <class DrawU>
 inline bool choose_light(const LightTable& lights, vec3 p, vec3 n, DrawU draw_u, LightChoice& choice) {
   if (lights.sampler == LightSampler::bvh) return choose_light_by_bvh(lights, p, n, draw_u(), choice);

@@ -102,20 +102,18 @@ color3 Bsdf::eval(vec3 wi, float& pdf) const {
   return eval_local_with_pdf(lobes_, wi, pdf);
 }
 
-std::optional<BsdfSample> Bsdf::sample(float u_lobe, vec2 u) const {
-  if (auto* l = std::get_if<LambertLobes>(&lobes_)) return sample_world(*l, u);
-  if (auto* l = std::get_if<PhongLobes>(&lobes_)) return sample_local(*l, u_lobe, u);
-  if (auto* l = std::get_if<MetallicRoughnessLobes>(&lobes_)) return sample_local(*l, u_lobe, u);
-  if (auto* l = std::get_if<LayeredLobes>(&lobes_)) return sample_local(*l, u_lobe, u);
+std::optional<BsdfSample> Bsdf::sample_with(float u_lobe, vec2 u, const vec3* cosine) const {
+  if (auto* l = std::get_if<LambertLobes>(&lobes_)) return cosine ? sample_warped(*l, *cosine) : sample_world(*l, u);
+  if (auto* l = std::get_if<PhongLobes>(&lobes_)) return sample_local(*l, u_lobe, u, cosine);
+  if (auto* l = std::get_if<MetallicRoughnessLobes>(&lobes_)) return sample_local(*l, u_lobe, u, cosine);
+  if (auto* l = std::get_if<LayeredLobes>(&lobes_)) return sample_local(*l, u_lobe, u, cosine);
   return std::nullopt;
 }
 
+std::optional<BsdfSample> Bsdf::sample(float u_lobe, vec2 u) const { return sample_with(u_lobe, u, nullptr); }
+
 std::optional<BsdfSample> Bsdf::sample(float u_lobe, vec2 u, vec3 cosine) const {
-  if (auto* l = std::get_if<LambertLobes>(&lobes_)) return sample_warped(*l, cosine);
-  if (auto* l = std::get_if<PhongLobes>(&lobes_)) return sample_local(*l, u_lobe, u, &cosine);
-  if (auto* l = std::get_if<MetallicRoughnessLobes>(&lobes_)) return sample_local(*l, u_lobe, u, &cosine);
-  if (auto* l = std::get_if<LayeredLobes>(&lobes_)) return sample_local(*l, u_lobe, u, &cosine);
-  return std::nullopt;
+  return sample_with(u_lobe, u, &cosine);
 }
 
 bool Bsdf::chooses_lobe() const {

@@ -51,6 +51,9 @@ class Bsdf {
   bool chooses_lobe() const;
 
  private:
+  // Both samples: the diffuse lobes warp u themselves when `cosine` is null.
+  std::optional<BsdfSample> sample_with(float u_lobe, vec2 u, const vec3* cosine) const;
+
   BsdfLobes lobes_;
 };
 
