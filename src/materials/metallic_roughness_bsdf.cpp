@@ -17,28 +17,28 @@ constexpr float min_lobe_weight = 0.05f;
 
 // The exact Fresnel curve of the coating's ior, rescaled to run from 0 at normal incidence to 1
 // at grazing.
-float coating_rise(const MetallicRoughnessLobes& l, float cos) {
+[[gnu::always_inline]] inline float coating_rise(const MetallicRoughnessLobes& l, float cos) {
   return l.ior_f0 < 1 ? std::max((fresnel_dielectric(cos, l.ior) - l.ior_f0) / (1 - l.ior_f0), 0.0f) : 1;
 }
 
 // The plastic's coating reflectance (KHR_materials_specular): that curve run from the tinted F0
 // at normal incidence to 1 at grazing, times its strength. With iridescence, a share of it is
 // the thin film's reflectance over that F0 instead.
-color3 coating_fresnel(const MetallicRoughnessLobes& l, float cos) {
+[[gnu::always_inline]] inline color3 coating_fresnel(const MetallicRoughnessLobes& l, float cos) {
   color3 f = l.specular_f0 + (color3{1, 1, 1} - l.specular_f0) * coating_rise(l, cos);
   if (l.iridescence > 0) f = lerp(f, thin_film_fresnel(cos, l.film_outside_ior, l.film, l.specular_f0), l.iridescence);
   return f * l.specular;
 }
 
 // The metal's reflectance: Schlick's with F0 = base colour, or in part the thin film's over it.
-color3 metal_fresnel(const MetallicRoughnessLobes& l, float cos) {
+[[gnu::always_inline]] inline color3 metal_fresnel(const MetallicRoughnessLobes& l, float cos) {
   color3 f = fresnel_schlick(l.base, cos);
   if (l.iridescence > 0) f = lerp(f, thin_film_fresnel(cos, l.film_outside_ior, l.film, l.base), l.iridescence);
   return f;
 }
 
 // Fresnel reflectance of the mixed specular lobe at microfacet cosine `cos_h`.
-color3 specular_fresnel(const MetallicRoughnessLobes& l, float cos_h) {
+[[gnu::always_inline]] inline color3 specular_fresnel(const MetallicRoughnessLobes& l, float cos_h) {
   float glass = l.glass > 0 ? l.glass * fresnel_dielectric(cos_h, l.eta) : 0;
   color3 plastic = l.plastic > 0 ? coating_fresnel(l, cos_h) * l.plastic : color3{0, 0, 0};
   color3 metal = l.metal > 0 ? metal_fresnel(l, cos_h) * l.metal : color3{0, 0, 0};
@@ -49,24 +49,24 @@ color3 specular_fresnel(const MetallicRoughnessLobes& l, float cos_h) {
 // reflect (the extension's 1 − specular · max(F)); symmetric in wo and wi: reciprocity. Without
 // iridescence the brightest channel is the one with the largest F0, whatever the cosine, so
 // only that channel is worked out.
-float coating_transmittance(const MetallicRoughnessLobes& l, float cos) {
+[[gnu::always_inline]] inline float coating_transmittance(const MetallicRoughnessLobes& l, float cos) {
   if (l.iridescence > 0) return 1 - max_component(coating_fresnel(l, cos));
   return 1 - (l.specular_f0_max + (1 - l.specular_f0_max) * coating_rise(l, cos)) * l.specular;
 }
 
 // The GGX terms, anisotropic (KHR_materials_anisotropy) only where the material is. Lambda along
 // wo is the lobes' own (l.lambda_o): each masking term needs it.
-float microfacet_density(const MetallicRoughnessLobes& l, vec3 h) {
+[[gnu::always_inline]] inline float microfacet_density(const MetallicRoughnessLobes& l, vec3 h) {
   return l.anisotropic ? ggx_distribution(h, l.anisotropic_alpha) : ggx_distribution(h, l.alpha);
 }
-float microfacet_lambda(const MetallicRoughnessLobes& l, vec3 w) {
+[[gnu::always_inline]] inline float microfacet_lambda(const MetallicRoughnessLobes& l, vec3 w) {
   return l.anisotropic ? ggx_lambda(w, l.anisotropic_alpha) : ggx_lambda(w, l.alpha);
 }
-float microfacet_masking_shadowing(const MetallicRoughnessLobes& l, vec3 wi) {
+[[gnu::always_inline]] inline float microfacet_masking_shadowing(const MetallicRoughnessLobes& l, vec3 wi) {
   return 1 / (1 + l.lambda_o + microfacet_lambda(l, wi));
 }
 // The density of visible normals h (Heitz 2018), given h's density.
-float visible_normal_pdf(const MetallicRoughnessLobes& l, vec3 h, float density) {
+[[gnu::always_inline]] inline float visible_normal_pdf(const MetallicRoughnessLobes& l, vec3 h, float density) {
   return 1 / (1 + l.lambda_o) * std::max(0.0f, dot(l.wo, h)) * density / l.wo.z;
 }
 vec3 sample_visible_normal(const MetallicRoughnessLobes& l, vec2 u) {
@@ -89,7 +89,7 @@ bool refraction_half_vector(const MetallicRoughnessLobes& l, vec3 wi, vec3& h) {
   return dot(l.wo, h) > 0 && dot(wi, h) < 0;
 }
 
-color3 eval_diffuse(const MetallicRoughnessLobes& l, vec3 wi) {
+[[gnu::always_inline]] inline color3 eval_diffuse(const MetallicRoughnessLobes& l, vec3 wi) {
   float coating = l.coating_o * coating_transmittance(l, wi.z);
   return l.base * (l.plastic * coating * inv_pi * wi.z);
 }
@@ -97,7 +97,7 @@ color3 eval_diffuse(const MetallicRoughnessLobes& l, vec3 wi) {
 // The rough lobes add their f(wo, wi) * |cos| to `f` and their share of the pdf to `pdf`, each
 // only when asked: evaluating both shares the half vector and the microfacet density.
 template <bool WithF, bool WithPdf>
-void add_rough_reflection(const MetallicRoughnessLobes& l, vec3 wi, color3& f, float& pdf) {
+[[gnu::always_inline]] inline void add_rough_reflection(const MetallicRoughnessLobes& l, vec3 wi, color3& f, float& pdf) {
   vec3 h = normalize(l.wo + wi);
   float cos_h = dot(l.wo, h);
   if (cos_h <= 0) return;

@@ -5,20 +5,6 @@
 
 namespace radiant {
 
-float ggx_distribution(vec3 m, float alpha) {
-  if (m.z <= 0) return 0;
-  float a2 = alpha * alpha;
-  float d = m.z * m.z * (a2 - 1) + 1;
-  return a2 / (pi * d * d);
-}
-
-float ggx_lambda(vec3 w, float alpha) {
-  float cos2 = w.z * w.z;
-  if (cos2 <= 0) return std::numeric_limits<float>::infinity();
-  float tan2 = std::max(0.0f, 1 - cos2) / cos2;
-  return (std::sqrt(1 + alpha * alpha * tan2) - 1) / 2;
-}
-
 float ggx_masking(vec3 w, float alpha) { return 1 / (1 + ggx_lambda(w, alpha)); }
 
 float ggx_masking_shadowing(vec3 wo, vec3 wi, float alpha) {

@@ -2,14 +2,29 @@
 // with Smith height-correlated masking-shadowing and visible-normal sampling (Heitz 2018).
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
 #include "math/vec.h"
 
 namespace radiant {
 
-// Normal distribution D(m) for a microfacet normal m with m.z > 0.
-float ggx_distribution(vec3 m, float alpha);
+// Normal distribution D(m) for a microfacet normal m with m.z > 0. Inline, as is Lambda: the
+// metallic-roughness model evaluates both twice per path vertex.
+inline float ggx_distribution(vec3 m, float alpha) {
+  if (m.z <= 0) return 0;
+  float a2 = alpha * alpha;
+  float d = m.z * m.z * (a2 - 1) + 1;
+  return a2 / (pi * d * d);
+}
 // Smith Lambda(w): the masking function is G1 = 1 / (1 + Lambda).
-float ggx_lambda(vec3 w, float alpha);
+inline float ggx_lambda(vec3 w, float alpha) {
+  float cos2 = w.z * w.z;
+  if (cos2 <= 0) return std::numeric_limits<float>::infinity();
+  float tan2 = std::max(0.0f, 1 - cos2) / cos2;
+  return (std::sqrt(1 + alpha * alpha * tan2) - 1) / 2;
+}
 float ggx_masking(vec3 w, float alpha);
 // Height-correlated masking-shadowing G2(wo, wi).
 float ggx_masking_shadowing(vec3 wo, vec3 wi, float alpha);
