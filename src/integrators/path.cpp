@@ -391,11 +391,13 @@ struct PathVariant {
     VertexScratch scratch;
     // A stage's draws (draw_ahead): the Sobol lanes, the directions' cosine warps, each live
     // path's values, and whether the last stage's BSDFs chose lobes (then this one draws their
-    // choices ahead too).
+    // choices ahead too). A batch's first stage goes by the previous batch's first stage: the
+    // last stage before it, a few long paths deep, says little about the camera's hits. Either
+    // guess only decides where the numbers are drawn, never their values.
     SobolLanes lanes;
     float cosine_x[max_batch_paths], cosine_y[max_batch_paths], cosine_z[max_batch_paths];
     VertexDraws drawn[max_batch_paths];
-    bool lobe_choices = true;
+    bool lobe_choices = true, first_lobe_choices = true;
   };
 
   // Every live path's random numbers for the vertex it is at, drawn together in SIMD, a group
@@ -457,7 +459,7 @@ struct PathVariant {
   static void run_batch(const RenderContext& ctx, BatchPath* batch, int count, RayCounts& counts) {
     static thread_local BatchWorkspace workspace;
     auto& [paths, lights, rays, hits, occluded, live, shadowed, scratch, lanes, cosine_x, cosine_y, cosine_z, drawn,
-           lobe_choices] = workspace;
+           lobe_choices, first_lobe_choices] = workspace;
     count = std::min(count, max_batch_paths);
     int live_count = count;
     for (int i = 0; i < count; ++i) {
@@ -466,7 +468,8 @@ struct PathVariant {
       hits[i] = batch[i].camera_hit;
       live[i] = i;
     }
-    while (live_count > 0) {
+    lobe_choices = first_lobe_choices;
+    for (bool first_stage = true; live_count > 0; first_stage = false) {
       int shadow_count = 0, next_count = 0;
       draw_ahead(ctx, workspace, live_count);
       for (int k = 0; k < live_count; ++k) {
@@ -479,6 +482,7 @@ struct PathVariant {
         if (goes_on) live[next_count++] = i;  // next_count <= k: live[k] was read already
       }
       lobe_choices = std::any_of(drawn, drawn + live_count, [](const VertexDraws& v) { return v.lobe_choice_used; });
+      if (first_stage) first_lobe_choices = lobe_choices;
       occluded_many(*ctx.accel, rays, shadow_count, occluded, RayCoherence::incoherent);
       for (int k = 0; k < shadow_count; ++k) {
         const LightSampleResult& light = lights[shadowed[k]];
