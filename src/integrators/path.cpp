@@ -145,8 +145,10 @@ template <uint32_t E>
     if (!sample_delta_light(ctx.scene->lights[lights.delta_lights[index]], hit.position, light)) return;
     color3 f_cos = bsdf.eval(light.direction);
     if (is_black(f_cos)) return;
-    return finish(light.direction, light.distance,
-                  [&](color3 t) { return f_cos * light.irradiance * t / select_pdf; });
+    return finish(light.direction, light.distance, [&](color3 t) {
+      if (is_black(t)) return color3{};
+      return f_cos * light.irradiance * t / select_pdf;
+    });
   }
 
   vec3 wi;

@@ -116,7 +116,7 @@ std::optional<BsdfSample> Bsdf::sample(float u_lobe, vec2 u, vec3 cosine) const 
   return sample_with(u_lobe, u, &cosine);
 }
 
-bool Bsdf::chooses_lobe() const {
+bool Bsdf::mixes_lobes() const {
   auto count = [](std::initializer_list<float> probabilities) {
     int n = 0;
     for (float p : probabilities) n += p > 0;
@@ -132,9 +132,7 @@ bool Bsdf::chooses_lobe() const {
   return false;
 }
 
-bool is_pure_delta(const SurfaceMaterial& m) {
-  if (m.unlit) return true;
-  if (m.model != MaterialModel::metallic_roughness) return is_phong_pure_delta(m);
+bool is_layered_metallic_roughness_pure_delta(const SurfaceMaterial& m) {
   bool rough_coat = m.clearcoat > 0 && roughness_to_alpha(m.clearcoat_roughness) >= smooth_alpha_threshold;
   return is_metallic_roughness_pure_delta(m) && !rough_coat && !(max_component(m.sheen_color) > 0);
 }

@@ -47,10 +47,15 @@ class Bsdf {
   // at once, in SIMD): the diffuse and sheen lobes take it instead of warping u again.
   std::optional<BsdfSample> sample(float u_lobe, vec2 u, vec3 cosine) const;
   // False when at most one lobe can be chosen: sample() then ignores u_lobe, and the path
-  // tracer skips drawing it.
-  bool chooses_lobe() const;
+  // tracer skips drawing it. Inline for the models of one lobe, asked at every path vertex.
+  bool chooses_lobe() const {
+    return !std::holds_alternative<std::monostate>(lobes_) && !std::holds_alternative<LambertLobes>(lobes_) &&
+           mixes_lobes();
+  }
 
  private:
+  bool mixes_lobes() const;  // chooses_lobe() for the models that may have several lobes
+
   // Both samples: the diffuse lobes warp u themselves when `cosine` is null.
   std::optional<BsdfSample> sample_with(float u_lobe, vec2 u, const vec3* cosine) const;
 
@@ -58,7 +63,13 @@ class Bsdf {
 };
 
 // True when the material has only delta lobes (mirror, smooth glass): light sampling is useless.
-bool is_pure_delta(const SurfaceMaterial& m);
+// Inline for the Phong model, asked at every path vertex.
+bool is_layered_metallic_roughness_pure_delta(const SurfaceMaterial& m);
+inline bool is_pure_delta(const SurfaceMaterial& m) {
+  if (m.unlit) return true;
+  if (m.model != MaterialModel::metallic_roughness) return is_phong_pure_delta(m);
+  return is_layered_metallic_roughness_pure_delta(m);
+}
 // Hemispherical albedo estimate used for the albedo AOV (base color or kd, clamped to [0,1]).
 color3 bsdf_albedo(const SurfaceMaterial& m);
 

@@ -50,7 +50,9 @@ PhongLobes make_phong_lobes(const PhongWeights& w, vec3 n, vec3 wo);
 color3 eval_local(const PhongLobes& l, vec3 wi);
 float pdf_local(const PhongLobes& l, vec3 wi);
 std::optional<BsdfSample> sample_local(const PhongLobes& l, float u_lobe, vec2 u, const vec3* cosine = nullptr);
-bool is_phong_pure_delta(const SurfaceMaterial& m);
+inline bool is_phong_pure_delta(const SurfaceMaterial& m) {
+  return max_component(m.kd) <= 0 && max_component(m.ks) <= 0;
+}
 
 // glTF metallic-roughness: GGX specular over Lambert, metal, and (rough or smooth) transmission.
 // The parameters depend on the material only; the lobe choice also on wo (Fresnel).

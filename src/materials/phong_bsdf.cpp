@@ -88,8 +88,4 @@ std::optional<BsdfSample> sample_local(const PhongLobes& l, float u_lobe, vec2 u
   return std::nullopt;
 }
 
-bool is_phong_pure_delta(const SurfaceMaterial& m) {
-  return max_component(m.kd) <= 0 && max_component(m.ks) <= 0;
-}
-
 }  // namespace radiant
