@@ -469,8 +469,8 @@ HitId intersect_nearest(const SceneAccel& accel, const Ray& ray) {
 bool traces_packets(const SceneAccel& accel) { return !accel.direct_shapes.enabled && !accel.calls_back; }
 
 namespace {
-// Rays per Embree stream call: a tile's worth, small enough for the stack.
-constexpr int stream_length = 64;
+// Rays per Embree stream call: a path batch's worth (max_batch_paths), small enough for the stack.
+constexpr int stream_length = 256;
 
 RTCIntersectContext stream_context(RayCoherence coherence) {
   RTCIntersectContext context;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "integrators/background.h"
 #include "integrators/naive.h"
@@ -459,7 +460,9 @@ struct PathVariant {
   // next rays, are traced as one stream. Each path sees the same values in the same order as
   // in run(), so its radiance is run()'s bit for bit.
   static void run_batch(const RenderContext& ctx, BatchPath* batch, int count, RayCounts& counts) {
-    static thread_local BatchWorkspace workspace;
+    // On the heap: a thread's static TLS comes out of its stack, and this is too large for that.
+    static thread_local std::unique_ptr<BatchWorkspace> allocated = std::make_unique<BatchWorkspace>();
+    BatchWorkspace& workspace = *allocated;
     auto& [paths, lights, rays, hits, occluded, live, shadowed, scratch, lanes, cosine_x, cosine_y, cosine_z, drawn,
            lobe_choices, first_lobe_choices] = workspace;
     count = std::min(count, max_batch_paths);

@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <mutex>
 #include <optional>
 
@@ -165,26 +166,32 @@ struct PassRunner {
     return active.empty() || active[size_t(y - s.window.y0) * film.width + (x - s.window.x0)];
   }
 
-  // A tile sample by sample: each sample's camera rays, coherent across the tile, are traced
-  // together as packets; the paths go on from their hits alone, or as a batch (all_rays).
-  // Every pixel gets the same samples, in the same order, as render_pixel gives it, and each the
-  // same value. Returns the pixels rendered.
+  // A tile a few samples at a time (batch_samples): their camera rays, coherent across the tile,
+  // are traced together as packets; the paths go on from their hits alone, or as a batch
+  // (all_rays). Every pixel gets the same samples, in the same order, as render_pixel gives it,
+  // and each the same value. Returns the pixels rendered.
   uint64_t render_tile_batched(const tbb::blocked_range2d<int>& r, uint32_t first, uint32_t end,
                                 const std::vector<uint8_t>& active) const {
-    static_assert(max_batch_paths >= 64, "a batch holds the largest tile run() makes: grain 8 x 8");
+    static_assert(batch_tile_pixels >= 64, "a batch holds the largest tile run() makes: grain 8 x 8");
     struct Pending {
       int x, y;
       bool negative;
       int path;  // its index in the batch, or -1 where the camera sees nothing
       FirstHit first_hit;
     };
-    Pending pending[max_batch_paths];
-    BatchPath batch[max_batch_paths];
-    const Ray* rays[max_batch_paths];
-    HitId hits[max_batch_paths];
-    // The Sobol sampler's pixel pairs (dimension 0, as sample_pixel draws them), a tile's at once.
-    static thread_local SobolLanes pixel_pairs;
-    static_assert(SobolLanes::capacity >= max_batch_paths);
+    // Allocated once per thread, on the heap: a thread's static TLS comes out of its stack.
+    struct Workspace {
+      Pending tile[batch_tile_pixels];  // the tile's active pixels
+      Pending pending[max_batch_paths];  // a batch's samples: the tile's pixels once per sample
+      BatchPath batch[max_batch_paths];
+      const Ray* rays[max_batch_paths];
+      HitId hits[max_batch_paths];
+      // The Sobol sampler's pixel pairs (dimension 0, as sample_pixel draws them), a tile's at once.
+      SobolLanes pixel_pairs;
+    };
+    static_assert(SobolLanes::capacity >= batch_tile_pixels);
+    static thread_local std::unique_ptr<Workspace> allocated = std::make_unique<Workspace>();
+    auto& [tile, pending, batch, rays, hits, pixel_pairs] = *allocated;
     bool sobol = s.sampler == SamplerKind::sobol;
     RayCounts& c = counts.local();
     uint64_t pixels = 0;
@@ -193,28 +200,31 @@ struct PassRunner {
         int count = 0;
         for (int y = y0; y < std::min(y0 + 8, r.rows().end()); ++y)
           for (int x = x0; x < std::min(x0 + 8, r.cols().end()); ++x)
-            if (is_active(active, x, y)) pending[count++] = {x, y, false, -1, {}};
-        for (uint32_t index = first; index < end; ++index) {
+            if (is_active(active, x, y)) tile[count++] = {x, y, false, -1, {}};
+        for (uint32_t batch_first = first; batch_first < end; batch_first += batch_samples) {
           if (stop()) return pixels;
-          int paths = 0;
-          if (sobol) {
-            pixel_pairs.count = 0;
-            for (int i = 0; i < count; ++i) pixel_pairs.add(sample_at(pending[i].x, pending[i].y, index), 0);
-            draw_sobol_lanes(pixel_pairs);
-          }
-          for (int i = 0; i < count; ++i) {
-            Pending& p = pending[i];
-            p.first_hit = {};
-            SampleContext sample = sample_at(p.x, p.y, index);
-            vec2 pixel_pair = sobol ? vec2{pixel_pairs.x[i], pixel_pairs.y[i]} : sample_pixel(sample);
-            std::optional<Ray> ray = camera_ray(p.x, p.y, sample, pixel_pair, p.negative);
-            p.path = ray ? paths : -1;
-            if (ray) {
-              BatchPath& path = batch[paths];
-              path.ray = *ray;
-              path.sample = sample;
-              path.first_hit = first_hit_wanted(p.first_hit);
-              rays[paths++] = &path.ray;
+          uint32_t batch_end = std::min(end, batch_first + batch_samples);
+          int paths = 0, samples = 0;
+          for (uint32_t index = batch_first; index < batch_end; ++index) {
+            if (sobol) {
+              pixel_pairs.count = 0;
+              for (int i = 0; i < count; ++i) pixel_pairs.add(sample_at(tile[i].x, tile[i].y, index), 0);
+              draw_sobol_lanes(pixel_pairs);
+            }
+            for (int i = 0; i < count; ++i) {
+              Pending& p = pending[samples++];
+              p = tile[i];
+              SampleContext sample = sample_at(p.x, p.y, index);
+              vec2 pixel_pair = sobol ? vec2{pixel_pairs.x[i], pixel_pairs.y[i]} : sample_pixel(sample);
+              std::optional<Ray> ray = camera_ray(p.x, p.y, sample, pixel_pair, p.negative);
+              p.path = ray ? paths : -1;
+              if (ray) {
+                BatchPath& path = batch[paths];
+                path.ray = *ray;
+                path.sample = sample;
+                path.first_hit = first_hit_wanted(p.first_hit);
+                rays[paths++] = &path.ray;
+              }
             }
           }
           intersect_nearest_many(*ctx.accel, rays, paths, hits, RayCoherence::coherent);
@@ -223,7 +233,7 @@ struct PassRunner {
             integrator.batch(ctx, batch, paths, c);
           else
             run_each_path(integrator.one_path, ctx, batch, paths, c);
-          for (int i = 0; i < count; ++i) {
+          for (int i = 0; i < samples; ++i) {
             const Pending& p = pending[i];
             add_sample_to_film(p.x, p.y, p.path >= 0 ? batch[p.path].radiance : color3{}, p.first_hit, p.negative, c);
           }

@@ -40,7 +40,7 @@ vec2 sample_2d(const SampleContext& context, uint32_t dimension);
 // inputs, call draw_sobol_lanes, read x and y. Lane i's (x, y) is sample_2d({sobol, pixel[i], index[i], _,
 // seed[i]}, dimension[i]) to the bit (a 1D value is the pair's x, as sample_1d's).
 struct SobolLanes {
-  static constexpr int capacity = 320;
+  static constexpr int capacity = 1280;
   alignas(32) uint32_t pixel[capacity], index[capacity], dimension[capacity], seed[capacity];
   alignas(32) float x[capacity], y[capacity];
   int count = 0;
