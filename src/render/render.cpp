@@ -10,7 +10,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <memory>
 #include <mutex>
 #include <optional>
 
@@ -179,7 +178,7 @@ struct PassRunner {
       int path;  // its index in the batch, or -1 where the camera sees nothing
       FirstHit first_hit;
     };
-    // Allocated once per thread, on the heap: a thread's static TLS comes out of its stack.
+    // One per thread, held by a static object rather than in TLS (see PathVariant::run_batch).
     struct Workspace {
       Pending tile[batch_tile_pixels];  // the tile's active pixels
       Pending pending[max_batch_paths];  // a batch's samples: the tile's pixels once per sample
@@ -190,8 +189,8 @@ struct PassRunner {
       SobolLanes pixel_pairs;
     };
     static_assert(SobolLanes::capacity >= batch_tile_pixels);
-    static thread_local std::unique_ptr<Workspace> allocated = std::make_unique<Workspace>();
-    auto& [tile, pending, batch, rays, hits, pixel_pairs] = *allocated;
+    static tbb::enumerable_thread_specific<Workspace> per_thread;
+    auto& [tile, pending, batch, rays, hits, pixel_pairs] = per_thread.local();
     bool sobol = s.sampler == SamplerKind::sobol;
     RayCounts& c = counts.local();
     uint64_t pixels = 0;
