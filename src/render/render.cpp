@@ -245,7 +245,7 @@ struct PassRunner {
   // Adds samples [first, end) to every pixel still active, until told to stop.
   void run(uint32_t first, uint32_t end, const std::vector<uint8_t>& active) const {
     const PixelWindow& w = s.window;
-    bool batched = batching != PathBatching::none && traces_packets(*ctx.accel);
+    bool batched = batching != PathBatching::none;
     tbb::parallel_for(tbb::blocked_range2d<int>(w.y0, w.y1, 8, w.x0, w.x1, 8), [&](const tbb::blocked_range2d<int>& r) {
       if (batched) {
         progress.add(render_tile_batched(r, first, end, active) * (end - first));

@@ -46,7 +46,7 @@ void add_box(SceneDesc& scene, vec3 lo, vec3 hi, int material) {
   add_quad(scene, {a.x, g.y, a.z}, {a.x, g.y, g.z}, {g.x, g.y, g.z}, {g.x, g.y, a.z}, material);  // +y
 }
 
-// Triangles only (shapes would make the render trace ray by ray): an open room under a sky,
+// Triangles only (shapes would make the batches trace their rays one at a time): an open room under a sky,
 // a dispersive absorbing glass block, a rough metal, a mirror, an emitting panel, a point and a
 // spot light; with `cutout`, a half-transparent card as well (see-through steps, and shadows
 // that walk through occluders instead of one occlusion query each).
@@ -87,9 +87,10 @@ SceneDesc effects_room(bool cutout) {
   return scene;
 }
 
-// Every way of tracing; checks that the batches were used and the images agree.
-void require_same_render(const SceneDesc& scene, RenderOptions o) {
-  REQUIRE(traces_packets(*build_scene_accel(scene)));  // else every render traces ray by ray
+// Every way of tracing; checks that the scene traces its rays as expected (as Embree packets and
+// streams, or one at a time through its callbacks) and that the images agree.
+void require_same_render(const SceneDesc& scene, RenderOptions o, bool packets = true) {
+  REQUIRE(traces_packets(*build_scene_accel(scene)) == packets);
   o.path_batching = PathBatching::none;
   RenderResult alone = render_scene(scene, o);
   for (PathBatching batching : {PathBatching::camera_rays, PathBatching::all_rays}) {
@@ -179,4 +180,34 @@ TEST_CASE("batched paths: every sampler and both light samplers draw what one pa
       CHECK(result.settings.light_sampler == light_sampler);
       require_same_render(scene, o);
     }
+}
+
+TEST_CASE("batched paths: analytic shapes and alpha masks, traced one ray at a time, batch the same") {
+  // Their Embree callbacks take one ray at a time, so the batch traces its rays one by one; its
+  // shading and random numbers still run across the batch.
+  SceneDesc room = effects_room(false);
+  MaterialDesc chrome;
+  chrome.kd = {0.1f, 0.1f, 0.1f}, chrome.kr = {0.7f, 0.7f, 0.7f};
+  add_sphere(room, {2.5f, 0.7f, 0.5f}, 0.7f, add_material(room, chrome));
+  add_sphere(room, {-2.5f, 0.5f, 1}, 0.5f, add_diffuse(room, {0.3f, 0.5f, 0.8f}));
+  MaterialDesc leaf;  // a mask below its cutoff: every hit on the card is rejected by its callback
+  leaf.model = MaterialModel::metallic_roughness;
+  leaf.base_color = {0.2f, 0.8f, 0.3f}, leaf.metallic = 0, leaf.alpha = 0.3f, leaf.alpha_mode = AlphaMode::mask;
+  add_quad(room, {-3, 0, 2}, {-1, 0, 2}, {-1, 2, 2}, {-3, 2, 2}, add_material(room, leaf));
+  for (RenderMode mode : {RenderMode::path, RenderMode::naive, RenderMode::whitted}) {
+    CAPTURE(int(mode));
+    RenderOptions o;
+    o.width = 26, o.height = 19, o.spp = 4, o.mode = mode, o.max_depth = 8;
+    o.aovs = {"albedo", "normal", "depth"};
+    require_same_render(room, o, false);
+  }
+  // The bundled many-lights scene: spheres and a plane under 400 lamps, by both light samplers.
+  SceneDesc lamps = load_scene(source_path("assets/many-lights.scene").string());
+  for (LightSampler light_sampler : {LightSampler::power, LightSampler::bvh}) {
+    CAPTURE(int(light_sampler));
+    RenderOptions o;
+    o.width = 24, o.height = 18, o.spp = 4, o.mode = RenderMode::path;
+    o.light_sampler = light_sampler;
+    require_same_render(lamps, o, false);
+  }
 }
