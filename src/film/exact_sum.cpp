@@ -9,7 +9,13 @@ double ExactSum::value() const {
   // Both bins as one integer (below 2^89 in magnitude), in units of the window's lowest position;
   // position 0 is 2^-1074.
   __int128 window = (__int128(high_) << bin_bits) + low();
-  return std::ldexp(double(window), bin_bits * (top() - 1) - 1074);
+  // Scaling by a power of two that is itself a double rounds once, exactly as ldexp does, for a
+  // fraction of its cost (the film reads every pixel's sums after each render). Only windows
+  // whose lowest position lies below 2^-1074 (sums of subnormals) need ldexp.
+  int exponent = bin_bits * (top() - 1) - 1074;
+  if (exponent < -1074) return std::ldexp(double(window), exponent);
+  uint64_t power_bits = exponent >= -1022 ? uint64_t(exponent + 1023) << 52 : uint64_t(1) << (exponent + 1074);
+  return double(window) * std::bit_cast<double>(power_bits);
 }
 
 bool ExactSum::from_state(int top, int64_t high, int64_t low, ExactSum& sum, uint32_t terms) {

@@ -149,3 +149,23 @@ TEST_CASE("exact sum: a stored state comes back, states no sum reaches are refus
   CHECK_FALSE(ExactSum::from_state(3, 0, 0, refused, 0));
   CHECK_FALSE(ExactSum::from_state(3, 0, 0, refused, ExactSum::max_terms + 1));
 }
+
+TEST_CASE("exact sum: the value is the window rounded once, at every window position") {
+  // value() scales by a power of two it builds itself where that power is a double, and by ldexp
+  // below: both must round the window as ldexp does, across the subnormal and normal ranges.
+  std::mt19937 random(11);
+  std::uniform_int_distribution<int64_t> bin(-int64_t(ExactSum::max_terms) * 0xffffffff,
+                                             int64_t(ExactSum::max_terms) * 0xffffffff);
+  for (int top = 0; top <= ExactSum::max_top; ++top)
+    for (int trial = 0; trial < 64; ++trial) {
+      int64_t high = trial == 0 ? 0 : bin(random), low = trial == 1 ? 1 : bin(random);
+      if (trial == 2) high = 1, low = -1;  // the smallest positive window: 2^32 - 1 lowest positions
+      ExactSum sum;
+      REQUIRE(ExactSum::from_state(top, high, low, sum));
+      __int128 window = (__int128(high) << ExactSum::bin_bits) + low;
+      double expected = std::ldexp(double(window), ExactSum::bin_bits * (top - 1) - 1074);
+      CAPTURE(top);
+      CAPTURE(trial);
+      CHECK(std::bit_cast<uint64_t>(sum.value()) == std::bit_cast<uint64_t>(expected));
+    }
+}
