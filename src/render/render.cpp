@@ -185,13 +185,17 @@ struct PassRunner {
       BatchPath batch[max_batch_paths];
       const Ray* rays[max_batch_paths];
       HitId hits[max_batch_paths];
-      // The Sobol sampler's pixel pairs (dimension 0, as sample_pixel draws them), a tile's at once.
+      // The Sobol sampler's pixel pairs (dimension 0, as sample_pixel draws them), a tile's at once;
+      // the grid and jittered samplers' positions, with the tile's pixel numbers they are drawn for.
       SobolLanes pixel_pairs;
+      uint32_t tile_pixel[batch_tile_pixels];
+      float stratified_x[batch_tile_pixels], stratified_y[batch_tile_pixels];
     };
     static_assert(SobolLanes::capacity >= batch_tile_pixels);
     static tbb::enumerable_thread_specific<Workspace> per_thread;
-    auto& [tile, pending, batch, rays, hits, pixel_pairs] = per_thread.local();
+    auto& [tile, pending, batch, rays, hits, pixel_pairs, tile_pixel, stratified_x, stratified_y] = per_thread.local();
     bool sobol = s.sampler == SamplerKind::sobol;
+    bool stratified = s.sampler == SamplerKind::grid || s.sampler == SamplerKind::jittered;
     RayCounts& c = counts.local();
     uint64_t pixels = 0;
     for (int y0 = r.rows().begin(); y0 < r.rows().end(); y0 += 8)
@@ -200,6 +204,7 @@ struct PassRunner {
         for (int y = y0; y < std::min(y0 + 8, r.rows().end()); ++y)
           for (int x = x0; x < std::min(x0 + 8, r.cols().end()); ++x)
             if (is_active(active, x, y)) tile[count++] = {x, y, false, -1, {}};
+        for (int i = 0; i < count; ++i) tile_pixel[i] = sample_at(tile[i].x, tile[i].y, 0).pixel;
         for (uint32_t batch_first = first; batch_first < end; batch_first += batch_samples) {
           if (stop()) return pixels;
           uint32_t batch_end = std::min(end, batch_first + batch_samples);
@@ -209,12 +214,17 @@ struct PassRunner {
               pixel_pairs.count = 0;
               for (int i = 0; i < count; ++i) pixel_pairs.add(sample_at(tile[i].x, tile[i].y, index), 0);
               draw_sobol_lanes(pixel_pairs);
+            } else if (stratified) {
+              draw_stratified_pixels(s.sampler, uint32_t(s.spp), index, seed, tile_pixel, count, stratified_x,
+                                     stratified_y);
             }
             for (int i = 0; i < count; ++i) {
               Pending& p = pending[samples++];
               p = tile[i];
               SampleContext sample = sample_at(p.x, p.y, index);
-              vec2 pixel_pair = sobol ? vec2{pixel_pairs.x[i], pixel_pairs.y[i]} : sample_pixel(sample);
+              vec2 pixel_pair = sobol        ? vec2{pixel_pairs.x[i], pixel_pairs.y[i]}
+                                : stratified ? vec2{stratified_x[i], stratified_y[i]}
+                                             : sample_pixel(sample);
               std::optional<Ray> ray = camera_ray(p.x, p.y, sample, pixel_pair, p.negative);
               p.path = ray ? paths : -1;
               if (ray) {

@@ -25,6 +25,12 @@ struct SampleContext {
 // grid and jittered.
 vec2 sample_pixel(const SampleContext& context);
 
+// Grid and jittered pixel positions of `count` pixels at one sample index, drawn across SIMD
+// lanes (math/lane_isa.h): (x[i], y[i]) is sample_pixel({kind, pixel[i], index, samples, seed})
+// to the bit. `kind` is grid or jittered.
+void draw_stratified_pixels(SamplerKind kind, uint32_t samples, uint32_t index, uint32_t seed, const uint32_t* pixel,
+                            int count, float* x, float* y, LaneIsa isa = LaneIsa::best);
+
 // The lens point of a thin-lens camera: a fixed pair far above every path vertex's block
 // (integrators/path.cpp), so that a lens shifts no other random number.
 constexpr uint32_t lens_dimension = 0xF0000000u;

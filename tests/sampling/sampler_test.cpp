@@ -1,4 +1,4 @@
-// Samplers: strata coverage, progressive prefixes, purity, and the Sobol pairs drawn in SIMD.
+// Samplers: strata coverage, progressive prefixes, purity, and the pixel positions and Sobol pairs drawn in SIMD.
 #include <doctest/doctest.h>
 
 #include <bit>
@@ -170,4 +170,35 @@ TEST_CASE("sampler: Sobol pairs drawn many at once are sample_2d's and sample_1d
       }
     }
   }
+}
+
+TEST_CASE("sampler: grid and jittered pixel positions drawn many at once are sample_pixel's to the bit") {
+  uint32_t state = 5;
+  auto next = [&] { return state = state * 1664525u + 1013904223u; };
+  std::vector<uint32_t> pixels;
+  for (int i = 0; i < 150; ++i) pixels.push_back(i % 3 ? next() % 100000 : next());  // beyond one 64-lane chunk
+  std::vector<float> x(pixels.size()), y(pixels.size());
+  // Sample counts from one (the centre) through square, non-square and larger than any cell
+  // count a permutation walks once; indices at and past the count (remainder by the cells).
+  for (uint32_t samples : {1u, 2u, 7u, 16u, 81u, 100u, 1000u, 4099u})
+    for (SamplerKind kind : {SamplerKind::grid, SamplerKind::jittered})
+      for (uint32_t seed : {0u, 3u, 0xdeadbeefu})
+        for (LaneIsa isa : {LaneIsa::best, LaneIsa::baseline, LaneIsa::avx2}) {
+          if (!lane_isa_available(isa)) continue;
+          for (uint32_t index : {0u, 1u, samples / 2, samples - 1, samples + 5}) {
+            CAPTURE(samples);
+            CAPTURE(int(kind));
+            CAPTURE(seed);
+            CAPTURE(int(isa));
+            CAPTURE(index);
+            for (int count : {int(pixels.size()), 64, 9, 1}) {
+              draw_stratified_pixels(kind, samples, index, seed, pixels.data(), count, x.data(), y.data(), isa);
+              for (int i = 0; i < count; ++i) {
+                vec2 expected = sample_pixel({kind, pixels[size_t(i)], index, samples, seed});
+                REQUIRE(std::bit_cast<uint32_t>(x[size_t(i)]) == std::bit_cast<uint32_t>(expected.x));
+                REQUIRE(std::bit_cast<uint32_t>(y[size_t(i)]) == std::bit_cast<uint32_t>(expected.y));
+              }
+            }
+          }
+        }
 }
