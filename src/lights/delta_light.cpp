@@ -23,7 +23,7 @@ float spot_falloff(const LightDesc& light, vec3 light_to_point) {
 
 }  // namespace
 
-bool sample_delta_light(const LightDesc& light, vec3 point, DeltaLightSample& sample) {
+bool sample_any_delta_light(const LightDesc& light, vec3 point, DeltaLightSample& sample) {
   switch (light.kind) {
     case LightKind::ambient: return false;
     case LightKind::directional:
@@ -33,14 +33,9 @@ bool sample_delta_light(const LightDesc& light, vec3 point, DeltaLightSample& sa
       return true;
     case LightKind::point:
     case LightKind::spot: {
-      vec3 to_light = light.position - point;
-      float d = length(to_light);
-      if (!(d > 0)) return false;
-      sample.direction = to_light * (1 / d);
-      sample.distance = d;
-      sample.position = light.position;
-      float attenuation = light.kc + light.kl * d + light.kq * d * d;
-      if (!(attenuation > 0)) return false;
+      float attenuation;
+      if (!reach_point_light(light, point, sample, attenuation)) return false;
+      float d = sample.distance;
       float falloff = 1;
       if (light.kind == LightKind::spot) falloff = spot_falloff(light, -sample.direction);
       if (light.range > 0) {
