@@ -166,8 +166,8 @@ struct PassRunner {
   }
 
   // A tile a few samples at a time (batch_samples): their camera rays, coherent across the tile,
-  // are traced together as packets; the paths go on from their hits alone, or as a batch
-  // (all_rays). Every pixel gets the same samples, in the same order, as render_pixel gives it,
+  // are traced together as packets (one at a time where Embree calls back: analytic shapes,
+  // alpha masks); the paths go on from their hits alone, or as a batch (all_rays). Every pixel gets the same samples, in the same order, as render_pixel gives it,
   // and each the same value. Returns the pixels rendered.
   uint64_t render_tile_batched(const tbb::blocked_range2d<int>& r, uint32_t first, uint32_t end,
                                 const std::vector<uint8_t>& active) const {
