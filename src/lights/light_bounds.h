@@ -57,8 +57,8 @@ inline float sin_of_difference_clamped(float sin_a, float cos_a, float sin_b, fl
 // point in a medium): intensity x the largest emitter cosine any light of the group can have
 // towards p x the largest receiver cosine / squared distance; 0 only when no light of the group
 // can reach p. Conservative: never 0 for a group that lights p. The light BVH rates four groups
-// at once with importance4(), which gives exactly this per lane; this is the formula's reference
-// and importance4's fallback where SSE2 is missing.
+// at once with importance4() (importance4.h), which gives exactly this per lane; this is the
+// formula's reference and importance4's fallback where SSE2 is missing.
 inline float importance(const ImportanceBounds& bounds, vec3 p, vec3 n) {
   using namespace importance_detail;
   if (!(bounds.intensity > 0)) return 0;
@@ -71,48 +71,36 @@ inline float importance(const ImportanceBounds& bounds, vec3 p, vec3 n) {
   // by brightness alone: 12% more error at equal samples on assets/many-lights.scene.)
   if (distance2 <= bounds.radius2) return bounds.intensity / std::max(std::max(distance2, bounds.radius2 * 0.25f), 1e-30f);
 
-  // One division for the whole evaluation: square roots and divisions are the long-latency
-  // steps of the light BVH's descent.
+  // The long-latency steps of the light BVH's descent are square roots and divisions, one after
+  // another: so one division for the whole evaluation, and every cosine and sine below first
+  // found times the distance (dot products and square roots of squared lengths, which need no
+  // division), then scaled by one over it. Only the division and one square root stay on the
+  // descent's chain; the others run beside them.
+  float axis_t = dot(bounds.axis, to_point);  // distance x cos theta_w
+  if (bounds.two_sided) axis_t = std::abs(axis_t);
+  float sin_w_t = safe_sqrt(distance2 - axis_t * axis_t);
+  float cos_b_t = safe_sqrt(distance2 - bounds.radius2);
   float inv_distance2 = 1 / std::max(distance2, 1e-30f);
   float inv_distance = std::sqrt(inv_distance2);
-  vec3 wi = to_point * inv_distance;  // from the group towards p
-  float cos_w = dot(bounds.axis, wi);
-  if (bounds.two_sided) cos_w = std::abs(cos_w);
-  float sin_w = safe_sqrt(1 - cos_w * cos_w);
+  // theta_w: between the cone's axis and the direction from the group to p.
+  float cos_w = axis_t * inv_distance, sin_w = sin_w_t * inv_distance;
   // theta_b: the half-angle the bounding sphere subtends at p.
-  float sin_b = std::min(bounds.radius * inv_distance, 1.0f), cos_b = safe_sqrt(1 - sin_b * sin_b);
+  float sin_b = std::min(bounds.radius * inv_distance, 1.0f), cos_b = cos_b_t * inv_distance;
   // theta': the smallest angle between an emitting normal and the direction to p.
   float cos_x = cos_of_difference_clamped(sin_w, cos_w, bounds.sin_spread, bounds.cos_spread);
   float sin_x = sin_of_difference_clamped(sin_w, cos_w, bounds.sin_spread, bounds.cos_spread);
   float cos_emitter = cos_of_difference_clamped(sin_x, cos_x, sin_b, cos_b);
   if (cos_emitter <= bounds.cos_falloff) return 0;
 
-  float estimate = bounds.intensity * cos_emitter * inv_distance2;
+  float estimate = bounds.intensity * inv_distance2 * cos_emitter;  // the first product off the chain
   if (!(n.x == 0 && n.y == 0 && n.z == 0)) {
     // Either side of the surface: a BSDF may transmit.
-    float cos_i = std::abs(dot(wi, n));
-    float sin_i = safe_sqrt(1 - cos_i * cos_i);
+    float normal_t = std::abs(dot(to_point, n));  // distance x cos theta_i
+    float cos_i = normal_t * inv_distance, sin_i = safe_sqrt(distance2 - normal_t * normal_t) * inv_distance;
     estimate *= cos_of_difference_clamped(sin_i, cos_i, sin_b, cos_b);
   }
   return std::max(estimate, 0.0f);
 }
-
-// Four groups' ImportanceBounds side by side, one lane each; a lane of intensity 0 is empty.
-struct ImportanceBounds4 {
-  float center_x[4] = {}, center_y[4] = {}, center_z[4] = {};
-  float radius[4] = {}, radius2[4] = {};
-  float axis_x[4] = {}, axis_y[4] = {}, axis_z[4] = {};
-  float cos_spread[4] = {}, sin_spread[4] = {}, cos_falloff[4] = {};
-  float intensity[4] = {};
-  float two_sided[4] = {};  // 1 or 0
-};
-
-void set_lane(ImportanceBounds4& bounds, int lane, const ImportanceBounds& one);
-ImportanceBounds lane_of(const ImportanceBounds4& bounds, int lane);
-
-// importance() of each lane's group at (p, n), all four at once: the same operations in the same
-// order, so each lane gives exactly what importance() gives for that group.
-void importance4(const ImportanceBounds4& bounds, vec3 p, vec3 n, float out[4]);
 
 // The directional measure of pbrt-v4's split cost: the solid angle the group's cone of normals
 // widened by its falloff covers, weighted by cosine.

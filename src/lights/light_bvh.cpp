@@ -156,21 +156,32 @@ void collapse_to_four_wide(const std::vector<BinaryNode>& binary, LightBvh& bvh)
   }
 }
 
-// The probability of stepping from `node` into each of its lanes at (p, n): by the children's
-// importance; where the bounds rule all out, no light below can reach p and any choice is wasted
-// (pbrt gives up there), so by intensity, which keeps every light's probability a distribution.
-// One function for sampling and for the probability walk, so both agree.
-void lane_probabilities(const LightBvhNode& node, vec3 p, vec3 n, double probability[4]) {
+// How a node shares the choice among its lanes at (p, n): by the children's importance; where
+// the bounds rule all out, no light below can reach p and any choice is wasted (pbrt gives up
+// there), so by intensity, which keeps every light's probability a distribution. Lane k's share
+// of [0, total) is [prefix[k - 1], prefix[k]); its probability rated[k] / total. One function for
+// sampling and for the probability walk, so both agree.
+struct LaneShares {
   float rated[4];
-  importance4(node.bounds, p, n, rated);
-  double total = double(rated[0]) + rated[1] + rated[2] + rated[3];
-  if (!(total > 0)) {
-    for (int lane = 0; lane < 4; ++lane) rated[lane] = node.bounds.intensity[lane];
-    total = double(rated[0]) + rated[1] + rated[2] + rated[3];
+  float prefix[3];  // rated[0], rated[0] + rated[1], ... + rated[2]
+  float total;      // 0 only for a node that holds no light
+};
+
+LaneShares lane_shares(const LightBvhNode& node, vec3 p, vec3 n) {
+  LaneShares shares;
+  importance4(node.bounds, p, n, shares.rated);
+  float low = shares.rated[0] + shares.rated[1], high = shares.rated[2] + shares.rated[3];
+  shares.total = low + high;
+  if (!(shares.total > 0)) {
+    for (int lane = 0; lane < 4; ++lane) shares.rated[lane] = node.bounds.intensity[lane];
+    low = shares.rated[0] + shares.rated[1], high = shares.rated[2] + shares.rated[3];
+    shares.total = low + high;
   }
-  double share = 1 / total;
-  for (int lane = 0; lane < 4; ++lane) probability[lane] = rated[lane] * share;
+  shares.prefix[0] = shares.rated[0], shares.prefix[1] = low, shares.prefix[2] = low + shares.rated[2];
+  return shares;
 }
+
+double lane_probability(const LaneShares& shares, int lane) { return double(shares.rated[lane]) / shares.total; }
 
 }  // namespace
 
@@ -200,21 +211,20 @@ bool sample_light_bvh(const LightBvh& bvh, vec3 p, vec3 n, float u, int& slot, f
   int index = 0;
   for (;;) {
     const LightBvhNode& node = bvh.nodes[size_t(index)];
-    double lane_probability[4];
-    lane_probabilities(node, p, n, lane_probability);
-    // The lane whose share of [0, 1) holds `remaining`; rounding past the last share lands in the
-    // last lane that has one.
-    int lane = -1;
-    double below = 0;
-    for (int k = 0; k < 4; ++k) {
-      if (!(lane_probability[k] > 0)) continue;
-      lane = k;
-      if (remaining < below + lane_probability[k]) break;
-      below += lane_probability[k];
-    }
-    if (lane < 0) return false;
-    chosen *= lane_probability[lane];
-    remaining = std::clamp((remaining - below) / lane_probability[lane], 0.0, below_one);
+    LaneShares shares = lane_shares(node, p, n);
+    if (!(shares.total > 0)) return false;
+    // The lane whose share holds `remaining`, counted without branches (the lane decides the next
+    // node, so a mispredicted branch here would stall the whole descent); rounding past the last
+    // share lands in the last lane that has one. Only the next node waits on this: the division
+    // that rescales `remaining` and the probability run beside the next node's rating.
+    double target = remaining * shares.total;
+    float t = float(target);
+    int lane = int(shares.prefix[0] <= t) + int(shares.prefix[1] <= t) + int(shares.prefix[2] <= t);
+    while (lane > 0 && !(shares.rated[lane] > 0)) --lane;
+    if (!(shares.rated[lane] > 0)) return false;  // an infinite or NaN rating
+    double below = lane > 0 ? double(shares.prefix[lane - 1]) : 0.0;
+    chosen *= lane_probability(shares, lane);
+    remaining = std::clamp((target - below) / shares.rated[lane], 0.0, below_one);
     int child = node.child[size_t(lane)];
     if (child < 0) {
       slot = ~child;
@@ -232,9 +242,7 @@ float light_bvh_probability(const LightBvh& bvh, vec3 p, vec3 n, int slot) {
   if (leaf.node < 0) return 0;
   double probability = 1;
   for (int node = leaf.node, lane = leaf.lane; node >= 0;) {
-    double lane_probability[4];
-    lane_probabilities(bvh.nodes[size_t(node)], p, n, lane_probability);
-    probability *= lane_probability[lane];
+    probability *= lane_probability(lane_shares(bvh.nodes[size_t(node)], p, n), lane);
     lane = bvh.nodes[size_t(node)].parent_lane;
     node = bvh.nodes[size_t(node)].parent;
   }

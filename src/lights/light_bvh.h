@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "lights/light_bounds.h"
+#include "lights/importance4.h"
 
 namespace radiant {
 

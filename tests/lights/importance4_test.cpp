@@ -5,7 +5,7 @@
 #include <cstring>
 #include <random>
 
-#include "lights/light_bounds.h"
+#include "lights/importance4.h"
 
 using namespace radiant;
 
