@@ -221,8 +221,9 @@ TEST_CASE("render cli: a --crop EXR and a shard carry their region as data windo
   quiet_ok("render " + scene + " -o " + quoted(crop) + base + " --crop 2,3,10,7");
   quiet_ok("render " + scene + " -o " + quoted(shard) + base + " --shard 3/4");
   for (auto [file, x, y, w, h] : {std::tuple{crop, 2, 3, 8, 4}, {shard, 8, 6, 8, 6}}) {
-    CAPTURE(file);
-    ImageHeader header = header_of(file);
+    fs::path image = file;  // clang 14 cannot capture a structured binding in CAPTURE's lambda
+    CAPTURE(image);
+    ImageHeader header = header_of(image);
     CHECK(header.x == x);
     CHECK(header.y == y);
     CHECK(header.width == w);

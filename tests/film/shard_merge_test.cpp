@@ -67,7 +67,8 @@ TEST_CASE("shard merge: overlapping shards are refused naming both files") {
 TEST_CASE("shard merge: shards of other settings, scenes, versions or Embree ISAs are refused") {
   for (auto [field, value] : {std::pair<std::string, std::string>{"settings hash", "cc"}, {"scene hash", "dd"},
                               {"radiant version", "0.9"}, {"Embree ISA", "sse4.2"}}) {
-    CAPTURE(field);
+    std::string changed = field;  // clang 14 cannot capture a structured binding in CAPTURE's lambda
+    CAPTURE(changed);
     std::vector<NamedShard> shards = all_tiles();
     ShardInfo& odd = shards[2].info;
     if (field == "settings hash") odd.settings_hash = value;

@@ -39,7 +39,8 @@ TEST_CASE("whitted: a point light with attenuation on a diffuse plane gives kd/p
   vec3 light_position = {0.3f, 1.5f, -0.2f};
   scene.lights.push_back(point_light(light_position, {10, 20, 30}, 1.0f, 0.5f, 0.25f));
   RenderResult r = render_scene(scene, one_sample_whitted());
-  for (auto [x, y] : {std::pair{0, 0}, {3, 4}, {7, 7}, {5, 1}}) {
+  for (auto pixel : {std::pair{0, 0}, {3, 4}, {7, 7}, {5, 1}}) {
+    int x = pixel.first, y = pixel.second;  // clang 14 cannot capture a structured binding in CAPTURE
     vec3 p = plane_point(x, y);
     vec3 to_light = light_position - p;
     float d = length(to_light);

@@ -55,7 +55,8 @@ color3 ortho_view(SceneDesc scene, vec3 position, vec3 forward, vec3 up) {
 
 TEST_CASE("transmission: inside glass (ior 1.5) beyond the critical angle all of kt reflects, below it kt transmits") {
   // The glass fills y < 0 under the plane; emitters at y = -1 (inside) and y = 1 (outside).
-  for (auto [kt, kr] : {std::pair{1.0f, 0.0f}, {0.6f, 0.0f}, {0.6f, 0.3f}}) {
+  for (auto coefficients : {std::pair{1.0f, 0.0f}, {0.6f, 0.0f}, {0.6f, 0.3f}}) {
+    float kt = coefficients.first, kr = coefficients.second;  // clang 14 cannot capture a structured binding in CAPTURE
     CAPTURE(kt);
     CAPTURE(kr);
     SceneDesc scene;

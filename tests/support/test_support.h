@@ -51,13 +51,20 @@ struct MeasuredRun {
 MeasuredRun run_radiant_measured(const std::string& args, int timeout_seconds = 120,
                                  uint64_t address_space_limit = 0);
 
-// True in the AddressSanitizer build, where resident memory measures the sanitizer's bookkeeping
-// and RLIMIT_AS cannot be used.
-constexpr bool built_with_address_sanitizer =
+// True in the AddressSanitizer builds, where resident memory measures the sanitizer's bookkeeping
+// and RLIMIT_AS cannot be used. GCC defines __SANITIZE_ADDRESS__; clang 14 only answers
+// __has_feature.
 #if defined(__SANITIZE_ADDRESS__)
-    true;
+#define RADIANT_TESTS_UNDER_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define RADIANT_TESTS_UNDER_ASAN 1
+#endif
+#endif
+#if defined(RADIANT_TESTS_UNDER_ASAN)
+constexpr bool built_with_address_sanitizer = true;
 #else
-    false;
+constexpr bool built_with_address_sanitizer = false;
 #endif
 
 // A float image as read through the OpenImageIO module (all channels, row-major, top row first).
