@@ -30,11 +30,11 @@ int cell_of(vec3 w) {
 std::vector<double> observed_counts(const SurfaceMaterial& m, vec3 wo, unsigned seed) {
   std::vector<double> counts(cos_bins * phi_bins, 0);
   UniformRandom random(seed);
-  vec3 n = {0, 0, 1};
+  const Bsdf bsdf(m, {0, 0, 1}, wo);  // built once: its methods are const
   for (int k = 0; k < sample_count; ++k) {
     float u_lobe = random.next();
     vec2 u = random.next2();
-    auto s = Bsdf(m, n, wo).sample(u_lobe, u);
+    auto s = bsdf.sample(u_lobe, u);
     if (s && !s->delta) counts[cell_of(s->wi)] += 1;
   }
   return counts;
@@ -63,15 +63,13 @@ double integrate(const std::function<double(double)>& f, double a, double b, dou
 // Expected counts: the pdf integrated over each cell (solid angle = d(cos theta) d(phi)).
 std::vector<double> expected_counts(const SurfaceMaterial& m, vec3 wo) {
   std::vector<double> counts(cos_bins * phi_bins, 0);
-  vec3 n = {0, 0, 1};
+  const Bsdf bsdf(m, {0, 0, 1}, wo);  // built once: the quadrature evaluates its pdf millions of times
   for (int i = 0; i < cos_bins; ++i) {
     for (int j = 0; j < phi_bins; ++j) {
       double c0 = -1 + 2.0 * i / cos_bins, c1 = -1 + 2.0 * (i + 1) / cos_bins;
       double p0 = 2 * pi * j / phi_bins, p1 = 2 * pi * (j + 1) / phi_bins;
       auto over_phi = [&](double c) {
-        auto pdf = [&](double phi) {
-          return double(Bsdf(m, n, wo).pdf(spherical_direction(float(c), float(phi))));
-        };
+        auto pdf = [&](double phi) { return double(bsdf.pdf(spherical_direction(float(c), float(phi)))); };
         return integrate(pdf, p0, p1, 1e-8);
       };
       counts[i * phi_bins + j] = integrate(over_phi, c0, c1, 1e-7) * sample_count;
