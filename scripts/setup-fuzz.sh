@@ -20,7 +20,8 @@ fi
 
 build_dir=${1:-build-fuzz}
 shift || true
-# The test suite is left out: the sanitizer build (scripts/test.sh with RADIANT_SANITIZE) runs it.
+# The test suite is left out unless asked for: scripts/test-sanitized.sh passes -DRADIANT_TESTS=ON
+# (a later -D wins) and runs it in this same build.
 # -O1 -gline-tables-only (OSS-Fuzz's flags): a quarter less build time than -O2 -g, and stack
 # traces still name file and line.
 CC=clang CXX=clang++ cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
