@@ -1,5 +1,7 @@
 #include "render_job.h"
 
+#include <tbb/task_arena.h>
+
 #include <algorithm>
 #include <chrono>
 #include <iostream>
@@ -102,13 +104,16 @@ void run_render_job(const std::string& scene_path, PreparedScene& prepared, cons
   times.render = result.stats.render_seconds;
   auto write_start = Clock::now();
   OutputSet outputs;
-  if (writes_shard(options)) {
-    ShardInfo info = make_shard_info(prepared, result.settings, options, job.shard_request_hash);
-    if (result.stats.interrupted) info.partial = std::string("interrupted by ") + signal_name(interrupt_signal());
-    write_shard(outputs.create(job.output), result.film, info, job_metadata(scene_path, job, result), options.memory);
-  } else {
-    write_image(output_file(outputs, job.output, job.format), output_image(scene_path, job, result));
-  }
+  // Resolving and encoding the image run on the render's threads, no more.
+  tbb::task_arena(worker_threads(options.threads)).execute([&] {
+    if (writes_shard(options)) {
+      ShardInfo info = make_shard_info(prepared, result.settings, options, job.shard_request_hash);
+      if (result.stats.interrupted) info.partial = std::string("interrupted by ") + signal_name(interrupt_signal());
+      write_shard(outputs.create(job.output), result.film, info, job_metadata(scene_path, job, result), options.memory);
+    } else {
+      write_image(output_file(outputs, job.output, job.format), output_image(scene_path, job, result));
+    }
+  });
   times.write = std::chrono::duration<double>(Clock::now() - write_start).count();
   if (!job.stats_path.empty())
     output_file(outputs, job.stats_path, "json").write(render_stats_json(scene_path, job.output, result, times, job.frame ? &*job.frame : nullptr));

@@ -1,5 +1,7 @@
 #include "image/image_writer.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -51,14 +53,14 @@ void write_image(TemporaryFile& file, const OutputImage& image) {
     size_t stride = image.channels.size(), out_stride = spec.channel_names.size();
     bool alpha = out_stride == 4;
     data.resize(size_t(image.width) * image.height * out_stride);
-    for (size_t i = 0; i < size_t(image.width) * image.height; ++i) {
+    tbb::parallel_for(size_t(0), size_t(image.width) * image.height, [&](size_t i) {
       const float* p = &image.pixels[i * stride];
       color3 color = {p[0], p[1], p[2]};
       if (alpha && p[3] > 0) color = color / p[3];
       color3 shown = display_encode(color, image.display);
       for (int c = 0; c < 3; ++c) data[i * out_stride + c] = shown[c];
       if (alpha) data[i * out_stride + 3] = std::clamp(p[3], 0.0f, 1.0f);
-    }
+    });
     source = data.data();
   }
   write_image_file(file, spec, source);

@@ -383,9 +383,7 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
   PassRunner runner{ctx, s, select_integrator(s), frame, filter, want_aovs, s.transparent,
                     options.path_batching, options.seed, result.film, counts, stop, progress};
 
-  // More threads than TBB's limit (the cores) are not started anyway, and asking prints a warning.
-  int cores = tbb::this_task_arena::max_concurrency();
-  tbb::task_arena arena(options.threads > 0 ? std::min(options.threads, cores) : cores);
+  tbb::task_arena arena(worker_threads(options.threads));
   std::vector<uint8_t> active;
   uint32_t done = s.samples.begin, total = s.samples.end;
   // One pass for a plain render; growing passes when a budget or a noise target may stop early,
@@ -460,13 +458,21 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
   return result;
 }
 
+int worker_threads(int requested) {
+  // More threads than TBB's limit (the cores) are not started anyway, and asking prints a warning.
+  int cores = tbb::this_task_arena::max_concurrency();
+  return requested > 0 ? std::min(requested, cores) : cores;
+}
+
 uint64_t render_image_bytes(int width, int height, size_t channels, bool with_aovs, bool with_alpha) {
   // A film pixel (with its AOV and coverage sums when kept), a sample count and an activity
-  // byte; the output image's floats; for 8-bit formats three more floats and three bytes a pixel
-  // (four with alpha).
+  // byte; the output image's floats; for 8-bit formats three more floats a pixel (four with
+  // alpha) and three bytes a channel: the PNG encoder's filtered rows, its compressed pieces and
+  // the file they make (deflate's output exceeds its input by a fraction of a percent at most,
+  // which the pixel's other bytes cover).
   uint64_t display_channels = with_alpha ? 4 : 3;
   uint64_t per_pixel = film_pixel_bytes(with_aovs, with_alpha) + sizeof(uint32_t) + 1 + channels * sizeof(float) +
-                       display_channels * (sizeof(float) + 1);
+                       display_channels * (sizeof(float) + 3);
   return saturating_multiply(uint64_t(std::max(width, 0)) * uint64_t(std::max(height, 0)), per_pixel);
 }
 
@@ -499,7 +505,9 @@ OutputImage film_to_image(const Film& film, const std::vector<std::string>& aovs
   image.channels = output_channel_names(aovs, with_alpha);
   size_t stride = image.channels.size();
   image.pixels.resize(size_t(film.width) * film.height * stride);
-  for (size_t i = 0; i < film.pixels.size(); ++i) {
+  // Each pixel's exact sums resolved on every thread: a large image's resolve would otherwise be
+  // a serial tail after the render.
+  tbb::parallel_for(size_t(0), film.pixels.size(), [&](size_t i) {
     const FilmPixel& p = film.pixels[i];
     float* out = &image.pixels[i * stride];
     color3 mean = pixel_mean(p);
@@ -519,7 +527,7 @@ OutputImage film_to_image(const Film& film, const std::vector<std::string>& aovs
         *out++ = v.x, *out++ = v.y, *out++ = v.z;
       } else if (aov == "spp") *out++ = float(p.samples);
     }
-  }
+  });
   return image;
 }
 

@@ -95,6 +95,9 @@ struct RenderResult {
   MemoryCharge image_memory;  // the film and the output image made from it, held until written
 };
 
+// The threads a render works on: `requested` (--threads), at most the cores; all cores for 0.
+int worker_threads(int requested);
+
 // Throws MemoryLimitError when options.memory refuses the film, image or lights.
 RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions& options);
 
