@@ -1,5 +1,7 @@
 #include "image/exr_writer.h"
 
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 #include <zlib.h>
 
 #include <algorithm>
@@ -194,19 +196,31 @@ std::string write_exr(TemporaryFile& file, const ImageWriteSpec& spec, const voi
   file.write(header.data.data(), header.data.size());
   Bytes table;
   uint64_t offset = header.data.size();
-  std::vector<unsigned char> raw;
-  for (int chunk = 0; chunk < chunk_count; ++chunk) {
-    int first = chunk * lines_per_chunk, lines = std::min(lines_per_chunk, spec.height - first);
-    pack_lines(spec, channels, pixels, first, lines, raw);
-    std::vector<unsigned char> zipped = spec.zip ? zip_chunk(raw) : std::vector<unsigned char>();
-    const std::vector<unsigned char>& stored = spec.zip ? zipped : raw;
-    Bytes prefix;
-    prefix.u32(uint32_t(spec.y + first));
-    prefix.u32(uint32_t(stored.size()));
-    file.write(prefix.data.data(), prefix.data.size());
-    file.write(stored.data(), stored.size());
-    table.u64(offset);
-    offset += prefix.data.size() + stored.size();
+  // Chunks are packed and compressed a batch at a time on the arena's threads, then written in
+  // order: a batch is no larger than the threads can work on at once, nor than 64 MiB of lines.
+  size_t line_bytes = 0;
+  for (const Channel& channel : channels) line_bytes += size_t(spec.width) * (channel.type == PixelType::half ? 2 : 4);
+  size_t chunk_bytes = std::max<size_t>(1, line_bytes * size_t(lines_per_chunk));
+  int batch = int(std::clamp<size_t>((size_t(64) << 20) / chunk_bytes, 1, size_t(tbb::this_task_arena::max_concurrency())));
+  std::vector<std::vector<unsigned char>> stored(static_cast<size_t>(batch));
+  for (int start = 0; start < chunk_count; start += batch) {
+    int end = std::min(chunk_count, start + batch);
+    tbb::parallel_for(start, end, [&](int chunk) {
+      int first = chunk * lines_per_chunk, lines = std::min(lines_per_chunk, spec.height - first);
+      std::vector<unsigned char>& out = stored[size_t(chunk - start)];
+      pack_lines(spec, channels, pixels, first, lines, out);
+      if (spec.zip) out = zip_chunk(out);
+    });
+    for (int chunk = start; chunk < end; ++chunk) {
+      const std::vector<unsigned char>& bytes = stored[size_t(chunk - start)];
+      Bytes prefix;
+      prefix.u32(uint32_t(spec.y + chunk * lines_per_chunk));
+      prefix.u32(uint32_t(bytes.size()));
+      file.write(prefix.data.data(), prefix.data.size());
+      file.write(bytes.data(), bytes.size());
+      table.u64(offset);
+      offset += prefix.data.size() + bytes.size();
+    }
   }
   file.write_at(table_at, table.data.data(), table.data.size());
   return "";

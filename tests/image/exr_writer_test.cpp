@@ -1,6 +1,7 @@
 // EXR written without OpenImageIO: every file must read back through OpenEXR (in the module)
 // exactly as the same image written by OpenImageIO's own EXR writer does.
 #include <doctest/doctest.h>
+#include <tbb/task_arena.h>
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -133,6 +134,28 @@ TEST_CASE("EXR writer: float and half images read back as OpenImageIO's writer's
         // OpenImageIO's writer compresses with ZIP unless told otherwise, which ImageWriteSpec cannot.
         CHECK(ours.compression == (zip ? "zip" : "none"));
       }
+}
+
+TEST_CASE("EXR writer: chunks compressed on one thread and on four make the same file") {
+  ScratchDir dir("exr-threads");
+  ImageWriteSpec spec;
+  spec.width = 50, spec.height = 117;  // 8 chunks: two batches of four and a short last chunk
+  spec.channel_names = {"R", "G", "B"};
+  spec.type = PixelType::float32;
+  spec.zip = true;
+  std::vector<float> pixels = smooth_then_noise(spec.width, spec.height, 3);
+  tbb::task_arena(1).execute([&] { write_ours(dir.file("one.exr"), spec, pixels.data()); });
+  tbb::task_arena(4).execute([&] { write_ours(dir.file("four.exr"), spec, pixels.data()); });
+  std::string one = read_bytes(dir.file("one.exr"));
+  CHECK(one.size() > 1000);
+  CHECK(one == read_bytes(dir.file("four.exr")));
+  ReadBack back = read_back(dir.file("four.exr"));
+  REQUIRE(back.channels.size() == 3);
+  REQUIRE(back.header.channel_names == std::vector<std::string>{"R", "G", "B"});
+  size_t wrong = 0;  // bit for bit
+  for (size_t i = 0; i < size_t(spec.width) * spec.height; ++i)
+    for (size_t c = 0; c < 3; ++c) wrong += back.channels[c][i] != std::bit_cast<uint32_t>(pixels[i * 3 + c]);
+  CHECK(wrong == 0);
 }
 
 TEST_CASE("EXR writer: a shard's exact uint32 channels beside float colour read back bit for bit") {
