@@ -12,9 +12,7 @@ targets=("$@")
 ((${#targets[@]})) || targets=(scene gltf render obj batch image)
 artifacts="$build_dir/fuzz-artifacts"
 mkdir -p "$artifacts"
-export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
-export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$PWD/tests/sanitizer/lsan.supp:print_suppressions=0:use_tls=0}
-export ASAN_SYMBOLIZER_PATH=${ASAN_SYMBOLIZER_PATH:-$(command -v llvm-symbolizer || true)}
+source scripts/sanitizer-env.sh
 
 # The seed folders of a target: its own, and the render target also starts from every scene.
 seeds() {
