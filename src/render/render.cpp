@@ -168,8 +168,10 @@ struct PassRunner {
   // A tile a few samples at a time (batch_samples): their camera rays, coherent across the tile,
   // are traced together as packets (one at a time where Embree calls back: analytic shapes,
   // alpha masks); the paths go on from their hits alone, or as a batch (all_rays). Every pixel gets the same samples, in the same order, as render_pixel gives it,
-  // and each the same value. Returns the pixels rendered.
-  uint64_t render_tile_batched(const tbb::blocked_range2d<int>& r, uint32_t first, uint32_t end,
+  // and each the same value. Each finished 8x8 tile counts for the progress line at once: one
+  // thread's range may hold many tiles, and a line that moved only per range stood still for
+  // seconds.
+  void render_tile_batched(const tbb::blocked_range2d<int>& r, uint32_t first, uint32_t end,
                                 const std::vector<uint8_t>& active) const {
     static_assert(batch_tile_pixels >= 64, "a batch holds the largest tile run() makes: grain 8 x 8");
     struct Pending {
@@ -197,7 +199,6 @@ struct PassRunner {
     bool sobol = s.sampler == SamplerKind::sobol;
     bool stratified = s.sampler == SamplerKind::grid || s.sampler == SamplerKind::jittered;
     RayCounts& c = counts.local();
-    uint64_t pixels = 0;
     for (int y0 = r.rows().begin(); y0 < r.rows().end(); y0 += 8)
       for (int x0 = r.cols().begin(); x0 < r.cols().end(); x0 += 8) {
         int count = 0;
@@ -206,7 +207,7 @@ struct PassRunner {
             if (is_active(active, x, y)) tile[count++] = {x, y, false, -1, {}};
         for (int i = 0; i < count; ++i) tile_pixel[i] = sample_at(tile[i].x, tile[i].y, 0).pixel;
         for (uint32_t batch_first = first; batch_first < end; batch_first += batch_samples) {
-          if (stop()) return pixels;
+          if (stop()) return;
           uint32_t batch_end = std::min(end, batch_first + batch_samples);
           int paths = 0, samples = 0;
           for (uint32_t index = batch_first; index < batch_end; ++index) {
@@ -247,9 +248,8 @@ struct PassRunner {
             add_sample_to_film(p.x, p.y, p.path >= 0 ? batch[p.path].radiance : color3{}, p.first_hit, p.negative, c);
           }
         }
-        pixels += uint64_t(count);
+        progress.add(uint64_t(count) * (end - first));
       }
-    return pixels;
   }
 
   // Adds samples [first, end) to every pixel still active, until told to stop.
@@ -258,7 +258,7 @@ struct PassRunner {
     bool batched = batching != PathBatching::none;
     tbb::parallel_for(tbb::blocked_range2d<int>(w.y0, w.y1, 8, w.x0, w.x1, 8), [&](const tbb::blocked_range2d<int>& r) {
       if (batched) {
-        progress.add(render_tile_batched(r, first, end, active) * (end - first));
+        render_tile_batched(r, first, end, active);
         return;
       }
       uint64_t rendered = 0;
