@@ -34,6 +34,21 @@ size_t joined_size(const std::vector<std::vector<unsigned char>>& segments) {
   return size;
 }
 
+// The size of `data` deflated by zlib as one stream at its default level with `strategy`.
+size_t deflated_size(const std::vector<unsigned char>& data, int strategy) {
+  z_stream stream{};
+  REQUIRE(deflateInit2(&stream, Z_DEFAULT_COMPRESSION, Z_DEFLATED, 15, 8, strategy) == Z_OK);
+  std::vector<unsigned char> out(deflateBound(&stream, uLong(data.size())));
+  stream.next_in = const_cast<unsigned char*>(data.data());
+  stream.avail_in = uInt(data.size());
+  stream.next_out = out.data();
+  stream.avail_out = uInt(out.size());
+  REQUIRE(deflate(&stream, Z_FINISH) == Z_STREAM_END);
+  size_t size = out.size() - stream.avail_out;
+  deflateEnd(&stream);
+  return size;
+}
+
 // `width` x `height` display values: smooth gradients with noise, so that every PNG filter wins
 // somewhere and deflate finds matches.
 std::vector<float> test_pixels(int width, int height, int channels) {
@@ -70,16 +85,44 @@ TEST_CASE("parallel deflate: pieces join into one zlib stream of the input, at a
 }
 
 TEST_CASE("parallel deflate: each piece reaches back into the one before, so a seam costs almost nothing") {
-  // A random 16 KiB block, repeated for four pieces: only the first copy is incompressible. A piece
-  // that did not see the 32 KiB before it would store its first copy again (16 KiB a piece).
+  // A 16 KiB block of random bytes in runs of 8, repeated for four pieces. Runs alone shrink it
+  // to about a quarter, so each piece is also searched, and the search finds every copy after the
+  // first whole. A piece that did not see the 32 KiB before it would pay for a first copy again.
   std::mt19937 random(5);
   std::vector<unsigned char> block(16 << 10), data;
-  for (unsigned char& b : block) b = (unsigned char)random();
+  for (size_t i = 0; i < block.size(); i += 8) std::fill_n(block.begin() + i, 8, (unsigned char)random());
   while (data.size() < 4 * deflate_piece_bytes) data.insert(data.end(), block.begin(), block.end());
   auto segments = deflate_in_pieces(data.data(), data.size());
   REQUIRE(segments.size() == 4);
   CHECK(inflated(segments, data.size()) == data);
-  CHECK(joined_size(segments) < block.size() + 2048);
+  // Each later piece is one long match after another (at most 258 bytes each): a few hundred bytes.
+  CHECK(joined_size(segments) < deflated_size(block, Z_FILTERED) + 3 * 1024);
+}
+
+TEST_CASE("parallel deflate: noise is run-length coded for speed, structure searched for size") {
+  std::mt19937 random(11);
+  SUBCASE("a noisy render's filtered rows: within 1% of the default level's size") {
+    // Small differences around zero, as the Sub or Paeth filter leaves of 1-spp noise: nothing
+    // for a search to find beyond runs, so run-length coding costs no size to speak of.
+    std::normal_distribution<float> noise(0.0f, 6.0f);
+    std::vector<unsigned char> data(4 * deflate_piece_bytes);
+    for (unsigned char& b : data) b = (unsigned char)(int(std::lround(noise(random))) & 0xff);
+    auto segments = deflate_in_pieces(data.data(), data.size());
+    CHECK(inflated(segments, data.size()) == data);
+    CHECK(double(joined_size(segments)) < 1.01 * double(deflated_size(data, Z_FILTERED)));
+  }
+  SUBCASE("a clean render's: about the default level's size, far below runs alone") {
+    // A flat background (zeros after filtering) with one 48-byte motif, an object's edge, every
+    // 400 bytes: runs shrink the background, and only a search finds the motif's repeats.
+    std::vector<unsigned char> motif(48), data(4 * deflate_piece_bytes, 0);
+    for (unsigned char& b : motif) b = (unsigned char)random();
+    for (size_t i = 0; i + motif.size() <= data.size(); i += 400) std::copy(motif.begin(), motif.end(), data.begin() + i);
+    auto segments = deflate_in_pieces(data.data(), data.size());
+    CHECK(inflated(segments, data.size()) == data);
+    // Each piece's own block header and first motif: tens of bytes a piece.
+    CHECK(joined_size(segments) < deflated_size(data, Z_FILTERED) + 4 * 64);
+    CHECK(double(joined_size(segments)) < 0.5 * double(deflated_size(data, Z_RLE)));
+  }
 }
 
 TEST_CASE("PNG encoder: gray, RGB and RGBA read back exactly, in files of many pieces") {
