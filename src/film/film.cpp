@@ -1,5 +1,8 @@
 #include "film/film.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <limits>
 
@@ -11,9 +14,19 @@ Film make_film(int width, int height, bool with_aovs, bool with_alpha) {
   film.height = height;
   film.full_width = width;
   film.full_height = height;
-  film.pixels.resize(size_t(width) * height);
-  if (with_aovs) film.aovs.resize(film.pixels.size());
-  if (with_alpha) film.alpha.resize(film.pixels.size());
+  size_t count = size_t(width) * height;
+  film.pixels.resize(count);
+  if (with_aovs) film.aovs.resize(count);
+  if (with_alpha) film.alpha.resize(count);
+  // FilmAllocator left every element unconstructed: each thread constructs (and first touches)
+  // rows of pages of its own.
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 4096), [&](const tbb::blocked_range<size_t>& range) {
+    for (size_t i = range.begin(); i < range.end(); ++i) {
+      ::new (static_cast<void*>(&film.pixels[i])) FilmPixel();
+      if (with_aovs) ::new (static_cast<void*>(&film.aovs[i])) FilmAovs();
+      if (with_alpha) ::new (static_cast<void*>(&film.alpha[i])) ExactSum();
+    }
+  });
   return film;
 }
 

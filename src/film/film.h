@@ -5,6 +5,8 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
+#include <utility>
 #include <vector>
 
 #include "film/exact_sum.h"
@@ -30,21 +32,44 @@ struct FilmAovs {
   ExactSum depth;
 };
 
+// The film's allocator: a vector's resize leaves the elements unconstructed, and make_film
+// constructs them itself on all of the arena's threads. A 1024² film is a hundred megabytes, and
+// constructing it, which also faults in every page, on one thread was the longest serial step
+// left before a render. Only make_film resizes a film; copies construct as usual.
+template <class T>
+struct FilmAllocator : std::allocator<T> {
+  template <class U>
+  struct rebind {
+    using other = FilmAllocator<U>;
+  };
+  FilmAllocator() = default;
+  template <class U>
+  FilmAllocator(const FilmAllocator<U>&) noexcept {}
+  template <class U>
+  void construct(U*) noexcept {}  // value-initialization: make_film's
+  template <class U, class... Args>
+  void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
+template <class T>
+using FilmVector = std::vector<T, FilmAllocator<T>>;
+
 struct Film {
   int width = 0, height = 0;
   // Where the film lies in the full image: a cropped render or a shard is a window of it.
   int x = 0, y = 0, full_width = 0, full_height = 0;
-  std::vector<FilmPixel> pixels;
-  std::vector<FilmAovs> aovs;  // one per pixel when the render keeps AOVs, else empty
+  FilmVector<FilmPixel> pixels;
+  FilmVector<FilmAovs> aovs;  // one per pixel when the render keeps AOVs, else empty
   // The sum of each sample's coverage (1 where the camera ray met geometry, 0 where it saw the
   // background), one per pixel in a transparent render, else empty.
-  std::vector<ExactSum> alpha;
+  FilmVector<ExactSum> alpha;
   FilmPixel& at(int x, int y) { return pixels[size_t(y) * width + x]; }
   const FilmPixel& at(int x, int y) const { return pixels[size_t(y) * width + x]; }
 };
 
 // A film of black pixels without samples, the whole image; `with_aovs` also makes the AOV sums,
-// `with_alpha` the coverage sums.
+// `with_alpha` the coverage sums. Constructed on the calling task arena's threads.
 Film make_film(int width, int height, bool with_aovs = false, bool with_alpha = false);
 
 // Adds a sample; `negative`: its filter weight is negative.

@@ -363,7 +363,8 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
   CameraFrame frame = make_camera_frame(s.camera, s.width, s.height);
   RenderContext ctx = make_context(prepared, s, lights, options, frame, pyramids);
 
-  result.film = make_film(width, height, want_aovs, s.transparent);
+  tbb::task_arena arena(worker_threads(options.threads));
+  arena.execute([&] { result.film = make_film(width, height, want_aovs, s.transparent); });
   result.film.x = s.window.x0, result.film.y = s.window.y0;
   result.film.full_width = s.width, result.film.full_height = s.height;
   tbb::enumerable_thread_specific<RayCounts> counts;
@@ -383,7 +384,6 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
   PassRunner runner{ctx, s, select_integrator(s), frame, filter, want_aovs, s.transparent,
                     options.path_batching, options.seed, result.film, counts, stop, progress};
 
-  tbb::task_arena arena(worker_threads(options.threads));
   std::vector<uint8_t> active;
   uint32_t done = s.samples.begin, total = s.samples.end;
   // One pass for a plain render; growing passes when a budget or a noise target may stop early,
