@@ -14,6 +14,7 @@
 #include <optional>
 
 #include "accel/accel_memory.h"
+#include "film/film_stats.h"
 #include "integrators/naive.h"
 #include "integrators/path.h"
 #include "integrators/whitted.h"
@@ -70,15 +71,6 @@ Integrator select_integrator(const ResolvedSettings& s) {
     case RenderMode::auto_select: break;
   }
   return select_path(s.compiled_variant);
-}
-
-// Relative standard error of a pixel's mean luminance (0 for black, converged pixels).
-float pixel_relative_error(const FilmPixel& p) {
-  if (p.samples < 2) return std::numeric_limits<float>::infinity();
-  color3 mean = pixel_mean(p), variance = pixel_mean_variance(p);
-  float l = luminance(mean);
-  float sigma = std::sqrt(std::max(0.0f, luminance(variance)));
-  return sigma / std::max(l, 1e-3f);
 }
 
 // Whether the render must stop before its samples are all taken: checked before every pixel, so
@@ -402,10 +394,8 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
     }
     if (progressive) options.on_pass(result.film, done);
     if (adaptive) {
-      active.assign(result.film.pixels.size(), 0);
       size_t remaining = 0;
-      for (size_t i = 0; i < result.film.pixels.size(); ++i)
-        remaining += active[i] = pixel_relative_error(result.film.pixels[i]) > options.noise_threshold;
+      arena.execute([&] { remaining = mark_unconverged_pixels(result.film, options.noise_threshold, active); });
       if (remaining == 0) break;
       progress.set_remaining(uint64_t(remaining) * (total - done));
     }
@@ -433,28 +423,14 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
   for (const RayCounts& c : counts) result.stats.rays += c;
   result.stats.untraceable_rays = prepared.accel->untraceable_rays.exchange(0);
 
-  // One pass gathers the sample counts (for their distribution) and the error estimates.
-  std::vector<uint32_t> counts_per_pixel;
-  counts_per_pixel.reserve(result.film.pixels.size());
-  double error_sum = 0;
-  size_t error_count = 0;
-  for (const FilmPixel& p : result.film.pixels) {
-    counts_per_pixel.push_back(p.samples);
-    result.stats.samples += p.samples;
-    float e = pixel_relative_error(p);
-    if (std::isfinite(e)) error_sum += e, ++error_count;
-  }
-  auto quantile = [&](double q) {
-    if (counts_per_pixel.empty()) return uint32_t(0);
-    auto at = counts_per_pixel.begin() + ptrdiff_t(q * double(counts_per_pixel.size() - 1));
-    std::nth_element(counts_per_pixel.begin(), at, counts_per_pixel.end());
-    return *at;
-  };
-  result.stats.min_pixel_samples = quantile(0);
-  result.stats.median_pixel_samples = quantile(0.5);
-  result.stats.p90_pixel_samples = quantile(0.9);
-  result.stats.max_pixel_samples = quantile(1);
-  result.stats.estimated_relative_error = error_count ? float(error_sum / error_count) : 0.0f;
+  FilmSampleStats film_stats;
+  arena.execute([&] { film_stats = film_sample_stats(result.film); });
+  result.stats.samples = film_stats.samples;
+  result.stats.min_pixel_samples = film_stats.min_pixel_samples;
+  result.stats.median_pixel_samples = film_stats.median_pixel_samples;
+  result.stats.p90_pixel_samples = film_stats.p90_pixel_samples;
+  result.stats.max_pixel_samples = film_stats.max_pixel_samples;
+  result.stats.estimated_relative_error = film_stats.mean_relative_error;
   return result;
 }
 
