@@ -21,13 +21,16 @@ constexpr float min_lobe_weight = 0.05f;
   return l.ior_f0 < 1 ? std::max((fresnel_dielectric(cos, l.ior) - l.ior_f0) / (1 - l.ior_f0), 0.0f) : 1;
 }
 
-// The plastic's coating reflectance (KHR_materials_specular): that curve run from the tinted F0
-// at normal incidence to 1 at grazing, times its strength. With iridescence, a share of it is
-// the thin film's reflectance over that F0 instead.
-[[gnu::always_inline]] inline color3 coating_fresnel(const MetallicRoughnessLobes& l, float cos) {
-  color3 f = l.specular_f0 + (color3{1, 1, 1} - l.specular_f0) * coating_rise(l, cos);
+// The plastic's coating reflectance (KHR_materials_specular): that curve (its value `rise` at
+// `cos`) run from the tinted F0 at normal incidence to 1 at grazing, times its strength. With
+// iridescence, a share of it is the thin film's reflectance over that F0 instead.
+[[gnu::always_inline]] inline color3 coating_fresnel(const MetallicRoughnessLobes& l, float cos, float rise) {
+  color3 f = l.specular_f0 + (color3{1, 1, 1} - l.specular_f0) * rise;
   if (l.iridescence > 0) f = lerp(f, thin_film_fresnel(cos, l.film_outside_ior, l.film, l.specular_f0), l.iridescence);
   return f * l.specular;
+}
+[[gnu::always_inline]] inline color3 coating_fresnel(const MetallicRoughnessLobes& l, float cos) {
+  return coating_fresnel(l, cos, coating_rise(l, cos));
 }
 
 // The metal's reflectance: Schlick's with F0 = base colour, or in part the thin film's over it.
@@ -37,21 +40,28 @@ constexpr float min_lobe_weight = 0.05f;
   return f;
 }
 
-// Fresnel reflectance of the mixed specular lobe at microfacet cosine `cos_h`.
-[[gnu::always_inline]] inline color3 specular_fresnel(const MetallicRoughnessLobes& l, float cos_h) {
+// Fresnel reflectance of the mixed specular lobe at microfacet cosine `cos_h`, given the
+// coating's curve there (coating_rise; read only when the material has a plastic share).
+[[gnu::always_inline]] inline color3 specular_fresnel(const MetallicRoughnessLobes& l, float cos_h, float rise) {
   float glass = l.glass > 0 ? l.glass * fresnel_dielectric(cos_h, l.eta) : 0;
-  color3 plastic = l.plastic > 0 ? coating_fresnel(l, cos_h) * l.plastic : color3{0, 0, 0};
+  color3 plastic = l.plastic > 0 ? coating_fresnel(l, cos_h, rise) * l.plastic : color3{0, 0, 0};
   color3 metal = l.metal > 0 ? metal_fresnel(l, cos_h) * l.metal : color3{0, 0, 0};
   return metal + plastic + color3{glass, glass, glass};
+}
+[[gnu::always_inline]] inline color3 specular_fresnel(const MetallicRoughnessLobes& l, float cos_h) {
+  return specular_fresnel(l, cos_h, l.plastic > 0 ? coating_rise(l, cos_h) : 0);
 }
 
 // Light crossing the plastic's coating at cosine `cos`: what its brightest channel does not
 // reflect (the extension's 1 − specular · max(F)); symmetric in wo and wi: reciprocity. Without
 // iridescence the brightest channel is the one with the largest F0, whatever the cosine, so
 // only that channel is worked out.
+[[gnu::always_inline]] inline float coating_transmittance(const MetallicRoughnessLobes& l, float cos, float rise) {
+  if (l.iridescence > 0) return 1 - max_component(coating_fresnel(l, cos, rise));
+  return 1 - (l.specular_f0_max + (1 - l.specular_f0_max) * rise) * l.specular;
+}
 [[gnu::always_inline]] inline float coating_transmittance(const MetallicRoughnessLobes& l, float cos) {
-  if (l.iridescence > 0) return 1 - max_component(coating_fresnel(l, cos));
-  return 1 - (l.specular_f0_max + (1 - l.specular_f0_max) * coating_rise(l, cos)) * l.specular;
+  return coating_transmittance(l, cos, coating_rise(l, cos));
 }
 
 // The GGX terms, anisotropic (KHR_materials_anisotropy) only where the material is. Lambda along
@@ -202,10 +212,12 @@ MetallicRoughnessLobes make_metallic_roughness_lobes(const MetallicRoughnessPara
   if (!(l.wo.z > 1e-7f) || !is_finite(l.wo)) return l;
   bool colored = max_component(l.base) > 0;
   float cos_o = l.wo.z;
-  l.coating_o = coating_transmittance(l, cos_o);
+  // The coating's curve at wo, worked out once: its transmittance and its reflectance both read it.
+  float rise_o = coating_rise(l, cos_o);
+  l.coating_o = coating_transmittance(l, cos_o, rise_o);
   if (!l.smooth) l.lambda_o = microfacet_lambda(l, l.wo);
   float specular = selection_weight(l.metal > 0 || l.plastic * l.specular > 0 || l.glass > 0,
-                                    mean(specular_fresnel(l, cos_o)), l.smooth);
+                                    mean(specular_fresnel(l, cos_o, rise_o)), l.smooth);
   float diffuse = selection_weight(l.plastic > 0 && colored,
                                    l.plastic * mean(l.base) * l.coating_o, false);
   float transmitted = l.glass > 0 && colored ? l.glass * mean(l.base) * (1 - fresnel_dielectric(cos_o, l.eta)) : 0;
