@@ -323,6 +323,10 @@ void RenderFlags::bind(CLI::App& app, bool image_flags) {
   }
   app.add_option("--mode", mode, "Integrator: whitted, path, naive or auto (default auto)");
   app.add_option("--max-depth", max_depth, "Surface interactions that gather light (1 = direct only)")->check(CLI::Range(1, 1000));
+  app.add_option("--indirect-paths", indirect_paths,
+                 "Paths each camera sample sends on from its first hit (path tracing; default 1): its direct light "
+                 "is taken once, its bounce this many times")
+      ->check(CLI::Range(1, max_indirect_paths));
   app.add_option("--threads", options.threads, "Worker threads (default: all cores); never changes the image")->check(CLI::Range(0, 1024));
   app.add_option("--seed", options.seed, "Random seed");
   app.add_option("--sampler", sampler, "grid, random, jittered (Whitted default) or sobol (path default)");
@@ -368,6 +372,7 @@ void RenderFlags::finish() {
   if (height) options.height = height;
   if (spp) options.spp = spp;
   if (max_depth) options.max_depth = max_depth;
+  if (indirect_paths) options.indirect_paths = indirect_paths;
   if (!mode.empty()) options.mode = parse_mode("--mode", mode);
   if (!sampler.empty()) options.sampler = parse_sampler("--sampler", sampler);
   if (!view.empty()) {

@@ -78,6 +78,7 @@ std::string render_stats_json(const std::string& scene_path, const std::string& 
   j["transparent"] = s.transparent;
   j["spp"] = s.spp;
   j["max_depth"] = s.max_depth;
+  j["indirect_paths"] = s.indirect_paths;
   j["effects"] = effect_names(s.effects);
   j["compiled_variant"] = effect_names(s.compiled_variant);
   j["seconds"] = {{"load", t.load}, {"build", t.build}, {"render", t.render}, {"write", t.write},

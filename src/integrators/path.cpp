@@ -190,10 +190,22 @@ template <uint32_t E>
 
 // A path between two vertices: everything its loop carries from one hit to the next.
 // PathVariant::start sets every field; previous_* are read only after a bounce wrote them.
+//
+// With --indirect-paths (ctx.split > 1) a camera sample's path branches at its first hit into
+// `split` sub-paths, each run as a path of its own from the same camera hit. The first hit's
+// own light (what it emits, its light sample, the background where the camera ray escapes) is
+// gathered by the first sub-path alone; every sub-path samples its own bounce there and carries
+// 1/split of it. So the first vertex's numbers other than the bounce (the light sample, alpha,
+// dispersion) are the camera sample's (`sample`), shared by its sub-paths; the bounce's and
+// every later vertex's are the sub-path's own (`own`, sample index index * split + its number),
+// which are `sample`'s when split is 1.
 struct PathState {
   Ray ray;  // the ray just traced, or about to be
   color3 radiance, throughput;
   const SampleContext* sample;
+  SampleContext own;
+  bool gathers_first_vertex;  // the first sub-path of its camera sample
+  float split, split_weight;  // ctx.split and 1 / ctx.split
   FirstHit* first_hit;
   uint64_t RayCounts::*ray_kind;  // the kind of `ray`, counted when traced
   bool specular_bounce;
@@ -220,11 +232,12 @@ struct PathVariant {
                                              VertexDraws* drawn, VertexScratch& scratch,
                                              LightSampleResult& light, RayCounts& counts) {
     const LightTable& lights = *ctx.lights;
-    const SampleContext& sample = *path.sample;
+    int depth = path.depth;
+    const SampleContext& sample = depth == 0 ? *path.sample : path.own;
     const Ray& ray = path.ray;
     color3& radiance = path.radiance;
     color3& throughput = path.throughput;
-    int depth = path.depth;
+    bool gathers = depth > 0 || path.gathers_first_vertex;  // this vertex's own light
     light.traces = false;
     // Beer-Lambert along the segment just traced inside a volume (a ray escaping one, which a
     // closed mesh cannot let happen, keeps its light).
@@ -232,7 +245,7 @@ struct PathVariant {
       throughput *= exp(ctx.absorption[size_t(path.medium)] * -(id.t * length(ray.direction)));
     if (!id.valid()) {
       // Depth 0 is the camera ray, also after it passed alpha cutouts.
-      if (enabled<E>(ctx.effects, effect_environment) && !(depth == 0 && ctx.transparent_background)) {
+      if (gathers && enabled<E>(ctx.effects, effect_environment) && !(depth == 0 && ctx.transparent_background)) {
         color3 background = eval_environment(lights, normalize(ray.direction));
         float weight = 1;
         // The environment has a selection slot only when it exists (--effects=all can switch
@@ -260,7 +273,7 @@ struct PathVariant {
     HitShading f = make_hit_shading<E>(ctx.effects, hit, m, ray.direction);
     if (path.first_hit && depth == 0) *path.first_hit = {bsdf_albedo(m), f.normal, id.t * length(ray.direction), 1};
 
-    if (enabled<E>(ctx.effects, effect_emission) && !is_black(m.emission)) {
+    if (gathers && enabled<E>(ctx.effects, effect_emission) && !is_black(m.emission)) {
       const MaterialDesc& authored = ctx.scene->materials[hit.material];
       if (hit.front_face || authored.double_sided) {
         float weight = 1;
@@ -276,7 +289,7 @@ struct PathVariant {
       }
     }
     if (m.unlit) {
-      radiance += throughput * m.base_color;
+      if (gathers) radiance += throughput * m.base_color;
       return false;
     }
     // Vertex `depth` gathers light only below max_depth; the emission above completed the
@@ -296,12 +309,12 @@ struct PathVariant {
     float u_lobe = 0.5f;
     if (bsdf.chooses_lobe()) {
       if (drawn) drawn->lobe_choice_used = true;
-      u_lobe = drawn && drawn->has(lobe_choice) ? drawn->lobe_choice : sample_1d(sample, dimension(depth, lobe_choice));
+      u_lobe = drawn && drawn->has(lobe_choice) ? drawn->lobe_choice : sample_1d(path.own, dimension(depth, lobe_choice));
     }
     auto scattered = drawn && drawn->has(bsdf_direction)
                          ? bsdf.sample(u_lobe, drawn->direction, drawn->cosine)
-                         : bsdf.sample(u_lobe, sample_2d(sample, dimension(depth, bsdf_direction)));
-    if (LightSampling && !is_pure_delta(m)) {
+                         : bsdf.sample(u_lobe, sample_2d(path.own, dimension(depth, bsdf_direction)));
+    if (LightSampling && gathers && !is_pure_delta(m)) {
       sample_one_light<E>(ctx, hit, bsdf, f, sample, depth, drawn, counts, light);
       if (light.traces) {
         light.unblocked = throughput * light.unblocked;
@@ -328,7 +341,7 @@ struct PathVariant {
     // Crossing a surface enters its volume from the front and leaves it from the back.
     if (enabled<E>(ctx.effects, effect_absorption) && scattered->transmitted)
       path.medium = hit.front_face && !is_black(ctx.absorption[size_t(hit.material)]) ? hit.material : -1;
-    throughput *= scattered->weight;
+    throughput *= depth == 0 ? scattered->weight * path.split_weight : scattered->weight;
     path.specular_bounce = scattered->delta;
     path.previous_pdf = scattered->pdf;
     path.previous_position = hit.position;
@@ -336,18 +349,19 @@ struct PathVariant {
     spawn_ray(path.ray, hit, scattered->wi);
     path.depth = ++depth;
     if (depth >= roulette_start_depth) {
-      float survive = std::min(1.0f, max_component(throughput));
-      float u = drawn && drawn->has(roulette) ? drawn->roulette : sample_1d(sample, dimension(depth, roulette));
+      // A sub-path's share (split_weight) is not a loss of light: roulette goes by its whole.
+      float survive = std::min(1.0f, max_component(throughput) * path.split);
+      float u = drawn && drawn->has(roulette) ? drawn->roulette : sample_1d(path.own, dimension(depth, roulette));
       if (u >= survive) return false;
       throughput /= survive;
     }
     return true;
   }
 
-  // A path at its camera ray, set field by field in place (see sample_one_light): the batch's
-  // workspace reuses its states.
+  // Sub-path `sub_path` of a camera sample at its camera ray, set field by field in place (see
+  // sample_one_light): the batch's workspace reuses its states. AOV values come from the first.
   static void start(PathState& path, const RenderContext& ctx, const Ray& camera_ray, const SampleContext& sample,
-                    FirstHit* first_hit) {
+                    int sub_path, FirstHit* first_hit) {
     path.radiance = {};
     path.throughput = {1, 1, 1};
     path.ray_kind = &RayCounts::camera;
@@ -361,26 +375,41 @@ struct PathVariant {
     path.ray.direction = camera_ray.direction;
     path.ray.tmax = camera_ray.tmax;
     path.sample = &sample;
-    path.first_hit = first_hit;
+    // One aggregate: copied and then given its index in a second store, GCC 12 at -O3 (not -O2,
+    // nor with -fno-strict-aliasing) lost the index store in the batch's inlined copy, and every
+    // sub-path drew the first one's numbers (tests/render/indirect_paths_test.cpp catches it).
+    path.own = {sample.kind, sample.pixel, sample.index * uint32_t(ctx.split) + uint32_t(sub_path), sample.samples,
+                sample.seed};
+    path.gathers_first_vertex = sub_path == 0;
+    path.split = float(ctx.split);
+    path.split_weight = 1.0f / float(ctx.split);
+    path.first_hit = sub_path == 0 ? first_hit : nullptr;
     path.max_depth = ctx.max_depth;
   }
 
-  // One path at a time: the reference the batch must match.
+  // One path at a time (its sub-paths one after another, summed in order): the reference the
+  // batch must match.
   static color3 run(const RenderContext& ctx, const Ray& camera_ray, const SampleContext& sample, RayCounts& counts,
                     FirstHit* first_hit, const HitId* camera_hit) {
-    PathState path;
-    start(path, ctx, camera_ray, sample, first_hit);
+    ++counts.camera;
+    HitId first = camera_hit ? *camera_hit : intersect_nearest(*ctx.accel, camera_ray);
     VertexScratch scratch;
     LightSampleResult light;
-    for (;;) {
-      ++(counts.*path.ray_kind);
-      HitId id = camera_hit ? *camera_hit : intersect_nearest(*ctx.accel, path.ray);
-      camera_hit = nullptr;  // only the camera ray was traced beforehand
-      bool goes_on = advance(ctx, path, id, nullptr, scratch, light, counts);
-      if (light.traces) path.radiance += is_occluded(*ctx.accel, light.shadow_ray) ? light.blocked : light.unblocked;
-      if (!goes_on) break;
+    color3 sum;
+    for (int sub_path = 0; sub_path < ctx.split; ++sub_path) {
+      PathState path;
+      start(path, ctx, camera_ray, sample, sub_path, first_hit);
+      HitId id = first;
+      for (;;) {
+        bool goes_on = advance(ctx, path, id, nullptr, scratch, light, counts);
+        if (light.traces) path.radiance += is_occluded(*ctx.accel, light.shadow_ray) ? light.blocked : light.unblocked;
+        if (!goes_on) break;
+        ++(counts.*path.ray_kind);
+        id = intersect_nearest(*ctx.accel, path.ray);
+      }
+      sum = sub_path == 0 ? path.radiance : sum + path.radiance;
     }
-    return path.radiance;
+    return sum;
   }
 
   // What a batch keeps per path, allocated once per thread: constructing it for every batch
@@ -428,9 +457,13 @@ struct PathVariant {
     static_assert(SobolLanes::capacity >= std::size(groups) * max_batch_paths);
     for (VertexDimension d : groups) {
       if (!(wants & (1u << d))) continue;
+      // The bounce and roulette are the sub-path's own; the light sample is the camera sample's
+      // at the first vertex (see PathState).
+      bool own = d == bsdf_direction || d == lobe_choice || d == roulette;
       for (int k = 0; k < live_count; ++k) {
         const PathState& path = paths[live[k]];
-        lanes.add(*path.sample, dimension(d == roulette ? path.depth + 1 : path.depth, d));
+        lanes.add(own || path.depth > 0 ? path.own : *path.sample,
+                  dimension(d == roulette ? path.depth + 1 : path.depth, d));
       }
     }
     draw_sobol_lanes(lanes);
@@ -459,8 +492,16 @@ struct PathVariant {
 
   // The batch's paths advance a vertex at a time together: each stage's shadow rays, then its
   // next rays, are traced as one stream. Each path sees the same values in the same order as
-  // in run(), so its radiance is run()'s bit for bit.
+  // in run(), so its radiance is run()'s bit for bit. With sub-paths (ctx.split), as many camera
+  // samples at a time as fill a batch with theirs.
   static void run_batch(const RenderContext& ctx, BatchPath* batch, int count, RayCounts& counts) {
+    int camera_samples = max_batch_paths / ctx.split;
+    for (int first = 0; first < count; first += camera_samples)
+      run_sub_paths(ctx, batch + first, std::min(camera_samples, count - first), counts);
+  }
+
+  // The sub-paths of `count` camera samples (at most max_batch_paths in all), advanced together.
+  static void run_sub_paths(const RenderContext& ctx, BatchPath* batch, int count, RayCounts& counts) {
     // One per thread, held by a static object rather than in TLS: a thread's static TLS comes out
     // of its stack, too small for this, and a heap block reached only from TLS looks leaked to
     // LeakSanitizer, which CI runs without scanning TLS (.ci/run).
@@ -468,13 +509,16 @@ struct PathVariant {
     BatchWorkspace& workspace = per_thread.local();
     auto& [paths, lights, rays, hits, occluded, live, shadowed, scratch, lanes, cosine_x, cosine_y, cosine_z, drawn,
            lobe_choices, first_lobe_choices] = workspace;
-    count = std::min(count, max_batch_paths);
-    int live_count = count;
-    for (int i = 0; i < count; ++i) {
-      start(paths[i], ctx, batch[i].ray, batch[i].sample, batch[i].first_hit);
+    int split = ctx.split;
+    int live_count = count * split;
+    for (int c = 0; c < count; ++c) {
       ++counts.camera;
-      hits[i] = batch[i].camera_hit;
-      live[i] = i;
+      for (int sub_path = 0; sub_path < split; ++sub_path) {
+        int i = c * split + sub_path;
+        start(paths[i], ctx, batch[c].ray, batch[c].sample, sub_path, batch[c].first_hit);
+        hits[i] = batch[c].camera_hit;
+        live[i] = i;
+      }
     }
     lobe_choices = first_lobe_choices;
     for (bool first_stage = true; live_count > 0; first_stage = false) {
@@ -504,7 +548,11 @@ struct PathVariant {
       intersect_nearest_many(*ctx.accel, rays, next_count, hits, RayCoherence::incoherent);
       live_count = next_count;
     }
-    for (int i = 0; i < count; ++i) batch[i].radiance = paths[i].radiance;
+    for (int c = 0; c < count; ++c) {
+      color3 sum = paths[c * split].radiance;
+      for (int sub_path = 1; sub_path < split; ++sub_path) sum = sum + paths[c * split + sub_path].radiance;
+      batch[c].radiance = sum;
+    }
   }
 };
 

@@ -59,6 +59,9 @@ struct RenderContext {
   PixelSpread pixel_spread;      // the camera's, for texture footprints (trilinear only)
   uint32_t effects = effect_all;
   int max_depth = 8;
+  // Paths that leave each camera sample's first hit (--indirect-paths; path tracing only): the
+  // first hit's own light is gathered once, its bounce sampled this many times, each 1/split.
+  int split = 1;
   float contribution_cutoff = 0.001f;
   // A transparent render: camera rays that escape see black (the environment still lights what
   // they hit, and is seen in reflections and through glass).

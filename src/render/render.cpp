@@ -53,6 +53,8 @@ RenderContext make_context(const PreparedScene& prepared, const ResolvedSettings
   ctx.pixel_spread = make_pixel_spread(frame);
   ctx.effects = s.effects;
   ctx.max_depth = s.max_depth;
+  static_assert(max_indirect_paths <= max_batch_paths, "a batch holds every sub-path of a camera sample");
+  ctx.split = s.indirect_paths;
   ctx.contribution_cutoff = options.contribution_cutoff;
   ctx.transparent_background = s.transparent;
   return ctx;

@@ -50,6 +50,7 @@ CameraDesc world_view_camera(const WorldPlacement& world, const SceneSettings& s
 // Settings after combining flags, the scene file's settings and the defaults.
 struct ResolvedSettings {
   int width = 0, height = 0, spp = 1, max_depth = 1;
+  int indirect_paths = 1;  // paths from each camera sample's first hit (path and naive modes)
   RenderMode mode = RenderMode::path;
   std::string mode_reason;  // why auto picked the mode ("" when given)
   SamplerKind sampler = SamplerKind::jittered;

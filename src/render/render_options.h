@@ -59,6 +59,7 @@ enum class PathBatching {
 
 struct RenderOptions {
   std::optional<int> width, height, spp, max_depth;
+  std::optional<int> indirect_paths;  // --indirect-paths
   std::optional<RenderMode> mode;
   std::optional<SamplerKind> sampler;
   LightSampler light_sampler = LightSampler::automatic;  // path and naive modes' light choice
@@ -120,6 +121,9 @@ constexpr double max_time_limit_seconds = 1e9;
 constexpr int default_whitted_spp = 4;
 constexpr int default_path_spp = 64;
 constexpr int default_whitted_max_depth = 10;
+// The most paths a camera sample's first hit may send on (--indirect-paths): a batch holds all
+// of one camera sample's (integrators/render_context.h, max_batch_paths).
+constexpr int max_indirect_paths = 64;
 constexpr int default_path_max_depth = 8;
 constexpr int default_image_size = 512;
 

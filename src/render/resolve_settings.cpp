@@ -104,6 +104,12 @@ ResolvedSettings resolve_settings(const PreparedScene& prepared, const RenderOpt
                               : scene.settings.sampler.value_or(whitted ? SamplerKind::jittered : SamplerKind::sobol);
   if (r.spp < 1) throw std::invalid_argument("--spp must be at least 1");
   if (r.max_depth < 1) throw std::invalid_argument("--max-depth must be at least 1");
+  if (options.indirect_paths) {
+    if (whitted) throw std::invalid_argument("--indirect-paths: only path tracing sends several paths on from a hit (--mode path or naive)");
+    if (*options.indirect_paths < 1 || *options.indirect_paths > max_indirect_paths)
+      throw std::invalid_argument("--indirect-paths must be in [1, " + std::to_string(max_indirect_paths) + "]");
+    r.indirect_paths = *options.indirect_paths;
+  }
 
   r.view = options.view ? *options.view : scene.settings.view.value_or(ViewTransform::standard);
   r.transparent = options.transparent ? *options.transparent : scene.settings.transparent.value_or(false);

@@ -52,6 +52,7 @@ std::string settings_hash(const ResolvedSettings& s, const RenderOptions& option
   std::ostringstream text;
   text << s.width << ' ' << s.height << ' ' << int(s.mode) << ' ' << s.max_depth << ' ' << int(s.sampler) << ' '
        << options.seed << ' ' << (sampler_extends(s.sampler) ? 0 : s.spp) << ' ';
+  if (s.indirect_paths != 1) text << "indirect-paths " << s.indirect_paths << ' ';  // earlier hashes unchanged
   const CameraDesc& c = s.camera;
   text << int(c.projection) << ' ';
   put(text, c.position), put(text, c.forward), put(text, c.up);

@@ -2,6 +2,7 @@
 // unknown one is a usage error naming the choices.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <vector>
 
@@ -34,4 +35,23 @@ TEST_CASE("render cli: an unknown --batching is a usage error naming the choices
   CHECK(r.exit_code == 2);
   CHECK(r.err.find("unknown batching 'simd' (expected none, camera or all)") != std::string::npos);
   CHECK_FALSE(fs::exists(out));
+}
+
+TEST_CASE("render cli: --indirect-paths is reported, and refused for Whitted and outside [1, 64]") {
+  ScratchDir dir("cli-indirect-paths");
+  fs::path out = dir.file("out.png"), stats = dir.file("stats.json");
+  std::string render = "render " + quoted(source_path("assets/cornell.gltf")) + " -o " + quoted(out) +
+                       " --width 12 --height 10 --spp 2 --quiet";
+  CommandResult ok = run_radiant(render + " --indirect-paths 3 --stats " + quoted(stats));
+  REQUIRE(ok.exit_code == 0);
+  CHECK(read_bytes(stats).find("\"indirect_paths\": 3") != std::string::npos);
+  fs::remove(out);
+  for (const char* bad : {" --mode whitted --indirect-paths 2", " --indirect-paths 0", " --indirect-paths 65"}) {
+    CAPTURE(bad);
+    CommandResult r = run_radiant(render + bad);
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find("--indirect-paths") != std::string::npos);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK_FALSE(fs::exists(out));
+  }
 }

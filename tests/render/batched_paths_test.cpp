@@ -211,3 +211,22 @@ TEST_CASE("batched paths: analytic shapes and alpha masks, traced one ray at a t
     require_same_render(lamps, o, false);
   }
 }
+
+TEST_CASE("batched paths: sub-paths from the first hit (--indirect-paths) batch the same") {
+  // Three sub-paths do not divide a batch (85 camera samples a batch), four do; every effect of
+  // the room, an alpha card among them, and the glTF box's area light (MIS at the first bounce).
+  for (int indirect_paths : {3, 4}) {
+    CAPTURE(indirect_paths);
+    SceneDesc room = effects_room(true);
+    RenderOptions o;
+    o.width = 21, o.height = 17, o.spp = 3, o.mode = RenderMode::path, o.max_depth = 10;
+    o.indirect_paths = indirect_paths;
+    o.aovs = {"albedo", "normal", "depth"};
+    require_same_render(room, o);
+    o.mode = RenderMode::naive;
+    require_same_render(room, o);
+    SceneDesc box = load_scene(source_path("assets/cornell.gltf").string());
+    o.mode = RenderMode::path;
+    require_same_render(box, o);
+  }
+}
