@@ -10,15 +10,18 @@
 # estimated from the two, is removed. The tutorial has no seed: its reference is its own first
 # samples plus more, so its error is corrected for that nesting (independent samples).
 # Both images are compared as the tutorial writes them: linear, clamped to [0, 1], 8 bits
-# (radiant's EXR goes through oiiotool the same way). radiant's sample count is raised from spp/4
-# in steps of spp/16 until its error is no larger than the tutorial's; then both are timed in
+# (radiant's EXR goes through oiiotool the same way). radiant's sample count is raised from spp/16
+# in steps of spp/16 until its error is no larger than the tutorial's, then found to the sample
+# within that last step; then both are timed in
 # alternating runs, with the tutorial also on radiant's watertight Embree kernel
 # (embree_cornell_common.sh); each run records the load and its CPU share (quiet_machine.sh).
 #
 # Usage: bench/embree_cornell_noise.sh [--size 512] [--spp 64] [--reference-spp 1024] [--repeats 5]
 #                                      [--threads 2] [--max-load 0.5]
 #                                      [--scene cornell.scene|cornell.gltf|cornell-lambertian.gltf]
-# (--scene: radiant's file for the box, as in bench/embree_cornell.sh.)
+#                                      [--radiant-flags "--indirect-paths 4"]
+# (--scene: radiant's file for the box, as in bench/embree_cornell.sh. --radiant-flags: flags of
+# the renders measured and timed, not of radiant's references, which stay plain path tracing.)
 # Needs: embree-tools (pathtracer), openimageio-tools (oiiotool; scripts/setup.sh installs it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -32,6 +35,7 @@ while (($#)); do
     --repeats) repeats=$2; shift 2 ;;
     --threads) threads=$2; shift 2 ;;
     --scene) radiant_scene=$2; shift 2 ;;
+    --radiant-flags) measured_flags=$2; shift 2 ;;
     *) echo "unknown option $1" >&2; exit 2 ;;
   esac
 done
@@ -43,9 +47,9 @@ source bench/embree_cornell_common.sh
 source bench/quiet_machine.sh
 source bench/equal_error.sh
 
-# radiant_ppm SPP OUT.ppm [SEED]: radiant's linear render written as the tutorial writes its own.
+# radiant_ppm SPP OUT.ppm [SEED [FLAGS]]: radiant's linear render written as the tutorial writes its own.
 radiant_ppm() {
-  radiant_seed=${3:-0} radiant_render "$size" "$1" "$work/radiant.exr"
+  radiant_seed=${3:-0} radiant_flags=${4:-} radiant_render "$size" "$1" "$work/radiant.exr"
   oiiotool "$work/radiant.exr" --clamp:min=0:max=1 -d uint8 -o "$2"
 }
 
@@ -60,17 +64,29 @@ embree_render "$size" "$spp" "$work/embree.ppm"
 embree_error=$(nested_own_error "$(rms_error "$work/embree.ppm" "$work/embree_reference.ppm")" "$spp" "$reference_spp")
 embree_render_robust "$size" "$spp" "$work/embree_robust.ppm"
 robust_error=$(nested_own_error "$(rms_error "$work/embree_robust.ppm" "$work/embree_reference.ppm")" "$spp" "$reference_spp")
-step=$((spp / 16 > 0 ? spp / 16 : 1))
 errors_table=""
-equal_spp=""
-for ((n = (spp / 4 / step > 0 ? spp / 4 / step : 1) * step; n <= 4 * spp; n += step)); do
-  radiant_ppm "$n" "$work/radiant.ppm"
+# reaches_tutorial_error N: renders radiant at N spp, logs its error, and succeeds when the error
+# is no larger than the tutorial's.
+reaches_tutorial_error() {
+  radiant_ppm "$1" "$work/radiant.ppm" 0 "${measured_flags:-}"
+  local measured error
   measured=$(rms_error "$work/radiant.ppm" "$work/radiant_reference.ppm")
   error=$(own_error "$measured" "$radiant_reference_error")
-  errors_table+="| radiant | $n | $error (measured $measured) |"$'\n'
-  if awk -v a="$error" -v b="$embree_error" 'BEGIN {exit !(a <= b)}'; then equal_spp=$n; break; fi
+  errors_table+="| radiant | $1 | $error (measured $measured) |"$'\n'
+  awk -v a="$error" -v b="$embree_error" 'BEGIN {exit !(a <= b)}'
+}
+# Coarse steps of spp/16 first, then one sample at a time inside the last step: the least count
+# that reaches the tutorial's error. Stopping at the coarse step would time radiant at up to
+# spp/16 - 1 samples more than it needs (44 where 42 reach it is 5% of its time).
+step=$((spp / 16 > 0 ? spp / 16 : 1))
+equal_spp=""
+for ((n = step; n <= 4 * spp; n += step)); do
+  if reaches_tutorial_error "$n"; then equal_spp=$n; break; fi
 done
 [[ -n $equal_spp ]] || { echo "radiant did not reach the tutorial's error within $((4 * spp)) spp" >&2; exit 1; }
+for ((n = equal_spp - step + 1; n < equal_spp; n++)); do
+  ((n > 0)) && reaches_tutorial_error "$n" && { equal_spp=$n; break; }
+done
 
 embree_times=() robust_times=() radiant_times=() ratios=() robust_ratios=() log=""
 for ((i = 0; i < repeats; i++)); do
@@ -78,7 +94,8 @@ for ((i = 0; i < repeats; i++)); do
   timed_run robust embree_render_robust "$size" "$spp" "$work/embree_robust.ppm"; b=$timed_seconds b_note=$timed_note
   # Each writes its own 8-bit image, as bench/embree_cornell.sh times them: the tutorial a PPM,
   # radiant a PNG (the EXR above is only for measuring the error in linear values).
-  timed_run radiant radiant_render "$size" "$equal_spp" "$work/radiant.png"; r=$timed_seconds r_note=$timed_note
+  radiant_flags=${measured_flags:-} timed_run radiant radiant_render "$size" "$equal_spp" "$work/radiant.png"
+  r=$timed_seconds r_note=$timed_note
   embree_times+=("$e") robust_times+=("$b") radiant_times+=("$r")
   ratios+=("$(echo "$r / $e" | bc -l)") robust_ratios+=("$(echo "$r / $b" | bc -l)")
   log+="| $((i + 1)) | $e ($e_note) | $b ($b_note) | $r ($r_note) |"$'\n'
@@ -93,7 +110,7 @@ echo "| Embree tutorial pathtracer | $spp | $embree_error |"
 echo "| Embree tutorial pathtracer, radiant's watertight kernel | $spp | $robust_error |"
 printf '%s' "$errors_table"
 echo
-echo "equal noise: radiant at $equal_spp spp, tutorial at $spp spp"
+echo "equal noise: radiant at $equal_spp spp${measured_flags:+ ($measured_flags)}, tutorial at $spp spp"
 echo "| run | tutorial s (load, CPU share) | tutorial, watertight kernel s | radiant s |"
 echo "|---|---|---|---|"
 printf '%s' "$log"
