@@ -20,8 +20,8 @@
 #                                      [--threads 2] [--max-load 0.5]
 #                                      [--scene cornell.scene|cornell.gltf|cornell-lambertian.gltf]
 #                                      [--radiant-flags "--indirect-paths 4"]
-# (--scene: radiant's file for the box, as in bench/embree_cornell.sh. --radiant-flags: flags of
-# the renders measured and timed, not of radiant's references, which stay plain path tracing.)
+# (--scene: radiant's file for the box, as in bench/embree_cornell.sh. --radiant-flags: radiant is
+# also measured and timed with these flags, beside its plain renders; its references stay plain.)
 # Needs: embree-tools (pathtracer), openimageio-tools (oiiotool; scripts/setup.sh installs it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -65,40 +65,52 @@ embree_error=$(nested_own_error "$(rms_error "$work/embree.ppm" "$work/embree_re
 embree_render_robust "$size" "$spp" "$work/embree_robust.ppm"
 robust_error=$(nested_own_error "$(rms_error "$work/embree_robust.ppm" "$work/embree_reference.ppm")" "$spp" "$reference_spp")
 errors_table=""
-# reaches_tutorial_error N: renders radiant at N spp, logs its error, and succeeds when the error
-# is no larger than the tutorial's.
+# reaches_tutorial_error N [FLAGS]: renders radiant at N spp, logs its error, and succeeds when
+# the error is no larger than the tutorial's.
 reaches_tutorial_error() {
-  radiant_ppm "$1" "$work/radiant.ppm" 0 "${measured_flags:-}"
+  radiant_ppm "$1" "$work/radiant.ppm" 0 "${2:-}"
   local measured error
   measured=$(rms_error "$work/radiant.ppm" "$work/radiant_reference.ppm")
   error=$(own_error "$measured" "$radiant_reference_error")
-  errors_table+="| radiant | $1 | $error (measured $measured) |"$'\n'
+  errors_table+="| radiant${2:+ $2} | $1 | $error (measured $measured) |"$'\n'
   awk -v a="$error" -v b="$embree_error" 'BEGIN {exit !(a <= b)}'
 }
-# Coarse steps of spp/16 first, then one sample at a time inside the last step: the least count
-# that reaches the tutorial's error. Stopping at the coarse step would time radiant at up to
-# spp/16 - 1 samples more than it needs (44 where 42 reach it is 5% of its time).
-step=$((spp / 16 > 0 ? spp / 16 : 1))
-equal_spp=""
-for ((n = step; n <= 4 * spp; n += step)); do
-  if reaches_tutorial_error "$n"; then equal_spp=$n; break; fi
-done
-[[ -n $equal_spp ]] || { echo "radiant did not reach the tutorial's error within $((4 * spp)) spp" >&2; exit 1; }
-for ((n = equal_spp - step + 1; n < equal_spp; n++)); do
-  ((n > 0)) && reaches_tutorial_error "$n" && { equal_spp=$n; break; }
-done
+# equal_spp_for FLAGS: the least sample count at which radiant reaches the tutorial's error, in
+# $found_spp. Coarse steps of spp/16 first, then one sample at a time inside the last step:
+# stopping at the coarse step would time radiant at up to spp/16 - 1 samples more than it needs
+# (44 where 42 reach it is 5% of its time).
+equal_spp_for() {
+  local step=$((spp / 16 > 0 ? spp / 16 : 1)) n
+  found_spp=""
+  for ((n = step; n <= 4 * spp; n += step)); do
+    if reaches_tutorial_error "$n" "$1"; then found_spp=$n; break; fi
+  done
+  [[ -n $found_spp ]] || { echo "radiant${1:+ $1} did not reach the tutorial's error within $((4 * spp)) spp" >&2; exit 1; }
+  for ((n = found_spp - step + 1; n < found_spp; n++)); do
+    ((n > 0)) && reaches_tutorial_error "$n" "$1" && { found_spp=$n; break; }
+  done
+}
+equal_spp_for ""
+equal_spp=$found_spp
+if [[ -n ${measured_flags:-} ]]; then equal_spp_for "$measured_flags"; flagged_spp=$found_spp; fi
 
 embree_times=() robust_times=() radiant_times=() ratios=() robust_ratios=() log=""
+flagged_times=() flagged_ratios=()
 for ((i = 0; i < repeats; i++)); do
   timed_run tutorial embree_render "$size" "$spp" "$work/embree.ppm"; e=$timed_seconds e_note=$timed_note
   timed_run robust embree_render_robust "$size" "$spp" "$work/embree_robust.ppm"; b=$timed_seconds b_note=$timed_note
   # Each writes its own 8-bit image, as bench/embree_cornell.sh times them: the tutorial a PPM,
   # radiant a PNG (the EXR above is only for measuring the error in linear values).
-  radiant_flags=${measured_flags:-} timed_run radiant radiant_render "$size" "$equal_spp" "$work/radiant.png"
-  r=$timed_seconds r_note=$timed_note
+  timed_run radiant radiant_render "$size" "$equal_spp" "$work/radiant.png"; r=$timed_seconds r_note=$timed_note
   embree_times+=("$e") robust_times+=("$b") radiant_times+=("$r")
   ratios+=("$(echo "$r / $e" | bc -l)") robust_ratios+=("$(echo "$r / $b" | bc -l)")
-  log+="| $((i + 1)) | $e ($e_note) | $b ($b_note) | $r ($r_note) |"$'\n'
+  row="| $((i + 1)) | $e ($e_note) | $b ($b_note) | $r ($r_note) |"
+  if [[ -n ${measured_flags:-} ]]; then
+    radiant_flags=$measured_flags timed_run flagged radiant_render "$size" "$flagged_spp" "$work/radiant.png"
+    flagged_times+=("$timed_seconds") flagged_ratios+=("$(echo "$timed_seconds / $e" | bc -l)")
+    row+=" $timed_seconds ($timed_note) |"
+  fi
+  log+="$row"$'\n'
 done
 
 echo "Cornell box (Embree tutorial scene), ${size}x${size}, path length 8, $threads threads;"
@@ -110,10 +122,14 @@ echo "| Embree tutorial pathtracer | $spp | $embree_error |"
 echo "| Embree tutorial pathtracer, radiant's watertight kernel | $spp | $robust_error |"
 printf '%s' "$errors_table"
 echo
-echo "equal noise: radiant at $equal_spp spp${measured_flags:+ ($measured_flags)}, tutorial at $spp spp"
-echo "| run | tutorial s (load, CPU share) | tutorial, watertight kernel s | radiant s |"
-echo "|---|---|---|---|"
+echo "equal noise: radiant at $equal_spp spp${measured_flags:+, with $measured_flags at $flagged_spp spp}, tutorial at $spp spp"
+echo "| run | tutorial s (load, CPU share) | tutorial, watertight kernel s | radiant s |${measured_flags:+ radiant $measured_flags s |}"
+echo "|---|---|---|---|${measured_flags:+---|}"
 printf '%s' "$log"
 echo "median wall time: tutorial $(median "${embree_times[@]}") s, watertight $(median "${robust_times[@]}") s, radiant $(median "${radiant_times[@]}") s"
 summarize_ratios "time ratio radiant / Embree tutorial at equal noise" "${ratios[@]}"
 summarize_ratios "time ratio radiant / Embree tutorial on the same watertight kernel at equal noise" "${robust_ratios[@]}"
+if [[ -n ${measured_flags:-} ]]; then
+  echo "median wall time, radiant $measured_flags: $(median "${flagged_times[@]}") s"
+  summarize_ratios "time ratio radiant $measured_flags / Embree tutorial at equal noise" "${flagged_ratios[@]}"
+fi
