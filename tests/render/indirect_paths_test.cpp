@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "load_scene.h"
 #include "render/settings_hash.h"
 #include "support/scene_builders.h"
 #include "support/test_support.h"
@@ -92,6 +93,16 @@ TEST_CASE("indirect paths: sub-paths sample bounces of their own and converge to
   CHECK(split_error < 0.7 * single_error);
   // ...nearly as much as four times the camera samples, whose bounces they share.
   CHECK(split_error < 1.25 * equal_error);
+}
+
+TEST_CASE("indirect paths: with an area light, MIS between the one light sample and the sub-paths' bounces") {
+  // The first sub-path's light sample and every sub-path's bounce that hits the lamp (each 1/4)
+  // are weighed against each other: the box must stay as bright as with one path (the lamp's
+  // edges, seen directly, are most of the mean's noise: 32 camera samples).
+  SceneDesc scene = load_scene(source_path("assets/cornell.gltf").string());
+  RenderOptions reference = small_render(256, 1, 8), split = small_render(32, 4, 8);
+  double expected = mean_luminance(render_scene(scene, reference).film);
+  CHECK(std::abs(mean_luminance(render_scene(scene, split).film) / expected - 1) < 0.015);
 }
 
 TEST_CASE("indirect paths: a render with sub-paths is another render to merge and to Whitted") {
