@@ -217,6 +217,21 @@ struct PathState {
   int channel;  // the colour channel the path carries after a dispersive surface, or -1
 };
 
+// A camera sample's first vertex as its first sub-path shaded it, for the other sub-paths
+// (--indirect-paths): they see the same hit of the same ray with the same numbers, so decoding
+// it and building its BSDF again would give the same values. Valid for `owner`'s sub-paths: the
+// first clears it before it shades its vertex (again after each see-through step, which all of
+// them take alike) and fills it after. The batch shares it (one per thread, in its workspace);
+// run(), the reference, does not.
+struct SharedFirstVertex {
+  const SampleContext* owner = nullptr;
+  SurfaceHit hit;
+  const SurfaceMaterial* material = nullptr;  // the scene's, or `resolved`
+  SurfaceMaterial resolved;  // a textured material's copy: any other path's vertex reuses the scratch's
+  HitShading shading;
+  std::optional<Bsdf> bsdf;
+};
+
 // Materials resolved at one vertex (one per thread, reused: they are large).
 struct VertexScratch {
   SurfaceMaterial resolved;   // the material at the hit, when textured
@@ -228,8 +243,11 @@ struct PathVariant {
   // The path's vertex at `id`, the hit of path.ray: adds what it sees, takes a light sample
   // (its shadow ray left in `light` when light.traces) and sets the next ray. Returns whether
   // the path goes on along path.ray. `drawn`, when given, holds random numbers drawn ahead.
+  // With `SharesFirstVertex` a camera sample's sub-paths share its first vertex's shading through
+  // `shared` (ctx.split > 1); compiled apart so that one path per camera sample pays nothing.
+  template <bool SharesFirstVertex>
   [[gnu::always_inline]] static bool advance(const RenderContext& ctx, PathState& path, const HitId& id,
-                                             VertexDraws* drawn, VertexScratch& scratch,
+                                             VertexDraws* drawn, VertexScratch& scratch, SharedFirstVertex* shared,
                                              LightSampleResult& light, RayCounts& counts) {
     const LightTable& lights = *ctx.lights;
     int depth = path.depth;
@@ -260,6 +278,11 @@ struct PathVariant {
         radiance += throughput * background * weight;
       }
       return false;
+    }
+    if (SharesFirstVertex && depth == 0) {
+      if (!path.gathers_first_vertex && shared->owner == path.sample)
+        return scatter_shared(ctx, path, *shared, drawn, light, counts);
+      if (path.gathers_first_vertex) shared->owner = nullptr;
     }
     SurfaceHit hit = make_surface_hit(*ctx.accel, ray, id);
     const SurfaceMaterial& m = material_at<E>(ctx, id, hit, scratch.resolved, texture_footprint_scale(sample.index));
@@ -302,6 +325,39 @@ struct PathVariant {
                                                       path.channel, throughput, scratch.dispersed),
                                   normal, f.wo, anisotropy_tangent(hit, m, normal))
                            : bsdf_at<E>(ctx, hit, m, normal, f.wo);
+    // A dispersive first vertex changes each sub-path's throughput and channel: not shared.
+    if (SharesFirstVertex && depth == 0 && path.gathers_first_vertex && !dispersive)
+      share_first_vertex(path, hit, m, f, bsdf, scratch, *shared);
+    return scatter(ctx, path, hit, m, f, bsdf, drawn, light, counts);
+  }
+
+  static void share_first_vertex(const PathState& path, const SurfaceHit& hit, const SurfaceMaterial& m,
+                                 const HitShading& f, const Bsdf& bsdf, const VertexScratch& scratch,
+                                 SharedFirstVertex& shared) {
+    shared.hit = hit;
+    shared.material = &m;
+    if (&m == &scratch.resolved) shared.material = &(shared.resolved = m);
+    shared.shading = f;
+    shared.bsdf = bsdf;
+    shared.owner = path.sample;
+  }
+  // A sub-path at its camera sample's shared first vertex. A function of its own, so that the
+  // batch's loop inlines one copy of scatter for both.
+  [[gnu::noinline]] static bool scatter_shared(const RenderContext& ctx, PathState& path,
+                                               const SharedFirstVertex& shared, VertexDraws* drawn,
+                                               LightSampleResult& light, RayCounts& counts) {
+    return scatter(ctx, path, shared.hit, *shared.material, shared.shading, *shared.bsdf, drawn, light, counts);
+  }
+
+  // The rest of a vertex once its hit is shaded: the bounce drawn, the light sample taken (by
+  // the path that gathers this vertex's light) and the next ray set.
+  [[gnu::always_inline]] static bool scatter(const RenderContext& ctx, PathState& path, const SurfaceHit& hit,
+                                             const SurfaceMaterial& m, const HitShading& f, const Bsdf& bsdf,
+                                             VertexDraws* drawn, LightSampleResult& light, RayCounts& counts) {
+    int depth = path.depth;
+    const SampleContext& sample = depth == 0 ? *path.sample : path.own;
+    color3& throughput = path.throughput;
+    bool gathers = depth > 0 || path.gathers_first_vertex;
     // The next direction is drawn before the light sample, which does not depend on it: its
     // chain of dependent arithmetic (sampler, warp) then overlaps the shadow ray's traversal
     // in the CPU instead of stalling the next ray. Dimensions are fixed, so the order changes
@@ -320,7 +376,7 @@ struct PathVariant {
         light.unblocked = throughput * light.unblocked;
         light.blocked = throughput * light.blocked;
       } else {
-        radiance += throughput * light.unblocked;
+        path.radiance += throughput * light.unblocked;
       }
     }
     if (!scattered || is_black(scattered->weight)) return false;
@@ -387,8 +443,8 @@ struct PathVariant {
     path.max_depth = ctx.max_depth;
   }
 
-  // One path at a time (its sub-paths one after another, summed in order): the reference the
-  // batch must match.
+  // One path at a time (its sub-paths one after another, summed in order, each shading the first
+  // vertex itself): the reference the batch must match.
   static color3 run(const RenderContext& ctx, const Ray& camera_ray, const SampleContext& sample, RayCounts& counts,
                     FirstHit* first_hit, const HitId* camera_hit) {
     ++counts.camera;
@@ -401,7 +457,7 @@ struct PathVariant {
       start(path, ctx, camera_ray, sample, sub_path, first_hit);
       HitId id = first;
       for (;;) {
-        bool goes_on = advance(ctx, path, id, nullptr, scratch, light, counts);
+        bool goes_on = advance<false>(ctx, path, id, nullptr, scratch, nullptr, light, counts);
         if (light.traces) path.radiance += is_occluded(*ctx.accel, light.shadow_ray) ? light.blocked : light.unblocked;
         if (!goes_on) break;
         ++(counts.*path.ray_kind);
@@ -422,6 +478,7 @@ struct PathVariant {
     bool occluded[max_batch_paths];
     int live[max_batch_paths], shadowed[max_batch_paths];
     VertexScratch scratch;
+    SharedFirstVertex first_vertex;  // with sub-paths
     // A stage's draws (draw_ahead): the Sobol lanes, the directions' cosine warps, each live
     // path's values, and whether the last stage's BSDFs chose lobes (then this one draws their
     // choices ahead too). A batch's first stage goes by the previous batch's first stage: the
@@ -437,7 +494,7 @@ struct PathVariant {
   // of lanes per dimension: those its scene can use (a light point only with area or
   // environment lights, a light choice only with one to make, roulette once a path can reach
   // its start depth). Other samplers than Sobol draw as run() does.
-  static void draw_ahead(const RenderContext& ctx, BatchWorkspace& w, int live_count) {
+  [[gnu::always_inline]] static void draw_ahead(const RenderContext& ctx, BatchWorkspace& w, int live_count) {
     const LightTable& lights = *ctx.lights;
     const PathState* paths = w.paths;
     const int* live = w.live;
@@ -496,18 +553,24 @@ struct PathVariant {
   // samples at a time as fill a batch with theirs.
   static void run_batch(const RenderContext& ctx, BatchPath* batch, int count, RayCounts& counts) {
     int camera_samples = max_batch_paths / ctx.split;
-    for (int first = 0; first < count; first += camera_samples)
-      run_sub_paths(ctx, batch + first, std::min(camera_samples, count - first), counts);
+    for (int first = 0; first < count; first += camera_samples) {
+      int samples = std::min(camera_samples, count - first);
+      if (ctx.split > 1)
+        run_sub_paths<true>(ctx, batch + first, samples, counts);
+      else
+        run_sub_paths<false>(ctx, batch + first, samples, counts);
+    }
   }
 
   // The sub-paths of `count` camera samples (at most max_batch_paths in all), advanced together.
+  template <bool SharesFirstVertex>
   static void run_sub_paths(const RenderContext& ctx, BatchPath* batch, int count, RayCounts& counts) {
     // One per thread, held by a static object rather than in TLS: a thread's static TLS comes out
     // of its stack, too small for this, and a heap block reached only from TLS looks leaked to
     // LeakSanitizer, which CI runs without scanning TLS (.ci/run).
     static tbb::enumerable_thread_specific<BatchWorkspace> per_thread;
     BatchWorkspace& workspace = per_thread.local();
-    auto& [paths, lights, rays, hits, occluded, live, shadowed, scratch, lanes, cosine_x, cosine_y, cosine_z, drawn,
+    auto& [paths, lights, rays, hits, occluded, live, shadowed, scratch, first_vertex, lanes, cosine_x, cosine_y, cosine_z, drawn,
            lobe_choices, first_lobe_choices] = workspace;
     int split = ctx.split;
     int live_count = count * split;
@@ -526,7 +589,8 @@ struct PathVariant {
       draw_ahead(ctx, workspace, live_count);
       for (int k = 0; k < live_count; ++k) {
         int i = live[k];
-        bool goes_on = advance(ctx, paths[i], hits[k], &drawn[k], scratch, lights[i], counts);
+        bool goes_on = advance<SharesFirstVertex>(ctx, paths[i], hits[k], &drawn[k], scratch, &first_vertex,
+                                                  lights[i], counts);
         if (lights[i].traces) {
           rays[shadow_count] = &lights[i].shadow_ray;
           shadowed[shadow_count++] = i;
