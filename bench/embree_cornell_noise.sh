@@ -20,7 +20,9 @@
 #                                      [--threads 2] [--max-load 0.5]
 #                                      [--scene cornell.scene|cornell.gltf|cornell-lambertian.gltf]
 #                                      [--radiant-flags "--indirect-paths 4"]
-# (--scene: radiant's file for the box, as in bench/embree_cornell.sh. --radiant-flags: radiant is
+# (--scene: radiant's file for the box, as in bench/embree_cornell.sh; for the glTF path use
+# cornell-lambertian.gltf: cornell.gltf's coated materials make a darker, less noisy image than the
+# tutorial's, so reaching the tutorial's error there would flatter radiant. --radiant-flags: radiant is
 # also measured and timed with these flags, beside its plain renders; its references stay plain.)
 # Needs: embree-tools (pathtracer), openimageio-tools (oiiotool; scripts/setup.sh installs it).
 set -euo pipefail
@@ -87,8 +89,10 @@ equal_spp_for() {
   done
   [[ -n $found_spp ]] || { echo "radiant${1:+ $1} did not reach the tutorial's error within $((4 * spp)) spp" >&2; exit 1; }
   for ((n = found_spp - step + 1; n < found_spp; n++)); do
-    ((n > 0)) && reaches_tutorial_error "$n" "$1" && { found_spp=$n; break; }
+    if ((n > 0)) && reaches_tutorial_error "$n" "$1"; then found_spp=$n; break; fi
   done
+  # (An if, not a chain of &&: when no count inside the step reaches the error, the chain's
+  # failure was the loop's status, and `set -e` ended the script with the coarse count found.)
 }
 equal_spp_for ""
 equal_spp=$found_spp
