@@ -13,7 +13,9 @@
 # instructions (docs/performance.md, "How to measure an instruction count").
 #
 # Usage: bench/ab_pair.sh BINARY_A BINARY_B [--rounds 10] [--size 256] [--spp 32]
-#        [--scene cornell.scene|cornell.gltf|cornell-lambertian.gltf]
+#        [--scene cornell.scene|cornell.gltf|cornell-lambertian.gltf] [--file SCENE]
+# (--file: any scene file instead of the tutorial's box, rendered at --size x --size, e.g.
+# assets/many-lights.scene for the light BVH's descent.)
 # Needs: embree-tools (the tutorial's scene).
 set -euo pipefail
 (($# >= 2)) || { echo "usage: $0 BINARY_A BINARY_B [--rounds N] [--size N] [--spp N]" >&2; exit 2; }
@@ -27,6 +29,7 @@ while (($#)); do
     --size) size=$2; shift 2 ;;
     --spp) spp=$2; shift 2 ;;
     --scene) radiant_scene=$2; shift 2 ;;
+    --file) scene_file=$(realpath "$2"); shift 2 ;;
     *) echo "unknown option $1" >&2; exit 2 ;;
   esac
 done
@@ -39,7 +42,7 @@ source bench/quiet_machine.sh
 cpu_seconds() {
   local TIMEFORMAT=%U core=$1
   shift
-  { time taskset -c "$core" "$1" render "$work/${radiant_scene:-cornell.scene}" -o "$2.png" --width "$size" --height "$size" --spp "$spp" \
+  { time taskset -c "$core" "$1" render "${scene_file:-$work/${radiant_scene:-cornell.scene}}" -o "$2.png" --width "$size" --height "$size" --spp "$spp" \
       --max-depth 8 --mode path --threads "$threads" --quiet >/dev/null; } 2>"$2"
 }
 ratios=()
