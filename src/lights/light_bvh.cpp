@@ -159,13 +159,13 @@ void collapse_to_four_wide(const std::vector<BinaryNode>& binary, LightBvh& bvh)
 // How a node shares the choice among its lanes at (p, n): by the children's importance; where
 // the bounds rule all out, no light below can reach p and any choice is wasted (pbrt gives up
 // there), so by intensity, which keeps every light's probability a distribution. Lane k's share
-// of [0, total) is [prefix[k - 1], prefix[k]); its probability rated[k] / total. One function for
-// sampling and for the probability walk, so both agree. Inline: called, it kept p and n in memory
-// across the call and returned the shares through the stack, on every step of the descent
-// (2.7% of a many-lights render, thirtieth session).
+// of [0, total) is [start[k], start[k + 1]) (the last lane's ends at total); its probability
+// rated[k] / total. One function for sampling and for the probability walk, so both agree.
+// Inline: called, it kept p and n in memory across the call and returned the shares through the
+// stack, on every step of the descent (2.7% of a many-lights render, thirtieth session).
 struct LaneShares {
   float rated[4];
-  float prefix[3];  // rated[0], rated[0] + rated[1], ... + rated[2]
+  float start[4];  // 0, rated[0], rated[0] + rated[1], ... + rated[2]
   float total;      // 0 only for a node that holds no light
 };
 
@@ -179,11 +179,54 @@ struct LaneShares {
     low = shares.rated[0] + shares.rated[1], high = shares.rated[2] + shares.rated[3];
     shares.total = low + high;
   }
-  shares.prefix[0] = shares.rated[0], shares.prefix[1] = low, shares.prefix[2] = low + shares.rated[2];
+  shares.start[0] = 0, shares.start[1] = shares.rated[0], shares.start[2] = low, shares.start[3] = low + shares.rated[2];
   return shares;
 }
 
 double lane_probability(const LaneShares& shares, int lane) { return double(shares.rated[lane]) / shares.total; }
+
+// A descent under way: the node it is at, u rescaled into that node's share, and the product of
+// the choices so far.
+struct Descent {
+  int index;
+  double remaining, chosen;
+};
+
+enum class Step { down, leaf, failed };
+
+// One step of a descent at (p, n): the lane of the current node whose share holds `remaining`,
+// then down to it; at a leaf `slot` is set. The single and the interleaved descents both take
+// their steps here, so both choose the same light with the same probability, to the bit.
+[[gnu::always_inline]] inline Step descend(const LightBvh& bvh, vec3 p, vec3 n, Descent& d, int& slot) {
+  const LightBvhNode& node = bvh.nodes[size_t(d.index)];
+  LaneShares shares = lane_shares(node, p, n);
+  if (!(shares.total > 0)) return Step::failed;
+  // The lane whose share holds `remaining`, found without branches: the lane is as random as u,
+  // so a branch on it would be mispredicted a good part of the time, and the next node waits on
+  // it. Counting the shares that start at or below the target gives a lane whose rating is
+  // positive (a lane rated 0 starts where the next one does), except past the last rated lane,
+  // where empty lanes and rounding beyond the total land: there the last rated lane takes it.
+  // Only the next node waits on this: the divisions that rescale `remaining` and form the
+  // probability run beside the next node's rating.
+  double target = d.remaining * shares.total;
+  float t = float(target);
+  int lane = int(shares.start[1] <= t) + int(shares.start[2] <= t) + int(shares.start[3] <= t);
+  unsigned rated = unsigned(shares.rated[0] > 0) | unsigned(shares.rated[1] > 0) << 1 |
+                   unsigned(shares.rated[2] > 0) << 2 | unsigned(shares.rated[3] > 0) << 3;
+  int last_rated = 31 - __builtin_clz(rated | 1u);
+  lane = std::min(lane, last_rated);
+  if (!(shares.rated[lane] > 0)) return Step::failed;  // an infinite or NaN rating
+  double below = shares.start[lane];
+  d.chosen *= lane_probability(shares, lane);
+  d.remaining = std::clamp((target - below) / shares.rated[lane], 0.0, below_one);
+  int child = node.child[size_t(lane)];
+  if (child < 0) {
+    slot = ~child;
+    return Step::leaf;
+  }
+  d.index = child;
+  return Step::down;
+}
 
 }  // namespace
 
@@ -209,33 +252,44 @@ LightBvh build_light_bvh(std::vector<BoundedLight> lights, size_t slots) {
 
 bool sample_light_bvh(const LightBvh& bvh, vec3 p, vec3 n, float u, int& slot, float& probability) {
   if (bvh.empty()) return false;
-  double remaining = u, chosen = 1;
-  int index = 0;
+  Descent d{0, u, 1};
   for (;;) {
-    const LightBvhNode& node = bvh.nodes[size_t(index)];
-    LaneShares shares = lane_shares(node, p, n);
-    if (!(shares.total > 0)) return false;
-    // The lane whose share holds `remaining`, counted without branches (the lane decides the next
-    // node, so a mispredicted branch here would stall the whole descent); rounding past the last
-    // share lands in the last lane that has one. Only the next node waits on this: the division
-    // that rescales `remaining` and the probability run beside the next node's rating.
-    double target = remaining * shares.total;
-    float t = float(target);
-    int lane = int(shares.prefix[0] <= t) + int(shares.prefix[1] <= t) + int(shares.prefix[2] <= t);
-    while (lane > 0 && !(shares.rated[lane] > 0)) --lane;
-    if (!(shares.rated[lane] > 0)) return false;  // an infinite or NaN rating
-    double below = lane > 0 ? double(shares.prefix[lane - 1]) : 0.0;
-    chosen *= lane_probability(shares, lane);
-    remaining = std::clamp((target - below) / shares.rated[lane], 0.0, below_one);
-    int child = node.child[size_t(lane)];
-    if (child < 0) {
-      slot = ~child;
-      break;
-    }
-    index = child;
+    Step step = descend(bvh, p, n, d, slot);
+    if (step == Step::failed) return false;
+    if (step == Step::leaf) break;
   }
-  probability = float(chosen);
+  probability = float(d.chosen);
   return probability > 0;
+}
+
+void sample_light_bvh_many(const LightBvh& bvh, const vec3* p, const vec3* n, const float* u, int count, int* slot,
+                           float* probability) {
+  constexpr int width = 4;  // descents under way at once
+  for (int first = 0; first < count; first += width) {
+    int group = std::min(width, count - first);
+    Descent d[width];
+    bool going[width] = {};
+    for (int k = 0; k < group; ++k) {
+      d[k] = {0, u[first + k], 1};
+      going[k] = !bvh.empty();
+      probability[first + k] = 0;
+    }
+    // Each pass takes one step of every descent still going: the steps of different descents
+    // do not wait on each other, so the processor runs them side by side.
+    for (bool any = true; any;) {
+      any = false;
+      for (int k = 0; k < group; ++k) {
+        if (!going[k]) continue;
+        Step step = descend(bvh, p[first + k], n[first + k], d[k], slot[first + k]);
+        if (step == Step::down) {
+          any = true;
+          continue;
+        }
+        going[k] = false;
+        if (step == Step::leaf) probability[first + k] = float(d[k].chosen);
+      }
+    }
+  }
 }
 
 float light_bvh_probability(const LightBvh& bvh, vec3 p, vec3 n, int slot) {

@@ -52,6 +52,12 @@ LightBvh build_light_bvh(std::vector<BoundedLight> lights, size_t slots);
 // one at every point). False only for an empty tree.
 bool sample_light_bvh(const LightBvh& bvh, vec3 p, vec3 n, float u, int& slot, float& probability);
 
+// sample_light_bvh for `count` points at once (p[k], n[k], u[k]), with the same slots and
+// probabilities to the bit; probability[k] is 0 where none was chosen. The descents run
+// interleaved: each is a chain of dependent steps, and one's steps fill the others' waits.
+void sample_light_bvh_many(const LightBvh& bvh, const vec3* p, const vec3* n, const float* u, int count, int* slot,
+                           float* probability);
+
 // The probability that sample_light_bvh chooses table slot `slot` at (p, n), found by walking
 // from its leaf to the root; 0 for a slot outside the tree.
 float light_bvh_probability(const LightBvh& bvh, vec3 p, vec3 n, int slot);

@@ -15,6 +15,11 @@ struct LightChoice {
 bool choose_light_by_bvh(const LightTable& lights, vec3 p, vec3 n, float u, LightChoice& choice);
 float light_choice_probability_by_bvh(const LightTable& lights, vec3 p, vec3 n, size_t slot);
 
+// choose_light_by_bvh at `count` points at once (p[k], n[k], u[k]), the same choices to the bit;
+// found[k] is its return value. The tree's descents run interleaved (sample_light_bvh_many).
+void choose_lights_by_bvh_many(const LightTable& lights, const vec3* p, const vec3* n, const float* u, int count,
+                               LightChoice* choice, bool* found);
+
 // Whether choose_light draws a number (for drawing it ahead).
 inline bool light_choice_draws(const LightTable& lights) {
   return lights.sampler == LightSampler::bvh || lights.selection.size() > 1;

@@ -3,6 +3,9 @@
 // that matter at a point.
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <bit>
+#include <memory>
 #include <random>
 
 #include "lights/light_selection.h"
@@ -144,6 +147,44 @@ TEST_CASE("light BVH: sampled lights follow the choice probabilities (chi-square
     CHECK(failure == "");
     CHECK(p_value > corrected);
     CHECK(mismatched == 0);
+  }
+}
+
+TEST_CASE("light BVH: choices made together (interleaved descents) are the single choices, to the bit") {
+  SceneDesc scene = mixed_light_scene();
+  // With the sun and the sky at infinity (chosen before the tree), and the sun alone.
+  for (color3 environment : {color3{0.1f, 0.2f, 0.3f}, color3{0, 0, 0}}) {
+    LightTable lights = bvh_table(scene, environment);
+    // Random points, and points behind every one-sided lamp, where the choice falls back to
+    // intensity; a count that is no multiple of the groups the descents run in.
+    std::vector<ShadingPoint> points = random_points(997, 21);
+    for (int i = 0; i < 40; ++i) points.push_back({{-3 + 0.15f * float(i), 2.5f, 0.3f}, {0, 1, 0}});
+    std::mt19937 engine(5);
+    std::vector<vec3> p, n;
+    std::vector<float> u;
+    for (const ShadingPoint& s : points) {
+      p.push_back(s.p), n.push_back(s.n);
+      u.push_back(float(engine() >> 8) * 0x1p-24f);
+    }
+    u[3] = 0, u[4] = 0x1p-24f * float((1 << 24) - 1);  // both ends of [0, 1)
+    std::vector<LightChoice> together(points.size());
+    std::unique_ptr<bool[]> found(new bool[points.size()]);
+    choose_lights_by_bvh_many(lights, p.data(), n.data(), u.data(), int(points.size()), together.data(), found.get());
+    int chosen_at_infinity = 0, chosen_in_tree = 0;
+    for (size_t k = 0; k < points.size(); ++k) {
+      LightChoice alone;
+      bool found_alone = choose_light_by_bvh(lights, p[k], n[k], u[k], alone);
+      INFO("point ", k);
+      REQUIRE(found[k] == found_alone);
+      if (!found_alone) continue;
+      CHECK(together[k].slot == alone.slot);
+      CHECK(std::bit_cast<uint32_t>(together[k].probability) == std::bit_cast<uint32_t>(alone.probability));
+      bool at_infinity = std::find(lights.infinite_lights.begin(), lights.infinite_lights.end(), int(alone.slot)) !=
+                         lights.infinite_lights.end();
+      (at_infinity ? chosen_at_infinity : chosen_in_tree) += 1;
+    }
+    CHECK(chosen_in_tree > int(points.size()) / 2);  // most choices descend the tree
+    CHECK(chosen_at_infinity > 0);  // the sun (and the sky where there is one)
   }
 }
 
