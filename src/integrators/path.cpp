@@ -8,6 +8,7 @@
 #include "integrators/background.h"
 #include "integrators/naive.h"
 #include "integrators/hit_shading.h"
+#include "integrators/light_choice_point.h"
 #include "integrators/shadow.h"
 #include "lights/area_light.h"
 #include "lights/delta_light.h"
@@ -98,6 +99,12 @@ struct VertexDraws {
   float roulette;      // roulette, of the next vertex (the path's depth + 1; used from its start depth)
   uint32_t drawn = 0;  // the dimensions drawn: a bit (1 << VertexDimension) each
   bool lobe_choice_used = false;  // set by the vertex: whether its BSDF chose a lobe
+  // The light chosen ahead by the light BVH, for all of a stage's paths together
+  // (choose_lights_ahead): when `light_chosen`, the choice the vertex would make itself, made
+  // (`light_found`) or not.
+  bool light_chosen = false, light_found = false;
+  uint32_t light_slot;
+  float light_probability;
 
   bool has(VertexDimension d) const { return drawn & (1u << d); }
 };
@@ -107,9 +114,9 @@ struct VertexDraws {
 // copied, its ray would stall on store forwarding.
 template <uint32_t E>
 [[gnu::always_inline]] inline void sample_one_light(const RenderContext& ctx, const SurfaceHit& hit, const Bsdf& bsdf,
-                                                    const HitShading& f, const SampleContext& sample, int depth,
-                                                    const VertexDraws* drawn, RayCounts& counts,
-                                                    LightSampleResult& out) {
+                                                    const HitShading& f, const LightChoicePoint& here,
+                                                    const SampleContext& sample, int depth, const VertexDraws* drawn,
+                                                    RayCounts& counts, LightSampleResult& out) {
   out.traces = false;
   out.unblocked = {};
   const LightTable& lights = *ctx.lights;
@@ -122,7 +129,12 @@ template <uint32_t E>
   auto u_light_point = [&] {
     return drawn && drawn->has(light_point) ? drawn->light_point : sample_2d(sample, dimension(depth, light_point));
   };
-  if (!choose_light(lights, hit.position, f.normal, u_choice, choice)) return;
+  if (drawn && drawn->light_chosen) {
+    if (!drawn->light_found) return;
+    choice = {drawn->light_slot, drawn->light_probability};
+  } else if (!choose_light(lights, here.position, here.normal, u_choice, choice)) {
+    return;
+  }
   size_t index = choice.slot;
   float select_pdf = choice.probability;
 
@@ -211,6 +223,9 @@ struct PathState {
   bool specular_bounce;
   float previous_pdf;
   vec3 previous_position, previous_normal;
+  // Where the previous vertex chose its light; set by the light BVH's vertices only (power
+  // sampling's MIS reads it and ignores it, so it is set once, when the state is made).
+  LightChoicePoint previous_choice{};
   int depth, max_depth;
   int transparent_steps;
   int medium;   // the absorbing volume the path is inside (a material index), or -1
@@ -230,6 +245,15 @@ struct SharedFirstVertex {
   SurfaceMaterial resolved;  // a textured material's copy: any other path's vertex reuses the scratch's
   HitShading shading;
   std::optional<Bsdf> bsdf;
+};
+
+// The light choices a batch's stage makes together (PathVariant::choose_lights_ahead).
+struct LightChoiceQueue {
+  vec3 position[max_batch_paths], normal[max_batch_paths];
+  float u[max_batch_paths];
+  int draws[max_batch_paths];  // the live path's index in the stage (its VertexDraws)
+  LightChoice choice[max_batch_paths];
+  bool found[max_batch_paths];
 };
 
 // Materials resolved at one vertex (one per thread, reused: they are large).
@@ -270,7 +294,7 @@ struct PathVariant {
         // the effect on for a scene without one).
         if (LightSampling && !path.specular_bounce && lights.has_environment()) {
           float light_pdf =
-              light_choice_probability(lights, path.previous_position, path.previous_normal,
+              light_choice_probability(lights, path.previous_choice.position, path.previous_choice.normal,
                                        lights.environment_slot()) *
               environment_pdf(lights, path.previous_normal, normalize(ray.direction));
           weight = power_heuristic(path.previous_pdf, light_pdf);
@@ -279,9 +303,12 @@ struct PathVariant {
       }
       return false;
     }
+    // Only the light BVH rates lights by where they are seen from.
+    LightChoicePoint here{};
+    if (LightSampling && lights.sampler == LightSampler::bvh) here = light_choice_point(*ctx.accel, ray, id);
     if (SharesFirstVertex && depth == 0) {
       if (!path.gathers_first_vertex && shared->owner == path.sample)
-        return scatter_shared(ctx, path, *shared, drawn, light, counts);
+        return scatter_shared(ctx, path, *shared, here, drawn, light, counts);
       if (path.gathers_first_vertex) shared->owner = nullptr;
     }
     SurfaceHit hit = make_surface_hit(*ctx.accel, ray, id);
@@ -304,7 +331,8 @@ struct PathVariant {
         if (LightSampling && !path.specular_bounce && light_index >= 0) {
           const AreaLight& light = lights.area_lights[light_index - lights.delta_lights.size()];
           float light_pdf =
-              light_choice_probability(lights, path.previous_position, path.previous_normal, size_t(light_index)) *
+              light_choice_probability(lights, path.previous_choice.position, path.previous_choice.normal,
+                                       size_t(light_index)) *
               area_light_pdf(light, path.previous_position, hit.position, hit.geometric_normal);
           weight = power_heuristic(path.previous_pdf, light_pdf);
         }
@@ -328,7 +356,7 @@ struct PathVariant {
     // A dispersive first vertex changes each sub-path's throughput and channel: not shared.
     if (SharesFirstVertex && depth == 0 && path.gathers_first_vertex && !dispersive)
       share_first_vertex(path, hit, m, f, bsdf, scratch, *shared);
-    return scatter(ctx, path, hit, m, f, bsdf, drawn, light, counts);
+    return scatter(ctx, path, hit, m, f, bsdf, here, drawn, light, counts);
   }
 
   static void share_first_vertex(const PathState& path, const SurfaceHit& hit, const SurfaceMaterial& m,
@@ -344,16 +372,17 @@ struct PathVariant {
   // A sub-path at its camera sample's shared first vertex. A function of its own, so that the
   // batch's loop inlines one copy of scatter for both.
   [[gnu::noinline]] static bool scatter_shared(const RenderContext& ctx, PathState& path,
-                                               const SharedFirstVertex& shared, VertexDraws* drawn,
-                                               LightSampleResult& light, RayCounts& counts) {
-    return scatter(ctx, path, shared.hit, *shared.material, shared.shading, *shared.bsdf, drawn, light, counts);
+                                               const SharedFirstVertex& shared, const LightChoicePoint& here,
+                                               VertexDraws* drawn, LightSampleResult& light, RayCounts& counts) {
+    return scatter(ctx, path, shared.hit, *shared.material, shared.shading, *shared.bsdf, here, drawn, light, counts);
   }
 
   // The rest of a vertex once its hit is shaded: the bounce drawn, the light sample taken (by
   // the path that gathers this vertex's light) and the next ray set.
   [[gnu::always_inline]] static bool scatter(const RenderContext& ctx, PathState& path, const SurfaceHit& hit,
                                              const SurfaceMaterial& m, const HitShading& f, const Bsdf& bsdf,
-                                             VertexDraws* drawn, LightSampleResult& light, RayCounts& counts) {
+                                             const LightChoicePoint& here, VertexDraws* drawn,
+                                             LightSampleResult& light, RayCounts& counts) {
     int depth = path.depth;
     const SampleContext& sample = depth == 0 ? *path.sample : path.own;
     color3& throughput = path.throughput;
@@ -371,7 +400,7 @@ struct PathVariant {
                          ? bsdf.sample(u_lobe, drawn->direction, drawn->cosine)
                          : bsdf.sample(u_lobe, sample_2d(path.own, dimension(depth, bsdf_direction)));
     if (LightSampling && gathers && !is_pure_delta(m)) {
-      sample_one_light<E>(ctx, hit, bsdf, f, sample, depth, drawn, counts, light);
+      sample_one_light<E>(ctx, hit, bsdf, f, here, sample, depth, drawn, counts, light);
       if (light.traces) {
         light.unblocked = throughput * light.unblocked;
         light.blocked = throughput * light.blocked;
@@ -402,6 +431,7 @@ struct PathVariant {
     path.previous_pdf = scattered->pdf;
     path.previous_position = hit.position;
     path.previous_normal = f.normal;
+    if (LightSampling && ctx.lights->sampler == LightSampler::bvh) path.previous_choice = here;
     spawn_ray(path.ray, hit, scattered->wi);
     path.depth = ++depth;
     if (depth >= roulette_start_depth) {
@@ -488,6 +518,9 @@ struct PathVariant {
     float cosine_x[max_batch_paths], cosine_y[max_batch_paths], cosine_z[max_batch_paths];
     VertexDraws drawn[max_batch_paths];
     bool lobe_choices = true, first_lobe_choices = true;
+    // A stage's light choices by the BVH (choose_lights_ahead): the points, normals and numbers
+    // of the paths that take a light sample, which live path each is, and the choices.
+    LightChoiceQueue choices;
   };
 
   // Every live path's random numbers for the vertex it is at, drawn together in SIMD, a group
@@ -536,6 +569,7 @@ struct PathVariant {
       VertexDraws& v = w.drawn[k];
       v.drawn = wants;
       v.lobe_choice_used = false;
+      v.light_chosen = false;
       if (direction >= 0) {
         v.direction = {lanes.x[direction + k], lanes.y[direction + k]};
         v.cosine = {w.cosine_x[k], w.cosine_y[k], w.cosine_z[k]};
@@ -544,6 +578,33 @@ struct PathVariant {
       if (choice >= 0) v.light_choice = lanes.x[choice + k];
       if (lobe >= 0) v.lobe_choice = lanes.x[lobe + k];
       if (survival >= 0) v.roulette = lanes.x[survival + k];
+    }
+  }
+
+  // The light every live path's vertex would choose by the light BVH, chosen for all of them
+  // together into its draws: the descents then run side by side, one's steps filling the others'
+  // waits, where one path at a time each waits on its own chain (docs/lights.md). Only the paths
+  // that will take a light sample there, as far as is known before their hits are decoded (a
+  // surface that turns out to be a mirror or see-through wastes its choice).
+  [[gnu::noinline]] static void choose_lights_ahead(const RenderContext& ctx, BatchWorkspace& w, int live_count) {
+    LightChoiceQueue& q = w.choices;
+    int queued = 0;
+    for (int k = 0; k < live_count; ++k) {
+      const PathState& path = w.paths[w.live[k]];
+      const HitId& id = w.hits[k];
+      bool gathers = path.depth > 0 || path.gathers_first_vertex;
+      if (!id.valid() || !gathers || path.depth >= path.max_depth || !w.drawn[k].has(light_choice)) continue;
+      LightChoicePoint here = light_choice_point(*ctx.accel, path.ray, id);
+      q.position[queued] = here.position, q.normal[queued] = here.normal, q.u[queued] = w.drawn[k].light_choice;
+      q.draws[queued++] = k;
+    }
+    choose_lights_by_bvh_many(*ctx.lights, q.position, q.normal, q.u, queued, q.choice, q.found);
+    for (int j = 0; j < queued; ++j) {
+      VertexDraws& v = w.drawn[q.draws[j]];
+      v.light_slot = uint32_t(q.choice[j].slot);
+      v.light_probability = q.choice[j].probability;
+      v.light_found = q.found[j];
+      v.light_chosen = true;
     }
   }
 
@@ -571,7 +632,7 @@ struct PathVariant {
     static tbb::enumerable_thread_specific<BatchWorkspace> per_thread;
     BatchWorkspace& workspace = per_thread.local();
     auto& [paths, lights, rays, hits, occluded, live, shadowed, scratch, first_vertex, lanes, cosine_x, cosine_y, cosine_z, drawn,
-           lobe_choices, first_lobe_choices] = workspace;
+           lobe_choices, first_lobe_choices, light_choices] = workspace;
     int split = ctx.split;
     int live_count = count * split;
     for (int c = 0; c < count; ++c) {
@@ -587,6 +648,7 @@ struct PathVariant {
     for (bool first_stage = true; live_count > 0; first_stage = false) {
       int shadow_count = 0, next_count = 0;
       draw_ahead(ctx, workspace, live_count);
+      if (LightSampling && ctx.lights->sampler == LightSampler::bvh) choose_lights_ahead(ctx, workspace, live_count);
       for (int k = 0; k < live_count; ++k) {
         int i = live[k];
         bool goes_on = advance<SharesFirstVertex>(ctx, paths[i], hits[k], &drawn[k], scratch, &first_vertex,
