@@ -21,12 +21,15 @@
 #
 # Usage: bench/many_lights.sh [--width 320] [--height 240] [--seconds 10] [--reference-spp 4096]
 #                             [--equal-spp 16] [--repeats 3] [--threads 2] [--max-load 0.5]
+#                             [--binary build/radiant]
+# (--binary: another build of radiant, e.g. a copy of the session's starting build, to measure it
+# the same way in the same session; without it build/radiant is brought up to date first.)
 # A smoke test that it works (seconds, not a measurement):
 #   bench/many_lights.sh --width 32 --height 24 --seconds 0.5 --reference-spp 64 --repeats 1 --max-load 99
 # Needs: openimageio-tools (oiiotool; scripts/setup.sh installs it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-width=320 height=240 seconds=10 reference_spp=4096 equal_spp=16 repeats=3 threads=2 max_load=0.5
+width=320 height=240 seconds=10 reference_spp=4096 equal_spp=16 repeats=3 threads=2 max_load=0.5 binary=
 while (($#)); do
   case $1 in
     --width) width=$2; shift 2 ;;
@@ -37,11 +40,15 @@ while (($#)); do
     --repeats) repeats=$2; shift 2 ;;
     --threads) threads=$2; shift 2 ;;
     --max-load) max_load=$2; shift 2 ;;
+    --binary) binary=$2; shift 2 ;;
     *) echo "unknown option $1" >&2; exit 2 ;;
   esac
 done
 command -v oiiotool >/dev/null || { echo "install openimageio-tools for oiiotool" >&2; exit 1; }
-cmake --build build --target radiant -j2 >/dev/null
+if [[ -z $binary ]]; then
+  cmake --build build --target radiant -j2 >/dev/null
+  binary=build/radiant
+fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 source bench/quiet_machine.sh
@@ -50,7 +57,7 @@ scene=assets/many-lights.scene
 
 # render SAMPLER SEED OUT.exr [FLAGS...]: the scene as the file sets it (path, depth 3), at our size.
 render() {
-  build/radiant render "$scene" -o "$3" --width "$width" --height "$height" --light-sampler "$1" --seed "$2" \
+  "$binary" render "$scene" -o "$3" --width "$width" --height "$height" --light-sampler "$1" --seed "$2" \
     --threads "$threads" --quiet "${@:4}"
 }
 
