@@ -21,15 +21,23 @@
 #
 # Usage: bench/many_lights.sh [--width 320] [--height 240] [--seconds 10] [--reference-spp 4096]
 #                             [--equal-spp 16] [--repeats 3] [--threads 2] [--max-load 0.5]
-#                             [--binary build/radiant]
-# (--binary: another build of radiant, e.g. a copy of the session's starting build, to measure it
+#                             [--binary build/radiant] [--paired] [--references DIR]
+# (--paired: each round renders both samplers at once, one thread each, each pinned to its own core
+# and the cores swapped every round, as bench/ab_pair.sh does, so that both see the same machine:
+# on a virtual machine whose speed drifts between one 10-s render and the next, alternating runs
+# measure the drift as much as the samplers. Use an even --repeats, so each sampler has each core
+# equally often.
+# --references: keep the two references in DIR and reuse them when they are there for this size
+# and sample count, so that two builds are measured against the same ones (and the 4096-spp
+# renders are made once).
+# --binary: another build of radiant, e.g. a copy of the session's starting build, to measure it
 # the same way in the same session; without it build/radiant is brought up to date first.)
 # A smoke test that it works (seconds, not a measurement):
 #   bench/many_lights.sh --width 32 --height 24 --seconds 0.5 --reference-spp 64 --repeats 1 --max-load 99
 # Needs: openimageio-tools (oiiotool; scripts/setup.sh installs it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-width=320 height=240 seconds=10 reference_spp=4096 equal_spp=16 repeats=3 threads=2 max_load=0.5 binary=
+width=320 height=240 seconds=10 reference_spp=4096 equal_spp=16 repeats=3 threads=2 max_load=0.5 binary= paired=0 references=
 while (($#)); do
   case $1 in
     --width) width=$2; shift 2 ;;
@@ -41,6 +49,8 @@ while (($#)); do
     --threads) threads=$2; shift 2 ;;
     --max-load) max_load=$2; shift 2 ;;
     --binary) binary=$2; shift 2 ;;
+    --paired) paired=1; shift ;;
+    --references) references=$2; shift 2 ;;
     *) echo "unknown option $1" >&2; exit 2 ;;
   esac
 done
@@ -61,9 +71,16 @@ render() {
     --threads "$threads" --quiet "${@:4}"
 }
 
-echo "references at $reference_spp spp ..." >&2
-render bvh 1 "$work/reference1.exr" --spp "$reference_spp"
-render bvh 2 "$work/reference2.exr" --spp "$reference_spp"
+for seed in 1 2; do
+  kept=${references:+$references/reference$seed-${width}x$height-$reference_spp.exr}
+  if [[ -n $kept && -f $kept ]]; then
+    cp "$kept" "$work/reference$seed.exr"
+    continue
+  fi
+  echo "reference $seed at $reference_spp spp ..." >&2
+  render bvh "$seed" "$work/reference$seed.exr" --spp "$reference_spp"
+  [[ -z $kept ]] || { mkdir -p "$references" && cp "$work/reference$seed.exr" "$kept"; }
+done
 clamped_linear "$work/reference1.exr" "$work/reference1c.exr"
 clamped_linear "$work/reference2.exr" "$work/reference2c.exr"
 reference_error=$(reference_error "$work/reference1c.exr" "$work/reference2c.exr")
@@ -93,11 +110,36 @@ relative_error_of() {
 # ratio P B: P / B, how many times lower B is.
 ratio() { awk -v p="$1" -v b="$2" 'BEGIN {printf "%.4g", (b > 0 ? p / b : 0)}'; }
 
+# samples_per_pixel STATS.json: the samples per pixel a timed render reached.
+samples_per_pixel() {
+  awk -v w="$width" -v h="$height" '/"samples":/ {gsub(/,/, "", $2); printf "%.1f", $2 / (w * h)}' "$1"
+}
+
 # measure SAMPLER: renders for $seconds, sets timed_seconds/timed_note, spp_reached and relative.
 measure() {
   timed_run "$1" render "$1" 0 "$work/$1.exr" --spp 16777216 --time-limit "$seconds" --stats "$work/$1.json"
-  spp_reached=$(awk -v w="$width" -v h="$height" '/"samples":/ {gsub(/,/, "", $2); printf "%.1f", $2 / (w * h)}' "$work/$1.json")
+  spp_reached=$(samples_per_pixel "$work/$1.json")
   relative_error_of "$work/$1.exr"
+}
+
+# measure_pair ROUND (--paired): both samplers for $seconds at once, one thread each, power on
+# core ROUND mod 2 and the BVH on the other.
+measure_pair() {
+  local power_core=$(($1 % 2)) sampler pids=()
+  for sampler in power bvh; do
+    local core=$power_core
+    [[ $sampler == bvh ]] && core=$((1 - power_core))
+    taskset -c "$core" "$binary" render "$scene" -o "$work/$sampler.exr" --width "$width" --height "$height" \
+      --light-sampler "$sampler" --seed 0 --threads 1 --quiet --spp 16777216 --time-limit "$seconds" \
+      --stats "$work/$sampler.json" &
+    pids+=($!)
+  done
+  wait "${pids[@]}"
+  p_spp=$(samples_per_pixel "$work/power.json") b_spp=$(samples_per_pixel "$work/bvh.json")
+  relative_error_of "$work/power.exr"
+  p=$relative pl=$relative_lit p_note="core $power_core"
+  relative_error_of "$work/bvh.exr"
+  b=$relative bl=$relative_lit b_note="core $((1 - power_core))"
 }
 
 render power 0 "$work/power_equal.exr" --spp "$equal_spp"
@@ -110,20 +152,28 @@ bvh_equal=$relative bvh_equal_lit=$relative_lit
 require_quiet_machine "$max_load"
 ratios=() ratios_lit=() log=""
 for ((i = 0; i < repeats; i++)); do
-  measure power; p=$relative pl=$relative_lit p_spp=$spp_reached p_note="$timed_seconds s, $timed_note"
-  measure bvh; b=$relative bl=$relative_lit b_spp=$spp_reached b_note="$timed_seconds s, $timed_note"
+  if ((paired)); then
+    measure_pair "$i"
+  else
+    measure power; p=$relative pl=$relative_lit p_spp=$spp_reached p_note="$timed_seconds s, $timed_note"
+    measure bvh; b=$relative bl=$relative_lit b_spp=$spp_reached b_note="$timed_seconds s, $timed_note"
+  fi
   ratios+=("$(ratio "$p" "$b")") ratios_lit+=("$(ratio "$pl" "$bl")")
   log+="| $((i + 1)) | $p_spp | $p | $pl | $p_note | $b_spp | $b | $bl | $b_note |"$'\n'
 done
 
-echo "assets/many-lights.scene (400 emissive quads), ${width}x${height}, path, depth 3, $threads threads, $seconds s each"
+if ((paired)); then
+  echo "assets/many-lights.scene (400 emissive quads), ${width}x${height}, path, depth 3, $seconds s each, both samplers at once, one thread each on its own core"
+else
+  echo "assets/many-lights.scene (400 emissive quads), ${width}x${height}, path, depth 3, $threads threads, $seconds s each"
+fi
 echo "relative error = RMS error (linear, clamped to [0, 1]) / mean of the reference ($level), the reference's own"
 echo "error ($reference_error, from two $reference_spp-spp BVH renders on seeds 1 and 2) removed"
 echo "lit surfaces: the $lit_share of the pixels that see no lamp (level $level_lit, reference error $reference_error_lit)"
 echo "at $equal_spp spp, whole image: relative error power $power_equal, BVH $bvh_equal (power / BVH $(ratio "$power_equal" "$bvh_equal"))"
 echo "at $equal_spp spp, lit surfaces: relative error power $power_equal_lit, BVH $bvh_equal_lit (power / BVH $(ratio "$power_equal_lit" "$bvh_equal_lit"))"
 echo "at equal time:"
-echo "| run | power spp | power error, whole | power error, lit | power time (load, CPU share) | BVH spp | BVH error, whole | BVH error, lit | BVH time |"
+echo "| run | power spp | power error, whole | power error, lit | power time (load, CPU share) or core | BVH spp | BVH error, whole | BVH error, lit | BVH time or core |"
 echo "|---|---|---|---|---|---|---|---|---|"
 printf '%s' "$log"
 summarize_ratios "relative error of the whole image, power / BVH, at equal time" "${ratios[@]}"
