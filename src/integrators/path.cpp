@@ -633,7 +633,10 @@ struct PathVariant {
     BatchWorkspace& workspace = per_thread.local();
     auto& [paths, lights, rays, hits, occluded, live, shadowed, scratch, first_vertex, lanes, cosine_x, cosine_y, cosine_z, drawn,
            lobe_choices, first_lobe_choices, light_choices] = workspace;
-    int split = ctx.split;
+    // Without sharing there is one sub-path per camera sample (run_batch): a constant, the
+    // loop below is one start per sample. Read from ctx, GCC vectorised it for any split, with
+    // run-time alias checks that cost more per camera sample than the start itself.
+    int split = SharesFirstVertex ? ctx.split : 1;
     int live_count = count * split;
     for (int c = 0; c < count; ++c) {
       ++counts.camera;
