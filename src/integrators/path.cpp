@@ -140,7 +140,10 @@ template <uint32_t E>
 
   // The contribution for the shadow ray's transmittance `t`; with opaque shadows both answers
   // are formed now, so that the caller's choice is the value the transmittance would give.
-  auto finish = [&](vec3 direction, float distance, auto contribution) {
+  // `direction` by reference: by value, it came in registers, and the call stored it and read
+  // it back as an 8-byte block across two stores, which the CPU cannot forward (a third of the
+  // call's time).
+  auto finish = [&](const vec3& direction, float distance, auto contribution) {
     if (shadows_are_opaque<E>(ctx)) {
       counts.shadow++;
       out.unblocked = contribution(color3{1, 1, 1});
