@@ -67,8 +67,7 @@ BsdfLobes make_lobes(const BsdfParams& params, vec3 n, vec3 wo, vec3 tangent) {
 Bsdf::Bsdf(const BsdfMaterial& material, vec3 n, vec3 wo, vec3 tangent)
     : lobes_(make_lobes(material.params_, n, wo, tangent)) {}
 
-color3 Bsdf::eval(vec3 wi) const {
-  if (auto* l = std::get_if<LambertLobes>(&lobes_)) return eval_world(*l, wi);
+color3 Bsdf::eval_framed(vec3 wi) const {
   if (auto* l = std::get_if<PhongLobes>(&lobes_)) return eval_local(*l, to_local(l->frame, wi));
   if (auto* l = std::get_if<MetallicRoughnessLobes>(&lobes_)) return eval_local(*l, to_local(l->frame, wi));
   if (auto* l = std::get_if<LayeredLobes>(&lobes_)) return eval_local(*l, to_local(l->frame, wi));
@@ -83,23 +82,12 @@ float Bsdf::pdf(vec3 wi) const {
   return 0;
 }
 
-namespace {
-
-// The models with a local frame, out of line: inlined, their code made every call of
-// Bsdf::eval(wi, pdf) save registers, the Lambertian's too.
-[[gnu::noinline]] color3 eval_local_with_pdf(const BsdfLobes& lobes, vec3 wi, float& pdf) {
-  if (auto* l = std::get_if<PhongLobes>(&lobes)) return eval_with_pdf(*l, to_local(l->frame, wi), pdf);
-  if (auto* l = std::get_if<MetallicRoughnessLobes>(&lobes)) return eval_with_pdf(*l, to_local(l->frame, wi), pdf);
-  if (auto* l = std::get_if<LayeredLobes>(&lobes)) return eval_with_pdf(*l, to_local(l->frame, wi), pdf);
+color3 Bsdf::eval_framed(vec3 wi, float& pdf) const {
+  if (auto* l = std::get_if<PhongLobes>(&lobes_)) return eval_with_pdf(*l, to_local(l->frame, wi), pdf);
+  if (auto* l = std::get_if<MetallicRoughnessLobes>(&lobes_)) return eval_with_pdf(*l, to_local(l->frame, wi), pdf);
+  if (auto* l = std::get_if<LayeredLobes>(&lobes_)) return eval_with_pdf(*l, to_local(l->frame, wi), pdf);
   pdf = 0;
   return {0, 0, 0};
-}
-
-}  // namespace
-
-color3 Bsdf::eval(vec3 wi, float& pdf) const {
-  if (auto* l = std::get_if<LambertLobes>(&lobes_)) return eval_world(*l, wi, pdf);
-  return eval_local_with_pdf(lobes_, wi, pdf);
 }
 
 std::optional<BsdfSample> Bsdf::sample_with(float u_lobe, vec2 u, const vec3* cosine) const {

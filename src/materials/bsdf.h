@@ -35,12 +35,20 @@ class Bsdf {
   Bsdf(const BsdfMaterial& material, vec3 n, vec3 wo, vec3 tangent = {});
   Bsdf(const SurfaceMaterial& m, vec3 n, vec3 wo, vec3 tangent = {}) : Bsdf(BsdfMaterial(m), n, wo, tangent) {}
 
-  // f(wo, wi) * |dot(n, wi)| for the non-delta lobes.
-  color3 eval(vec3 wi) const;
+  // f(wo, wi) * |dot(n, wi)| for the non-delta lobes. The Lambertian branch, the commonest and
+  // a few instructions, is forced inline: called, its wi came in registers, was stored on the
+  // stack and read back a float at a time before the first multiplication.
+  [[gnu::always_inline]] color3 eval(vec3 wi) const {
+    if (auto* l = std::get_if<LambertLobes>(&lobes_)) return eval_world(*l, wi);
+    return eval_framed(wi);
+  }
   // Solid-angle pdf that sample() picks wi through a non-delta lobe.
   float pdf(vec3 wi) const;
   // eval(wi), with pdf(wi) in `pdf`: cheaper than the two apart.
-  color3 eval(vec3 wi, float& pdf) const;
+  [[gnu::always_inline]] color3 eval(vec3 wi, float& pdf) const {
+    if (auto* l = std::get_if<LambertLobes>(&lobes_)) return eval_world(*l, wi, pdf);
+    return eval_framed(wi, pdf);
+  }
   // Samples a direction; u_lobe picks a lobe, u the direction within it. nullopt when absorbed.
   std::optional<BsdfSample> sample(float u_lobe, vec2 u) const;
   // sample(u_lobe, u) with `cosine` = sample_cosine_hemisphere(u) worked out already (a batch's
@@ -55,6 +63,10 @@ class Bsdf {
 
  private:
   bool mixes_lobes() const;  // chooses_lobe() for the models that may have several lobes
+  // eval() for the models with a local frame, out of line: inlined, their code made every call
+  // save registers, the Lambertian's too.
+  color3 eval_framed(vec3 wi) const;
+  color3 eval_framed(vec3 wi, float& pdf) const;
 
   // Both samples: the diffuse lobes warp u themselves when `cosine` is null.
   std::optional<BsdfSample> sample_with(float u_lobe, vec2 u, const vec3* cosine) const;

@@ -22,10 +22,26 @@ struct LambertLobes : LambertParams {
   vec3 n;  // the normal on wo's side
 };
 LambertLobes make_lambert_lobes(const LambertParams& params, vec3 n, vec3 wo);
-// These take world-space directions.
-color3 eval_world(const LambertLobes& l, vec3 wi);
-color3 eval_world(const LambertLobes& l, vec3 wi, float& pdf);  // and pdf_world in `pdf`
-float pdf_world(const LambertLobes& l, vec3 wi);
+// Below this cosine a direction counts as grazing and carries nothing (as in the Phong model).
+constexpr float lambert_min_cosine = 1e-7f;
+// These take world-space directions. Inline, as Bsdf's Lambertian branches are (bsdf.h).
+[[gnu::always_inline]] inline color3 eval_world(const LambertLobes& l, vec3 wi) {
+  float cos_i = dot(l.n, wi);
+  if (!l.valid || !(cos_i >= lambert_min_cosine)) return {0, 0, 0};
+  return l.albedo * (inv_pi * cos_i);
+}
+[[gnu::always_inline]] inline color3 eval_world(const LambertLobes& l, vec3 wi, float& pdf) {  // and pdf_world in `pdf`
+  float cos_i = dot(l.n, wi);
+  pdf = 0;
+  if (!l.valid || !(cos_i >= lambert_min_cosine)) return {0, 0, 0};
+  pdf = cos_i * inv_pi;
+  return l.albedo * (inv_pi * cos_i);
+}
+inline float pdf_world(const LambertLobes& l, vec3 wi) {
+  float cos_i = dot(l.n, wi);
+  if (!l.valid || !(cos_i >= lambert_min_cosine)) return 0;
+  return cos_i * inv_pi;
+}
 std::optional<BsdfSample> sample_world(const LambertLobes& l, vec2 u);
 // sample_world with `local` = sample_cosine_hemisphere(u) already worked out.
 std::optional<BsdfSample> sample_warped(const LambertLobes& l, vec3 local);

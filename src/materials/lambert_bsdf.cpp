@@ -5,40 +5,13 @@
 
 namespace radiant {
 
-namespace {
-
-// Below this cosine a direction counts as grazing and carries nothing (as in the Phong model).
-constexpr float min_cosine = 1e-7f;
-
-}  // namespace
-
 LambertLobes make_lambert_lobes(const LambertParams& params, vec3 n, vec3 wo) {
   LambertLobes l;
   l.albedo = params.albedo;
   float cos_o = dot(n, wo);
   l.n = cos_o < 0 ? -n : n;  // as the Phong model: seen from behind, the surface faces wo
-  l.valid = std::abs(cos_o) > min_cosine && std::isfinite(cos_o) && max_component(params.albedo) > 0;
+  l.valid = std::abs(cos_o) > lambert_min_cosine && std::isfinite(cos_o) && max_component(params.albedo) > 0;
   return l;
-}
-
-color3 eval_world(const LambertLobes& l, vec3 wi) {
-  float cos_i = dot(l.n, wi);
-  if (!l.valid || !(cos_i >= min_cosine)) return {0, 0, 0};
-  return l.albedo * (inv_pi * cos_i);
-}
-
-color3 eval_world(const LambertLobes& l, vec3 wi, float& pdf) {
-  float cos_i = dot(l.n, wi);
-  pdf = 0;
-  if (!l.valid || !(cos_i >= min_cosine)) return {0, 0, 0};
-  pdf = cos_i * inv_pi;
-  return l.albedo * (inv_pi * cos_i);
-}
-
-float pdf_world(const LambertLobes& l, vec3 wi) {
-  float cos_i = dot(l.n, wi);
-  if (!l.valid || !(cos_i >= min_cosine)) return 0;
-  return cos_i * inv_pi;
 }
 
 std::optional<BsdfSample> sample_world(const LambertLobes& l, vec2 u) {
@@ -51,7 +24,7 @@ std::optional<BsdfSample> sample_warped(const LambertLobes& l, vec3 local) {
   // which stalls the CPU's store forwarding: that took a third of this function's time.
   std::optional<BsdfSample> s;
   if (!l.valid) return s;
-  if (!(local.z >= min_cosine)) return s;
+  if (!(local.z >= lambert_min_cosine)) return s;
   s.emplace();
   s->wi = to_world(make_shading_frame(l.n), local);
   s->weight = l.albedo;  // f cos / pdf: the cosine and 1/pi cancel
