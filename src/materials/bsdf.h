@@ -75,11 +75,13 @@ class Bsdf {
 };
 
 // True when the material has only delta lobes (mirror, smooth glass): light sampling is useless.
-// Inline for the Phong model, asked at every path vertex.
+// Asked at every path vertex, so inline for the Phong model and for a glTF material with a
+// diffuse base (the common answers; the rest works out roughness and layers).
 bool is_layered_metallic_roughness_pure_delta(const SurfaceMaterial& m);
 inline bool is_pure_delta(const SurfaceMaterial& m) {
   if (m.unlit) return true;
   if (m.model != MaterialModel::metallic_roughness) return is_phong_pure_delta(m);
+  if (has_metallic_roughness_diffuse(m)) return false;
   return is_layered_metallic_roughness_pure_delta(m);
 }
 // Hemispherical albedo estimate used for the albedo AOV (base color or kd, clamped to [0,1]).

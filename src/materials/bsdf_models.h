@@ -111,6 +111,10 @@ float pdf_local(const MetallicRoughnessLobes& l, vec3 wi);
 color3 eval_with_pdf(const MetallicRoughnessLobes& l, vec3 wi, float& pdf);
 std::optional<BsdfSample> sample_local(const MetallicRoughnessLobes& l, float u_lobe, vec2 u,
                                        const vec3* cosine = nullptr);
+// The material has a diffuse base (then it is never pure delta). Inline: asked at every path vertex.
+inline bool has_metallic_roughness_diffuse(const SurfaceMaterial& m) {
+  return m.metallic < 1 && m.transmission < 1 && max_component(m.base_color) > 0;
+}
 bool is_metallic_roughness_pure_delta(const SurfaceMaterial& m);
 
 // KHR_materials_clearcoat and KHR_materials_sheen: a clear dielectric GGX coat (ior 1.5) over a

@@ -253,10 +253,9 @@ std::optional<BsdfSample> sample_local(const MetallicRoughnessLobes& l, float u_
 }
 
 bool is_metallic_roughness_pure_delta(const SurfaceMaterial& m) {
-  bool has_diffuse = m.metallic < 1 && m.transmission < 1 && max_component(m.base_color) > 0;
   float alpha = roughness_to_alpha(m.roughness), anisotropy = std::clamp(m.anisotropy, 0.0f, 1.0f);
   float widest_alpha = alpha + (1 - alpha) * anisotropy * anisotropy;  // alpha itself when isotropic
-  return widest_alpha < smooth_alpha_threshold && !has_diffuse;
+  return widest_alpha < smooth_alpha_threshold && !has_metallic_roughness_diffuse(m);
 }
 
 }  // namespace radiant
