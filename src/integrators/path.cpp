@@ -452,8 +452,8 @@ struct PathVariant {
   // Not inlined: in the batch's loop over camera samples GCC's -O3 loop distribution split its
   // two dozen stores into as many loops, each walking all the path states for one field (about
   // 100 instructions a camera sample of loop control, and the states streamed 28 times).
-  [[gnu::noinline]] static void start(PathState& path, const RenderContext& ctx, const Ray& camera_ray, const SampleContext& sample,
-                    int sub_path, FirstHit* first_hit) {
+  [[gnu::noinline]] static void start(PathState& path, const RenderContext& ctx, const Ray& camera_ray,
+                                      const SampleContext& sample, int sub_path, FirstHit* first_hit) {
     path.radiance = {};
     path.throughput = {1, 1, 1};
     path.ray_kind = &RayCounts::camera;
