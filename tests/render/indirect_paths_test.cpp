@@ -8,6 +8,7 @@
 
 #include "load_scene.h"
 #include "render/settings_hash.h"
+#include "support/film_measures.h"
 #include "support/scene_builders.h"
 #include "support/test_support.h"
 
@@ -36,22 +37,6 @@ RenderOptions small_render(int spp, int indirect_paths, int max_depth) {
   o.width = 24, o.height = 24, o.spp = spp, o.mode = RenderMode::path, o.max_depth = max_depth;
   o.indirect_paths = indirect_paths;
   return o;
-}
-
-double mean_luminance(const Film& film) {
-  double sum = 0;
-  for (const FilmPixel& p : film.pixels) sum += luminance(pixel_mean(p));
-  return sum / double(film.pixels.size());
-}
-
-// RMS of the pixel differences between two films of the same size.
-double rms_difference(const Film& a, const Film& b) {
-  double sum = 0;
-  for (size_t i = 0; i < a.pixels.size(); ++i) {
-    color3 d = pixel_mean(a.pixels[i]) - pixel_mean(b.pixels[i]);
-    sum += double(d.x) * d.x + double(d.y) * d.y + double(d.z) * d.z;
-  }
-  return std::sqrt(sum / double(3 * a.pixels.size()));
 }
 
 }  // namespace

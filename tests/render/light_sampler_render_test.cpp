@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "support/film_measures.h"
 #include "support/scene_builders.h"
 
 using namespace radiant;
@@ -59,24 +60,6 @@ RenderOptions options(RenderMode mode, LightSampler sampler, int spp) {
   o.mode = mode;
   o.light_sampler = sampler;
   return o;
-}
-
-// Largest |difference| / standard error between the two films' means over 8x8-pixel blocks, per
-// channel: under equal expectations each is about normal with unit variance.
-double largest_block_z(const Film& a, const Film& b) {
-  double largest = 0;
-  for (int by = 0; by < a.height; by += 8)
-    for (int bx = 0; bx < a.width; bx += 8)
-      for (int c = 0; c < 3; ++c) {
-        double mean_a = 0, mean_b = 0, variance = 0;
-        for (int y = by; y < by + 8; ++y)
-          for (int x = bx; x < bx + 8; ++x) {
-            mean_a += pixel_mean(a.at(x, y))[c], mean_b += pixel_mean(b.at(x, y))[c];
-            variance += double(pixel_mean_variance(a.at(x, y))[c]) + double(pixel_mean_variance(b.at(x, y))[c]);
-          }
-        largest = std::max(largest, std::abs(mean_a - mean_b) / std::sqrt(std::max(variance, 1e-30)));
-      }
-  return largest;
 }
 
 }  // namespace
