@@ -7,6 +7,8 @@
   normal-mapped-quad.gltf                  a quad with an embedded normal map (no tangents: the
                                            loader generates them), a spot light and a camera
   textured-cube.obj (+ .mtl, .png)         the cube as OBJ with a map_Kd texture
+  lit-windows.gltf                         a facade of 128 windows, 16 of them lit through one
+                                           emission texture, over a street: no other light
 
 Run from the repository root: python3 scripts/make_sample_models.py
 """
@@ -262,9 +264,59 @@ def textured_cube_obj():
     write("textured-cube.png", png(64, 64, checker))
 
 
+def window_light(x, y):
+    """The facade's emission texture: 16 x 8 cells of 4 x 4 texels; a lit window is the inner
+    2 x 2 texels of its cell, warm white, and everything else (wall, dark windows) is black."""
+    column, row = x // 4, y // 4
+    inner = 1 <= x % 4 <= 2 and 1 <= y % 4 <= 2
+    return (255, 200, 120) if inner and (column, row) in LIT_WINDOWS else (0, 0, 0)
+
+
+# One window in eight lit, scattered by a fixed linear congruential sequence.
+LIT_WINDOWS = set()
+_state = 12345
+while len(LIT_WINDOWS) < 16:
+    _state = (_state * 1103515245 + 12345) % 2 ** 31
+    LIT_WINDOWS.add(((_state >> 8) % 16, (_state >> 16) % 8))
+
+
+def facade():
+    """16 x 8 one-metre cells in the XY plane (x from -8 to 8, y from 0 to 8), facing +z; cell
+    (column, row) maps onto its 4 x 4 texels of the 64 x 32 texture (row 0 at the top)."""
+    positions, normals, uvs, indices = [], [], [], []
+    for row in range(8):
+        for column in range(16):
+            base = len(positions)
+            x0, y1 = column - 8, 8 - row
+            for dx, dy in ((0, -1), (1, -1), (1, 0), (0, 0)):
+                positions.append((x0 + dx, y1 + dy, 0))
+                normals.append((0, 0, 1))
+                uvs.append(((column + dx) / 16, (row - dy) / 8))
+            indices += [base, base + 1, base + 2, base, base + 2, base + 3]
+    return positions, normals, uvs, indices
+
+
+def lit_windows():
+    doc = Document()
+    emission = doc.image("windows.png", png(64, 32, window_light), embed=True)
+    wall = doc.material("windows", (0.1, 0.1, 0.1), emissiveFactor=[1, 1, 1],
+                        emissiveTexture={"index": emission},
+                        extensions={"KHR_materials_emissive_strength": {"emissiveStrength": 20}})
+    doc.gltf.setdefault("extensionsUsed", []).append("KHR_materials_emissive_strength")
+    street = doc.material("street", (0.5, 0.5, 0.5))
+    street_quad = ([(-10, 0, 14), (10, 0, 14), (10, 0, 0), (-10, 0, 0)], [(0, 1, 0)] * 4,
+                   [(0, 1), (1, 1), (1, 0), (0, 0)], [0, 1, 2, 0, 2, 3])
+    roots = [doc.node(name="facade", mesh=doc.mesh("facade", facade(), wall)),
+             doc.node(name="street", mesh=doc.mesh("street", street_quad, street)),
+             doc.camera_node((0, 6, 14), (0, 1, 2), yfov=0.9)]
+    gltf = doc.finish(roots, "data:application/octet-stream;base64," + base64.b64encode(bytes(doc.data)).decode())
+    write("lit-windows.gltf", json.dumps(gltf, indent=1) + "\n")
+
+
 if __name__ == "__main__":
     os.makedirs(OUT, exist_ok=True)
     checker_cube()
     instanced_boxes()
     normal_mapped_quad()
     textured_cube_obj()
+    lit_windows()

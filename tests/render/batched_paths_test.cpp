@@ -150,9 +150,10 @@ TEST_CASE("batched paths: glass with dispersion and absorption, metal, mirror, s
   }
 }
 
-TEST_CASE("batched paths: textures and normal maps of real glTF files render the same") {
+TEST_CASE("batched paths: textures, normal maps and emission textures of real glTF files render the same") {
   for (const char* file : {"assets/models/checker-cube.gltf", "assets/models/normal-mapped-quad.gltf",
-                           "assets/models/instanced-boxes.glb", "assets/models/textured-cube.obj"}) {
+                           "assets/models/instanced-boxes.glb", "assets/models/textured-cube.obj",
+                           "assets/models/lit-windows.gltf"}) {
     CAPTURE(file);
     SceneDesc scene = load_scene(source_path(file).string());
     RenderOptions o;
