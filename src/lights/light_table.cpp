@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "image/image_io.h"
+#include "lights/emission_estimate.h"
 #include "lights/light_bounds.h"
 #include "memory/input_file.h"
 #include "scene/scene_bounds.h"
@@ -25,7 +26,7 @@ void scene_bounding_sphere(const SceneDesc& scene, vec3& center, float& radius) 
   radius = std::max(length(upper - lower) * 0.5f, 1e-3f);
 }
 
-void add_emissive_triangles(const SceneDesc& scene, LightTable& table) {
+void add_emissive_triangles(const SceneDesc& scene, LightTable& table, const EmissionEstimates& estimates) {
   table.instance_light_base.assign(scene.instances.size(), -1);
   for (size_t i = 0; i < scene.instances.size(); ++i) {
     const InstanceDesc& instance = scene.instances[i];
@@ -34,6 +35,9 @@ void add_emissive_triangles(const SceneDesc& scene, LightTable& table) {
     table.instance_light_base[i] = int(table.area_lights.size());
     mat4 inverse;
     inverse_affine(instance.transform, inverse);
+    const MaterialDesc& material = scene.materials[mesh.material];
+    // The emission texture's coordinates, as area_light_emission reads them (zero without any).
+    const std::vector<vec2>& uvs = material.emission_texture.texcoord == 1 ? mesh.texcoords1 : mesh.texcoords0;
     for (size_t t = 0; t < mesh.triangle_count(); ++t) {
       AreaLight light;
       light.p0 = transform_point(instance.transform, mesh.positions[mesh.indices[3 * t]]);
@@ -46,7 +50,11 @@ void add_emissive_triangles(const SceneDesc& scene, LightTable& table) {
                      (determinant3(instance.transform) < 0 ? -1.0f : 1.0f);
       light.area = 0.5f * length(cross(light.p1 - light.p0, light.p2 - light.p0));
       light.material = mesh.material;
-      light.two_sided = scene.materials[mesh.material].double_sided;
+      vec2 uv[3] = {};
+      if (!uvs.empty())
+        for (int k = 0; k < 3; ++k) uv[k] = uvs[mesh.indices[3 * t + k]];
+      light.radiance = estimates.triangle_luminance(material, uv);
+      light.two_sided = material.double_sided;
       light.instance = int(i);
       light.primitive = uint32_t(t);
       table.area_lights.push_back(light);
@@ -66,6 +74,8 @@ void add_emissive_spheres(const SceneDesc& scene, LightTable& table) {
     light.radius = shape.radius;
     light.area = 4 * pi * shape.radius * shape.radius;
     light.material = shape.material;
+    // A sphere's light samples read no texture (area_light_emission): neither does its weight.
+    light.radiance = luminance(scene.materials[shape.material].emission);
     light.two_sided = scene.materials[shape.material].double_sided;  // emits inward too
     light.shape_index = int(s);
     table.shape_light[s] = int(table.area_lights.size());
@@ -160,7 +170,7 @@ bool light_bounds_of(const SceneDesc& scene, const LightTable& table, size_t slo
     return true;
   }
   const AreaLight& l = table.area_lights[slot - table.delta_lights.size()];
-  float radiance = luminance(scene.materials[size_t(l.material)].emission);
+  float radiance = l.radiance;
   if (l.shape == AreaLightShape::sphere) {
     vec3 r = {l.radius, l.radius, l.radius};
     bounds = point_light_bounds(l.center, {0, 0, 1}, -1, 0, radiance * pi * l.radius * l.radius);
@@ -239,7 +249,8 @@ LightTable make_light_table(const SceneDesc& scene, color3 environment_color, co
   for (size_t i = 0; i < scene.lights.size(); ++i)
     if (scene.lights[i].kind != LightKind::ambient) table.delta_lights.push_back(int(i));
   if (use_area_lights) {
-    add_emissive_triangles(scene, table);
+    EmissionEstimates estimates(scene, budget);  // only while the triangles are made
+    add_emissive_triangles(scene, table, estimates);
     add_emissive_spheres(scene, table);
   }
   table.environment_color = environment_color;
@@ -256,7 +267,7 @@ LightTable make_light_table(const SceneDesc& scene, color3 environment_color, co
     else weights.push_back(power * 4 * pi / std::max(l.kc + l.kl + l.kq, 1e-6f));
   }
   for (const AreaLight& l : table.area_lights)
-    weights.push_back(double(luminance(scene.materials[l.material].emission)) * l.area * pi * (l.two_sided ? 2 : 1));
+    weights.push_back(double(l.radiance) * l.area * pi * (l.two_sided ? 2 : 1));
   if (table.has_environment()) {
     double average = luminance(table.environment_color);
     if (table.environment_map.width > 0)

@@ -27,6 +27,9 @@ struct AreaLight {
   vec3 normal;              // triangle front normal (unit)
   float area = 0;
   int material = -1;
+  // The luminance of its mean emitted radiance (lights/emission_estimate.h): what its selection
+  // weight and its light-BVH bounds go by.
+  float radiance = 0;
   bool two_sided = false;
   int instance = -1, shape_index = -1;
   uint32_t primitive = 0;

@@ -64,6 +64,13 @@ struct SurfaceMaterial {
   bool has_bump_map = false;
 };
 
+// The image behind `ref`, or nullptr when any link is missing or its texels are inconsistent.
+const ImageDesc* texture_image(const SceneDesc& scene, const TextureRef& ref);
+// KHR_texture_transform: uv' = T * R * S * uv (the extension's matrix order).
+vec2 transform_uv(const TextureRef& ref, vec2 uv);
+// Maps a texel index that may lie outside [0, size) onto the image by the wrap mode.
+int wrap_index(int i, int size, TextureWrap wrap);
+
 // Texel fetch with wrap, filter and KHR_texture_transform; `srgb` decodes color textures.
 // Returns RGBA (missing channels: RGB repeat the first, A = 1).
 vec4 sample_texture(const SceneDesc& scene, const TextureRef& ref, const SurfaceAttributes& attributes,

@@ -22,7 +22,8 @@ const std::array<float, 256>& srgb_to_linear_table() {
   return table;
 }
 
-// The image behind `ref`, or nullptr when any link is missing or its texels are inconsistent.
+}  // namespace
+
 const ImageDesc* texture_image(const SceneDesc& scene, const TextureRef& ref) {
   if (ref.texture < 0 || ref.texture >= int(scene.textures.size())) return nullptr;
   int index = scene.textures[ref.texture].image;
@@ -34,7 +35,6 @@ const ImageDesc* texture_image(const SceneDesc& scene, const TextureRef& ref) {
   return &image;
 }
 
-// KHR_texture_transform: uv' = T * R * S * uv (the extension's matrix order).
 vec2 transform_uv(const TextureRef& ref, vec2 uv) {
   if (ref.rotation == 0 && ref.scale.x == 1 && ref.scale.y == 1 && ref.offset.x == 0 && ref.offset.y == 0)
     return uv;
@@ -42,6 +42,8 @@ vec2 transform_uv(const TextureRef& ref, vec2 uv) {
   vec2 scaled = {uv.x * ref.scale.x, uv.y * ref.scale.y};
   return {c * scaled.x + s * scaled.y + ref.offset.x, -s * scaled.x + c * scaled.y + ref.offset.y};
 }
+
+namespace {
 
 // Brings a texture coordinate into a small range with the same texels, so that NaN or huge
 // values can never produce an out-of-range integer.
@@ -55,7 +57,8 @@ float reduce_coordinate(float t, TextureWrap wrap) {
   return 0;
 }
 
-// Maps a texel index that may lie outside [0, size) onto the image by the wrap mode.
+}  // namespace
+
 int wrap_index(int i, int size, TextureWrap wrap) {
   switch (wrap) {
     case TextureWrap::repeat: return ((i % size) + size) % size;
@@ -68,6 +71,8 @@ int wrap_index(int i, int size, TextureWrap wrap) {
   }
   return 0;
 }
+
+namespace {
 
 // RGBA from a texel's channel values (missing channels: RGB repeat the first, A = 1).
 vec4 expand_channels(const float* values, int channels) {
