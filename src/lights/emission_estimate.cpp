@@ -1,6 +1,7 @@
 #include "lights/emission_estimate.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "materials/surface.h"
@@ -109,14 +110,21 @@ EmissionEstimates::EmissionEstimates(const SceneDesc& scene, MemoryBudget* budge
     table.cells_x = cells_along(image->width), table.cells_y = cells_along(image->height);
     size_t row = size_t(table.cells_x + 1) * 3;
     table.sums.assign(row * size_t(table.cells_y + 1), 0.0);
-    // Each cell's sum, stored at its lower-right corner; then the prefix sums in place.
-    bool srgb = !image->texels8.empty();  // emission is a colour: 8-bit texels are sRGB
+    // Each cell's sum, stored at its lower-right corner; then the prefix sums in place. Texels
+    // are read as texel_value reads them (8-bit ones as sRGB colour), a row at a time.
+    std::vector<size_t> cell_of_column(size_t(image->width));
+    for (int x = 0; x < image->width; ++x)
+      cell_of_column[size_t(x)] = size_t(int64_t(x) * table.cells_x / image->width + 1) * 3;
+    const std::array<float, 256>& srgb = srgb_to_linear_table();
+    size_t channels = size_t(image->channels), step[3] = {0, channels < 3 ? 0u : 1u, channels < 3 ? 0u : 2u};
     for (int y = 0; y < image->height; ++y) {
-      size_t corner_row = size_t(int64_t(y) * table.cells_y / image->height + 1) * row;
+      double* corner_row = &table.sums[size_t(int64_t(y) * table.cells_y / image->height + 1) * row];
+      size_t first = size_t(y) * size_t(image->width) * channels;
       for (int x = 0; x < image->width; ++x) {
-        double* cell = &table.sums[corner_row + size_t(int64_t(x) * table.cells_x / image->width + 1) * 3];
+        double* cell = corner_row + cell_of_column[size_t(x)];
+        size_t texel = first + size_t(x) * channels;
         for (int c = 0; c < 3; ++c) {
-          float v = texel_value(*image, x, y, image->channels < 3 ? 0 : c, srgb);
+          float v = image->texels8.empty() ? image->texels_float[texel + step[c]] : srgb[image->texels8[texel + step[c]]];
           // Negative or NaN texels emit nothing; an infinite one stays finite here.
           cell[c] += v > 0 ? std::min(double(v), 1e30) : 0.0;
         }

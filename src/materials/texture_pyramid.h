@@ -3,6 +3,7 @@
 // pixel's footprint (docs/materials.md, "Texture filtering").
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -42,6 +43,9 @@ TexturePyramids build_texture_pyramids(const SceneDesc& scene, MemoryBudget* bud
 // Whether the pyramids built for `built_for` are those of `scene` too: the same images, bit for
 // bit, read the same ways (an animation's next frame, whose textures do not change).
 bool pyramids_serve(const SceneDesc& built_for, const SceneDesc& scene);
+
+// The 256 sRGB-encoded byte values decoded to linear once (IEC 61966-2-1 curve).
+const std::array<float, 256>& srgb_to_linear_table();
 
 // Channel `c` of texel (x, y) of `image` as a linear value (8-bit colour through the sRGB curve
 // when `srgb`, alpha never); the decoding every lookup of level 0 uses.

@@ -1,5 +1,4 @@
 // Texture lookups: KHR_texture_transform, wrap modes, nearest/bilinear/trilinear filtering, sRGB decode.
-#include <array>
 #include <cmath>
 
 #include "materials/surface.h"
@@ -7,9 +6,6 @@
 
 namespace radiant {
 
-namespace {
-
-// The 256 sRGB-encoded byte values decoded to linear once (IEC 61966-2-1 curve).
 const std::array<float, 256>& srgb_to_linear_table() {
   static const std::array<float, 256> table = [] {
     std::array<float, 256> values{};
@@ -21,8 +17,6 @@ const std::array<float, 256>& srgb_to_linear_table() {
   }();
   return table;
 }
-
-}  // namespace
 
 const ImageDesc* texture_image(const SceneDesc& scene, const TextureRef& ref) {
   if (ref.texture < 0 || ref.texture >= int(scene.textures.size())) return nullptr;
