@@ -83,15 +83,19 @@ int axis_cells(const AxisRange texels[2], int ranges, int size, int cells, AxisR
 
 uint64_t emission_estimate_bytes(const SceneDesc& scene) {
   std::vector<char> counted(scene.images.size(), 0);
-  uint64_t bytes = 0;
+  uint64_t bytes = 0, widest = 0;
   for (const MaterialDesc& m : scene.materials) {
     const ImageDesc* image = emission_image(scene, m);
     if (!image) continue;
     size_t index = size_t(image - scene.images.data());
     if (counted[index]) continue;
     counted[index] = 1;
-    bytes += uint64_t(cells_along(image->width) + 1) * uint64_t(cells_along(image->height) + 1) * 3 * sizeof(double);
+    bytes += uint64_t(cells_along(image->width) + 1) * uint64_t(cells_along(image->height) + 1) * 3 * sizeof(double) +
+             sizeof(EmissionEstimates::ImageSums);
+    widest = std::max(widest, uint64_t(image->width));
   }
+  // The image-to-table index and the column-to-cell map of the widest image, while building.
+  if (bytes > 0) bytes += scene.images.size() * sizeof(int) + widest * sizeof(size_t);
   return bytes;
 }
 

@@ -16,10 +16,6 @@ namespace radiant {
 // cells, so finer cells estimate small triangles better and cost memory (about 1.6 MB a texture).
 constexpr int max_emission_cells = 256;
 
-// The bytes EmissionEstimates allocates for `scene`: three channels of sums per image that
-// some emissive material reads as its emission texture.
-uint64_t emission_estimate_bytes(const SceneDesc& scene);
-
 // Summed-area tables of the scene's emission textures, over a grid of cells.
 class EmissionEstimates {
  public:
@@ -35,17 +31,20 @@ class EmissionEstimates {
   // out. The luminance of the emission itself for an untextured material.
   float triangle_luminance(const MaterialDesc& material, const vec2 uv[3]) const;
 
- private:
   struct ImageSums {
     int width = 0, height = 0, cells_x = 0, cells_y = 0;
     std::vector<double> sums;  // (cells_y + 1) x (cells_x + 1) x 3: the sums above-left of each corner
   };
-  color3 mean_over_cells(const ImageSums& image, int x0, int x1, int y0, int y1, double& texels) const;
 
+ private:
   const SceneDesc* scene_;
   std::vector<int> sums_of_image_;  // index into images_, or -1 for an image no emission reads
   std::vector<ImageSums> images_;
   MemoryCharge memory_;
 };
+
+// The bytes EmissionEstimates allocates for `scene`: three channels of sums per image that
+// some emissive material reads as its emission texture, and what building them needs.
+uint64_t emission_estimate_bytes(const SceneDesc& scene);
 
 }  // namespace radiant

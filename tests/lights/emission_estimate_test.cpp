@@ -176,7 +176,11 @@ TEST_CASE("emission estimate: an all-black emission texture leaves nothing to ch
 TEST_CASE("emission estimate: its tables are charged to the memory budget") {
   SceneDesc scene = textured_scene(1024, {701}, 1, TextureWrap::repeat);
   add_textured_strip(scene);
-  CHECK(emission_estimate_bytes(scene) == uint64_t(257) * 2 * 3 * sizeof(double));
+  uint64_t table = uint64_t(257) * 2 * 3 * sizeof(double), building = 1024 * sizeof(size_t) + sizeof(int);
+  CHECK(emission_estimate_bytes(scene) == table + sizeof(EmissionEstimates::ImageSums) + building);
+  scene.materials[0].emission = {0, 0, 0};  // nothing emits: no tables
+  CHECK(emission_estimate_bytes(scene) == 0);
+  scene.materials[0].emission = {1, 1, 1};
   // Room for the 16 area lights (about 3 KB), not for the table (12 KB).
   MemoryBudget budget(8 * 1024);
   CHECK_THROWS_WITH_AS(make_light_table(scene, {0, 0, 0}, "", true, &budget, LightSampler::power),
