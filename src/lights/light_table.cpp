@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -26,7 +27,8 @@ void scene_bounding_sphere(const SceneDesc& scene, vec3& center, float& radius) 
   radius = std::max(length(upper - lower) * 0.5f, 1e-3f);
 }
 
-void add_emissive_triangles(const SceneDesc& scene, LightTable& table, const EmissionEstimates& estimates) {
+// `estimates`: null when the render reads no emission texture (each triangle then emits its factor).
+void add_emissive_triangles(const SceneDesc& scene, LightTable& table, const EmissionEstimates* estimates) {
   table.instance_light_base.assign(scene.instances.size(), -1);
   for (size_t i = 0; i < scene.instances.size(); ++i) {
     const InstanceDesc& instance = scene.instances[i];
@@ -53,7 +55,7 @@ void add_emissive_triangles(const SceneDesc& scene, LightTable& table, const Emi
       vec2 uv[3] = {};
       if (!uvs.empty())
         for (int k = 0; k < 3; ++k) uv[k] = uvs[mesh.indices[3 * t + k]];
-      light.radiance = estimates.triangle_luminance(material, uv);
+      light.radiance = estimates ? estimates->triangle_luminance(material, uv) : luminance(material.emission);
       light.two_sided = material.double_sided;
       light.instance = int(i);
       light.primitive = uint32_t(t);
@@ -241,7 +243,8 @@ std::unique_ptr<ImageSource> open_environment_map(const std::string& path, Memor
 }
 
 LightTable make_light_table(const SceneDesc& scene, color3 environment_color, const std::string& environment_map_path,
-                            bool use_area_lights, MemoryBudget* budget, LightSampler sampler) {
+                            bool use_area_lights, MemoryBudget* budget, LightSampler sampler,
+                            bool emission_textures) {
   LightTable table;
   if (use_area_lights)
     table.area_light_memory = MemoryCharge(budget, area_light_bytes(scene), scene.source_path + ": the area lights");
@@ -249,8 +252,9 @@ LightTable make_light_table(const SceneDesc& scene, color3 environment_color, co
   for (size_t i = 0; i < scene.lights.size(); ++i)
     if (scene.lights[i].kind != LightKind::ambient) table.delta_lights.push_back(int(i));
   if (use_area_lights) {
-    EmissionEstimates estimates(scene, budget);  // only while the triangles are made
-    add_emissive_triangles(scene, table, estimates);
+    std::optional<EmissionEstimates> estimates;  // only while the triangles are made
+    if (emission_textures) estimates.emplace(scene, budget);
+    add_emissive_triangles(scene, table, estimates ? &*estimates : nullptr);
     add_emissive_spheres(scene, table);
   }
   table.environment_color = environment_color;

@@ -79,9 +79,11 @@ constexpr size_t light_bvh_min_lights = 8;
 // `sampler` is how the path tracer will choose lights (`automatic` is resolved here; Whitted,
 // without area lights, gets power: it chooses none). Throws std::runtime_error when the map
 // cannot be read, MemoryLimitError when the budget refuses.
+// `emission_textures`: whether the render reads emission textures (the textures effect), so
+// that emissive triangles are weighed by what they will emit (lights/emission_estimate.h).
 LightTable make_light_table(const SceneDesc& scene, color3 environment_color, const std::string& environment_map_path,
                             bool use_area_lights, MemoryBudget* budget = nullptr,
-                            LightSampler sampler = LightSampler::automatic);
+                            LightSampler sampler = LightSampler::automatic, bool emission_textures = true);
 
 // Opens an environment map and checks its header (readable, of a usable size): what `batch`
 // checks of every view before rendering. Throws std::runtime_error naming the file (MemoryLimitError

@@ -342,7 +342,7 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
   bool path_like = s.mode != RenderMode::whitted;
   LightTable lights =
       make_light_table(*prepared.scene, s.environment_color, s.environment_map, path_like, options.memory,
-                       options.light_sampler);
+                       options.light_sampler, (s.effects & effect_textures) != 0);
   lights.environment_scale = prepared.scene->environment.map_scale;
   s.light_sampler = lights.sampler;
   MemoryCharge materials_memory(options.memory, shading_materials_bytes(*prepared.scene),

@@ -150,6 +150,17 @@ TEST_CASE("emission estimate: power selection gives black-textured triangles no 
   CHECK(quad6 == doctest::Approx((8.0 / 10) / (8.0 / 10 + 1.0 / 10 + 1.0 / 9)).epsilon(1e-4));
 }
 
+TEST_CASE("emission estimate: a render that reads no textures weighs every triangle by its factor") {
+  // --effects without textures: light samples then see the emission factor all over the strip.
+  SceneDesc scene = glowing_quad_six();
+  add_textured_strip(scene);
+  MemoryBudget budget(1 << 20);
+  LightTable lights = make_light_table(scene, {0, 0, 0}, "", true, &budget, LightSampler::power, false);
+  for (size_t slot = 0; slot < 16; ++slot)
+    CHECK(light_choice_probability(lights, {0, 0, 0}, {0, 1, 0}, slot) == doctest::Approx(1.0 / 16));
+  CHECK(budget.used() == lights.area_light_memory.bytes());  // no emission tables were built
+}
+
 TEST_CASE("emission estimate: the light BVH goes by the same estimates") {
   SceneDesc scene = glowing_quad_six();
   add_textured_strip(scene);
