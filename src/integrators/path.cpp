@@ -8,6 +8,7 @@
 #include "integrators/background.h"
 #include "integrators/naive.h"
 #include "integrators/hit_shading.h"
+#include "integrators/lambert_lanes.h"
 #include "integrators/light_choice_point.h"
 #include "integrators/shadow.h"
 #include "lights/area_light.h"
@@ -527,7 +528,109 @@ struct PathVariant {
     // A stage's light choices by the BVH (choose_lights_ahead): the points, normals and numbers
     // of the paths that take a light sample, which live path each is, and the choices.
     LightChoiceQueue choices;
+    // A stage's vertices shaded in the Lambert lanes (gather_lambert_lanes): each live path's
+    // lane, or -1.
+    LambertLanes lambert;
+    int lane_of[max_batch_paths];
   };
+
+  // Whether this variant can shade vertices in the Lambert lanes: no texture is read and no
+  // surface is seen through, so every Lambert vertex is the lanes' kind.
+  static constexpr bool lambert_lanes_compiled =
+      LightSampling && !(E & effect_group_textures) && !(E & effect_group_transparency);
+
+  // Gathers the stage's vertices that the Lambert lanes can shade (lambert_lanes.h) and shades
+  // them: a live path at a hit of an untransformed triangle without normals, whose material is
+  // a lane material, which chooses a point light without range. Its light is chosen here, as
+  // sample_one_light would choose it.
+  [[gnu::noinline]] static void shade_in_lambert_lanes(const RenderContext& ctx, BatchWorkspace& w, int live_count) {
+    const SceneDesc& scene = *ctx.scene;
+    const SceneAccel& accel = *ctx.accel;
+    const LightTable& lights = *ctx.lights;
+    LambertLanes& l = w.lambert;
+    l.count = 0;
+    for (int k = 0; k < live_count; ++k) {
+      w.lane_of[k] = -1;
+      const PathState& path = w.paths[w.live[k]];
+      const HitId& id = w.hits[k];
+      const VertexDraws& drawn = w.drawn[k];
+      int depth = path.depth;
+      if (id.instance < 0 || depth >= path.max_depth || (path.first_hit && depth == 0) ||
+          !(depth > 0 || path.gathers_first_vertex) || !drawn.has(bsdf_direction) || !accel.instance_identity[id.instance])
+        continue;
+      const MeshDesc& mesh = scene.meshes[scene.instances[id.instance].mesh];
+      if (!mesh.normals.empty() || !ctx.lambert_lanes[size_t(mesh.material)] || lights.selection.empty()) continue;
+      const SampleContext& sample = depth == 0 ? *path.sample : path.own;
+      uint32_t slot = 0;
+      if (light_choice_draws(lights))
+        slot = uint32_t(sample_discrete(lights.selection, drawn.has(light_choice)
+                                                              ? drawn.light_choice
+                                                              : sample_1d(sample, dimension(depth, light_choice))));
+      if (slot >= lights.delta_lights.size()) continue;
+      const LightDesc& light = scene.lights[lights.delta_lights[slot]];
+      if (light.kind != LightKind::point || light.range > 0) continue;
+      int i = l.count++;
+      w.lane_of[k] = i;
+      const uint32_t* tri = &mesh.indices[size_t(id.primitive) * 3];
+      vec3 p0 = mesh.positions[tri[0]], p1 = mesh.positions[tri[1]], p2 = mesh.positions[tri[2]];
+      l.p0x[i] = p0.x, l.p0y[i] = p0.y, l.p0z[i] = p0.z;
+      l.p1x[i] = p1.x, l.p1y[i] = p1.y, l.p1z[i] = p1.z;
+      l.p2x[i] = p2.x, l.p2y[i] = p2.y, l.p2z[i] = p2.z;
+      l.b1[i] = id.barycentric.x, l.b2[i] = id.barycentric.y;
+      l.ngx[i] = id.geometric_normal_raw.x, l.ngy[i] = id.geometric_normal_raw.y, l.ngz[i] = id.geometric_normal_raw.z;
+      l.dx[i] = path.ray.direction.x, l.dy[i] = path.ray.direction.y, l.dz[i] = path.ray.direction.z;
+      color3 albedo = ctx.lambert_albedo[size_t(mesh.material)];
+      l.albedo_r[i] = albedo.x, l.albedo_g[i] = albedo.y, l.albedo_b[i] = albedo.z;
+      l.light_x[i] = light.position.x, l.light_y[i] = light.position.y, l.light_z[i] = light.position.z;
+      l.kc[i] = light.kc, l.kl[i] = light.kl, l.kq[i] = light.kq;
+      l.intensity_r[i] = light.intensity.x, l.intensity_g[i] = light.intensity.y, l.intensity_b[i] = light.intensity.z;
+      l.select_pdf[i] = lights.selection.pmf[slot];
+      l.cosine_x[i] = drawn.cosine.x, l.cosine_y[i] = drawn.cosine.y, l.cosine_z[i] = drawn.cosine.z;
+      l.throughput_r[i] = path.throughput.x, l.throughput_g[i] = path.throughput.y, l.throughput_b[i] = path.throughput.z;
+    }
+    if (l.count > 0) shade_lambert_lanes(l);
+  }
+
+  // The rest of advance() for a vertex shaded in lane `i`: the light sample's result, the path's
+  // state and its next ray, as advance() sets them.
+  [[gnu::always_inline]] static bool finish_lambert_lane(const RenderContext& ctx, PathState& path,
+                                                        const LambertLanes& l, int i, const HitId& id,
+                                                        const VertexDraws& drawn, LightSampleResult& light,
+                                                        RayCounts& counts) {
+    color3& throughput = path.throughput;
+    light.traces = l.lit[i];
+    if (light.traces) {
+      counts.shadow++;
+      light.unblocked = {l.light_r[i], l.light_g[i], l.light_b[i]};
+      light.blocked = throughput * color3{};
+      light.shadow_ray.origin = {l.shadow_ox[i], l.shadow_oy[i], l.shadow_oz[i]};
+      light.shadow_ray.direction = {l.shadow_dx[i], l.shadow_dy[i], l.shadow_dz[i]};
+      light.shadow_ray.tmax = 1 - 1e-4f;
+    } else {
+      path.radiance += throughput * color3{};
+    }
+    if (!l.scatters[i]) return false;
+    int depth = path.depth;
+    if (!enabled<E>(ctx.effects, effect_indirect)) path.max_depth = std::min(path.max_depth, depth + 1);
+    path.ray_kind = &RayCounts::indirect;
+    color3 weight = ctx.lambert_albedo[size_t(ctx.scene->meshes[ctx.scene->instances[id.instance].mesh].material)];
+    throughput *= depth == 0 ? weight * path.split_weight : weight;
+    path.specular_bounce = false;
+    path.previous_pdf = l.pdf[i];
+    path.previous_position = {l.px[i], l.py[i], l.pz[i]};
+    path.previous_normal = {l.nx[i], l.ny[i], l.nz[i]};
+    path.ray.origin = {l.ox[i], l.oy[i], l.oz[i]};
+    path.ray.direction = {l.wix[i], l.wiy[i], l.wiz[i]};
+    path.ray.tmax = std::numeric_limits<float>::infinity();
+    path.depth = ++depth;
+    if (depth >= roulette_start_depth) {
+      float survive = std::min(1.0f, max_component(throughput) * path.split);
+      float u = drawn.has(roulette) ? drawn.roulette : sample_1d(path.own, dimension(depth, roulette));
+      if (u >= survive) return false;
+      throughput /= survive;
+    }
+    return true;
+  }
 
   // Every live path's random numbers for the vertex it is at, drawn together in SIMD, a group
   // of lanes per dimension: those its scene can use (a light point only with area or
@@ -638,7 +741,7 @@ struct PathVariant {
     static tbb::enumerable_thread_specific<BatchWorkspace> per_thread;
     BatchWorkspace& workspace = per_thread.local();
     auto& [paths, lights, rays, hits, occluded, live, shadowed, scratch, first_vertex, lanes, cosine_x, cosine_y, cosine_z, drawn,
-           lobe_choices, first_lobe_choices, light_choices] = workspace;
+           lobe_choices, first_lobe_choices, light_choices, lambert, lane_of] = workspace;
     // Without sharing there is one sub-path per camera sample (run_batch): a constant, the
     // loop below is one start per sample. Read from ctx, GCC vectorised it for any split, with
     // run-time alias checks that cost more per camera sample than the start itself.
@@ -658,10 +761,19 @@ struct PathVariant {
       int shadow_count = 0, next_count = 0;
       draw_ahead(ctx, workspace, live_count);
       if (LightSampling && ctx.lights->sampler == LightSampler::bvh) choose_lights_ahead(ctx, workspace, live_count);
+      bool in_lanes = false;
+      if constexpr (lambert_lanes_compiled && !SharesFirstVertex) {
+        in_lanes = ctx.lights->sampler == LightSampler::power && enabled<E>(ctx.effects, effect_direct_delta) &&
+                shadows_are_opaque<E>(ctx);
+        if (in_lanes) shade_in_lambert_lanes(ctx, workspace, live_count);
+      }
       for (int k = 0; k < live_count; ++k) {
         int i = live[k];
-        bool goes_on = advance<SharesFirstVertex>(ctx, paths[i], hits[k], &drawn[k], scratch, &first_vertex,
-                                                  lights[i], counts);
+        int lane = in_lanes ? lane_of[k] : -1;
+        bool goes_on = lane >= 0 && !lambert.fallback[lane]
+                           ? finish_lambert_lane(ctx, paths[i], lambert, lane, hits[k], drawn[k], lights[i], counts)
+                           : advance<SharesFirstVertex>(ctx, paths[i], hits[k], &drawn[k], scratch, &first_vertex,
+                                                        lights[i], counts);
         if (lights[i].traces) {
           rays[shadow_count] = &lights[i].shadow_ray;
           shadowed[shadow_count++] = i;

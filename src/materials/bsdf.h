@@ -23,6 +23,8 @@ using BsdfLobes = std::variant<std::monostate, LambertLobes, PhongLobes, Metalli
 class BsdfMaterial {
  public:
   explicit BsdfMaterial(const SurfaceMaterial& m);
+  // The Lambert parameters when the material is exactly Lambertian, else null.
+  const LambertParams* lambert() const { return std::get_if<LambertParams>(&params_); }
 
  private:
   friend class Bsdf;

@@ -47,6 +47,15 @@ RenderContext make_context(const PreparedScene& prepared, const ResolvedSettings
   for (const MaterialDesc& m : scene.materials) ctx.flat_materials.push_back(resolve_material(scene, m, {}));
   ctx.flat_bsdf_materials.reserve(scene.materials.size());
   for (const SurfaceMaterial& m : ctx.flat_materials) ctx.flat_bsdf_materials.emplace_back(m);
+  for (size_t i = 0; i < scene.materials.size(); ++i) {
+    const SurfaceMaterial& m = ctx.flat_materials[i];
+    const LambertParams* lambert = ctx.flat_bsdf_materials[i].lambert();
+    // Textures need not be asked about: the lanes run only where no texture is read (path.cpp).
+    ctx.lambert_lanes.push_back(lambert && max_component(lambert->albedo) > 0 && is_black(m.emission) &&
+                                !m.unlit && m.opacity >= 1 && is_black(m.kt) && !(m.transmission > 0) &&
+                                !m.has_normal_map && !m.has_bump_map);
+    ctx.lambert_albedo.push_back(lambert ? lambert->albedo : color3{});
+  }
   ctx.absorption.reserve(scene.materials.size());
   for (const MaterialDesc& m : scene.materials) ctx.absorption.push_back(volume_absorption(m));
   ctx.texture_lookup = {options.texture_filter, pyramids};

@@ -6,6 +6,8 @@
 #include <doctest/doctest.h>
 
 #include "accel/scene_accel.h"
+#include "integrators/effect_variants.h"
+#include "math/transform.h"
 #include "load_scene.h"
 #include "support/scene_builders.h"
 #include "support/test_support.h"
@@ -105,6 +107,72 @@ void require_same_render(const SceneDesc& scene, RenderOptions o, bool packets =
 }
 
 }  // namespace
+
+// A room of matte walls lit by point lights, whose vertices the batch shades in its Lambert
+// lanes (integrators/lambert_lanes.h), beside every vertex the lanes must leave to the one-path
+// code: a mesh with normals, a transformed instance, an emitting panel (an area light to
+// choose), a spot light, a point light with a range. Scaled down by `scale`, every triangle's
+// normal gets a squared length below float's normal range, and every lane falls back. Nothing in
+// it is seen through or textured, so the render's variant compiles the lanes.
+SceneDesc lambert_lanes_room(float scale) {
+  SceneDesc scene;
+  int wall = add_diffuse(scene, {0.7f, 0.6f, 0.5f});
+  add_quad(scene, {-4, 0, -4}, {-4, 0, 4}, {4, 0, 4}, {4, 0, -4}, wall);    // floor, facing up
+  add_quad(scene, {-4, 0, -4}, {4, 0, -4}, {4, 5, -4}, {-4, 5, -4}, wall);  // back wall
+  add_quad(scene, {-4, 0, -4}, {-4, 5, -4}, {-4, 5, 4}, {-4, 0, 4}, wall);  // left wall
+  MaterialDesc matte;  // glTF's exactly Lambertian material
+  matte.model = MaterialModel::metallic_roughness;
+  matte.base_color = {0.3f, 0.6f, 0.8f}, matte.metallic = 0, matte.roughness = 1, matte.specular = 0;
+  add_box(scene, {-2, 0, -2}, {-0.5f, 1.5f, -0.5f}, add_material(scene, matte));
+  add_quad(scene, {3.9f, 0.2f, -3}, {3.9f, 3, -3}, {3.9f, 3, 1}, {3.9f, 0.2f, 1}, wall);
+  scene.meshes.back().normals.assign(4, normalize(vec3{-1, 0.3f, 0.2f}));  // with normals: one path at a time
+  add_box(scene, {0.5f, 0, -2}, {1.8f, 1, -0.8f}, add_diffuse(scene, {0.9f, 0.9f, 0.9f}));
+  scene.instances.back().transform = translation({0.2f, 0.5f, 0.3f}) * rotation_axis({0, 1, 0}, 30);
+  MaterialDesc panel;
+  panel.kd = {0, 0, 0}, panel.emission = {3, 3, 2}, panel.double_sided = false;
+  add_quad(scene, {-1, 4, 1}, {1, 4, 1}, {1, 4, 3}, {-1, 4, 3}, add_material(scene, panel));  // facing down
+  scene.lights.push_back(point_light({2, 3, 2}, {8, 8, 8}));
+  scene.lights.push_back(point_light({-2, 2, 1}, {3, 4, 5}, 1, 0.5f, 0));  // .scene-style attenuation
+  LightDesc ranged = point_light({0, 1, 3}, {2, 2, 2});
+  ranged.range = 3;
+  scene.lights.push_back(ranged);
+  LightDesc spot = point_light({-2, 3.5f, 2}, {10, 9, 8});
+  spot.kind = LightKind::spot;
+  spot.direction = normalize(vec3{1, -2, -1.5f});
+  spot.use_cone = true, spot.inner_cone = 0.3f, spot.outer_cone = 0.5f;
+  scene.lights.push_back(spot);
+  scene.cameras.push_back(perspective_camera({0, 2, 6}, normalize(vec3{0, -0.25f, -1}), {0, 1, 0}, 70));
+  for (MeshDesc& mesh : scene.meshes)
+    for (vec3& p : mesh.positions) p = p * scale;
+  for (InstanceDesc& instance : scene.instances)
+    for (int row = 0; row < 3; ++row) instance.transform.m[row][3] *= scale;
+  for (LightDesc& light : scene.lights) {
+    light.position = light.position * scale, light.range *= scale;
+    light.intensity = light.intensity * (scale * scale);  // the same image, inverse square law
+  }
+  scene.cameras[0].position = scene.cameras[0].position * scale;
+  return scene;
+}
+
+TEST_CASE("batched paths: Lambert vertices shaded in SIMD lanes render what one path renders") {
+  for (float scale : {1.0f, 1e-11f}) {
+    SceneDesc scene = lambert_lanes_room(scale);
+    for (bool aovs : {false, true}) {  // AOVs: the first vertices go one path at a time
+      for (int max_depth : {1, 8}) {
+      CAPTURE(scale);
+      CAPTURE(aovs);
+      CAPTURE(max_depth);
+      RenderOptions o;
+      o.width = 30, o.height = 22, o.spp = 6, o.mode = RenderMode::path, o.max_depth = max_depth;
+      if (aovs) o.aovs = {"albedo", "normal", "depth"};
+      RenderResult result = render_scene(scene, o);
+      CHECK((result.settings.effects & (effect_group_transparency | effect_group_textures)) == 0);
+      CHECK(result.stats.rays.shadow > 1000);
+      require_same_render(scene, o);
+      }
+    }
+  }
+}
 
 TEST_CASE("batched paths: the glTF Cornell box renders the same in batches, path, naive and Whitted") {
   SceneDesc scene = load_scene(source_path("assets/cornell.gltf").string());

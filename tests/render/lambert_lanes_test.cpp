@@ -1,0 +1,181 @@
+// The Lambert lanes (integrators/lambert_lanes.h) against the one-path functions they stand in
+// for, to the bit, on every instruction set this CPU runs. The render-level check, the batch
+// against one path at a time, is in batched_paths_test.cpp.
+#include <doctest/doctest.h>
+
+#include <bit>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "accel/scene_accel.h"
+#include "integrators/lambert_lanes.h"
+#include "lights/delta_light.h"
+#include "materials/bsdf_models.h"
+#include "sampling/warp.h"
+
+using namespace radiant;
+
+namespace {
+
+bool same_bits(float a, float b) { return std::bit_cast<uint32_t>(a) == std::bit_cast<uint32_t>(b); }
+bool same_bits(vec3 a, vec3 b) { return same_bits(a.x, b.x) && same_bits(a.y, b.y) && same_bits(a.z, b.z); }
+
+struct LaneCase {
+  vec3 p0, p1, p2;
+  vec2 barycentric;
+  vec3 direction;
+  color3 albedo;
+  LightDesc light;
+  float select_pdf;
+  vec3 cosine;
+  color3 throughput;
+};
+
+void set_lane(LambertLanes& l, int i, const LaneCase& c) {
+  l.p0x[i] = c.p0.x, l.p0y[i] = c.p0.y, l.p0z[i] = c.p0.z;
+  l.p1x[i] = c.p1.x, l.p1y[i] = c.p1.y, l.p1z[i] = c.p1.z;
+  l.p2x[i] = c.p2.x, l.p2y[i] = c.p2.y, l.p2z[i] = c.p2.z;
+  l.b1[i] = c.barycentric.x, l.b2[i] = c.barycentric.y;
+  vec3 ng = cross(c.p1 - c.p0, c.p2 - c.p0);  // Embree's Ng
+  l.ngx[i] = ng.x, l.ngy[i] = ng.y, l.ngz[i] = ng.z;
+  l.dx[i] = c.direction.x, l.dy[i] = c.direction.y, l.dz[i] = c.direction.z;
+  l.albedo_r[i] = c.albedo.x, l.albedo_g[i] = c.albedo.y, l.albedo_b[i] = c.albedo.z;
+  l.light_x[i] = c.light.position.x, l.light_y[i] = c.light.position.y, l.light_z[i] = c.light.position.z;
+  l.kc[i] = c.light.kc, l.kl[i] = c.light.kl, l.kq[i] = c.light.kq;
+  l.intensity_r[i] = c.light.intensity.x, l.intensity_g[i] = c.light.intensity.y, l.intensity_b[i] = c.light.intensity.z;
+  l.select_pdf[i] = c.select_pdf;
+  l.cosine_x[i] = c.cosine.x, l.cosine_y[i] = c.cosine.y, l.cosine_z[i] = c.cosine.z;
+  l.throughput_r[i] = c.throughput.x, l.throughput_g[i] = c.throughput.y, l.throughput_b[i] = c.throughput.z;
+}
+
+// What the one-path code makes of the case: the hit as fill_triangle_hit writes it for an
+// untransformed triangle without normals, then the library's own shading, lobes, bounce, light
+// sample and ray origins.
+void check_lane(const LambertLanes& l, int i, const LaneCase& c) {
+  SurfaceHit hit;
+  vec3 e1 = c.p1 - c.p0, e2 = c.p2 - c.p0;
+  float b1 = c.barycentric.x, b2 = c.barycentric.y;
+  hit.position = c.p0 + (b1 * e1 + b2 * e2);
+  float largest = max_component(rounding_gamma(5) * (abs(b1 * e1) + abs(b2 * e2)) + rounding_gamma(2) * abs(hit.position));
+  hit.position_error = {largest, largest, largest};
+  hit.geometric_normal = normalize(cross(e1, e2));
+  hit.front_face = dot(c.direction, hit.geometric_normal) < 0;
+  REQUIRE(!l.fallback[i]);
+  vec3 wo = -normalize(c.direction);
+  vec3 normal = hit.front_face ? hit.geometric_normal : -hit.geometric_normal;
+  CHECK(same_bits({l.px[i], l.py[i], l.pz[i]}, hit.position));
+  CHECK(same_bits({l.nx[i], l.ny[i], l.nz[i]}, normal));
+  LambertLobes lobes = make_lambert_lobes({c.albedo}, normal, wo);
+  std::optional<BsdfSample> bounce = sample_warped(lobes, c.cosine);
+  REQUIRE(bool(l.scatters[i]) == bounce.has_value());
+  if (bounce) {
+    CHECK(same_bits({l.wix[i], l.wiy[i], l.wiz[i]}, bounce->wi));
+    CHECK(same_bits(l.pdf[i], bounce->pdf));
+    Ray next;
+    spawn_ray(next, hit, bounce->wi);
+    CHECK(same_bits({l.ox[i], l.oy[i], l.oz[i]}, next.origin));
+  }
+  DeltaLightSample light;
+  bool reaches = sample_delta_light(c.light, hit.position, light);
+  color3 f_cos = reaches ? eval_world(lobes, light.direction) : color3{};
+  REQUIRE(bool(l.lit[i]) == (reaches && !is_black(f_cos)));
+  if (l.lit[i]) {
+    color3 contribution = c.throughput * (f_cos * light.irradiance * color3{1, 1, 1} / c.select_pdf);
+    CHECK(same_bits({l.light_r[i], l.light_g[i], l.light_b[i]}, contribution));
+    Ray shadow;
+    spawn_ray_to(shadow, hit, hit.position + light.direction * light.distance);
+    CHECK(same_bits({l.shadow_ox[i], l.shadow_oy[i], l.shadow_oz[i]}, shadow.origin));
+    CHECK(same_bits({l.shadow_dx[i], l.shadow_dy[i], l.shadow_dz[i]}, shadow.direction));
+  }
+}
+
+std::vector<LaneCase> lane_cases() {
+  uint32_t state = 11;
+  auto next = [&] { return float((state = state * 1664525u + 1013904223u) >> 8) * 0x1p-24f; };
+  auto point = [&](float scale) { return vec3{next() - 0.5f, next() - 0.5f, next() - 0.5f} * scale; };
+  std::vector<LaneCase> cases;
+  for (int k = 0; k < 200; ++k) {
+    LaneCase c;
+    float scale = k % 4 == 0 ? 1e4f : 2;
+    vec3 corner = point(scale) + (k % 5 == 0 ? vec3{1e5f, 0, 0} : vec3{});  // far from the origin too
+    c.p0 = corner, c.p1 = corner + point(1), c.p2 = corner + point(1);
+    float u = next(), v = next() * (1 - u);
+    c.barycentric = {u, v};
+    c.direction = point(3);
+    c.albedo = {next(), next(), k % 7 == 0 ? 0.0f : next()};
+    c.light = LightDesc{};
+    c.light.kind = LightKind::point;
+    c.light.position = corner + point(4);
+    c.light.intensity = {5 * next(), 5 * next(), 5 * next()};
+    c.light.kc = k % 3 == 0 ? 1.0f : 0.0f, c.light.kl = k % 3 == 1 ? 0.5f : 0.0f, c.light.kq = k % 3 == 2 ? 0.0f : 1.0f;
+    c.select_pdf = 0.25f + next();
+    c.cosine = sample_cosine_hemisphere({next(), next()});
+    c.throughput = {next(), next(), next()};
+    cases.push_back(c);
+  }
+  // A triangle in a coordinate plane, hit at a vertex on the origin (exact zeros: the offset's
+  // floor and the one-ulp step from zero), lit from below and from behind the ray.
+  LaneCase plane = cases[1];
+  plane.p0 = {0, 0, 0}, plane.p1 = {1, 0, 0}, plane.p2 = {0, 0, 1}, plane.barycentric = {0, 0};
+  plane.direction = {0.2f, -1, 0.1f};
+  cases.push_back(plane);
+  plane.light.position = {0.3f, -2, 0.3f};
+  cases.push_back(plane);
+  plane.direction = {0.2f, 1, 0.1f};
+  cases.push_back(plane);
+  // A grazing ray, a bounce below the cosine floor, and the light at the hit itself.
+  LaneCase grazing = cases[2];
+  grazing.direction = grazing.p1 - grazing.p0;
+  cases.push_back(grazing);
+  LaneCase low = cases[3];
+  low.cosine = {1, 0, 1e-8f};
+  cases.push_back(low);
+  LaneCase at_light = plane;
+  at_light.light.position = {0, 0, 0};
+  cases.push_back(at_light);
+  return cases;
+}
+
+}  // namespace
+
+TEST_CASE("Lambert lanes: each lane is the one-path vertex to the bit, on every instruction set") {
+  std::vector<LaneCase> cases = lane_cases();
+  REQUIRE(int(cases.size()) <= LambertLanes::capacity);
+  int lit = 0, scatters = 0;
+  for (LaneIsa isa : {LaneIsa::best, LaneIsa::baseline, LaneIsa::avx2}) {
+    if (!lane_isa_available(isa)) continue;
+    CAPTURE(int(isa));
+    auto lanes = std::make_unique<LambertLanes>();
+    for (size_t i = 0; i < cases.size(); ++i) set_lane(*lanes, int(i), cases[i]);
+    lanes->count = int(cases.size());
+    shade_lambert_lanes(*lanes, isa);
+    lit = scatters = 0;
+    for (size_t i = 0; i < cases.size(); ++i) {
+      CAPTURE(i);
+      check_lane(*lanes, int(i), cases[i]);
+      lit += lanes->lit[i], scatters += lanes->scatters[i];
+    }
+  }
+  // Both outcomes of both tests occur.
+  CHECK(lit > 20);
+  CHECK(lit < int(cases.size()) - 20);
+  CHECK(scatters > 20);
+  CHECK(scatters < int(cases.size()));
+}
+
+TEST_CASE("Lambert lanes: a normal whose squared length leaves float's range falls back to one path") {
+  auto lanes = std::make_unique<LambertLanes>();
+  LaneCase huge = lane_cases()[1];
+  huge.p0 = {-1e20f, 0, -1e20f}, huge.p1 = {-1e20f, 0, 1e20f}, huge.p2 = {1e20f, 0, 1e20f};  // Ng overflows
+  set_lane(*lanes, 0, huge);
+  LaneCase tiny = huge;
+  tiny.p0 = {0, 0, 0}, tiny.p1 = {0, 0, 1e-20f}, tiny.p2 = {1e-20f, 0, 0};  // Ng's squared length underflows
+  set_lane(*lanes, 1, tiny);
+  set_lane(*lanes, 2, lane_cases()[0]);
+  lanes->count = 3;
+  shade_lambert_lanes(*lanes);
+  CHECK(lanes->fallback[0]);
+  CHECK(lanes->fallback[1]);
+  CHECK(!lanes->fallback[2]);
+}
