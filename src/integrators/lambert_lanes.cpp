@@ -37,7 +37,7 @@ namespace {
   return {step_lane(po.x, away.x), step_lane(po.y, away.y), step_lane(po.z, away.z)};
 }
 
-// One lane: make_surface_hit (an untransformed triangle without normals), make_hit_shading,
+// One lane: make_surface_hit (an untransformed triangle), make_hit_shading,
 // the Lambert lobes and their bounce (sample_warped), then sample_one_light for a point light
 // without range with opaque shadows, and the two rays' origins (spawn_ray, spawn_ray_to).
 [[gnu::always_inline]] inline void shade_lane(LambertLanes& l, int i) {
@@ -55,14 +55,25 @@ namespace {
   bool normal_in_range, direction_in_range;
   vec3 geometric_normal = normalize_in_range({l.ngx[i], l.ngy[i], l.ngz[i]}, normal_in_range);
   bool front_face = dot(direction, geometric_normal) < 0;
+  // Interpolated vertex normals, on the geometric normal's side, where they are usable.
+  float b0 = 1 - b1 - b2;
+  vec3 interpolated = vec3{l.n0x[i], l.n0y[i], l.n0z[i]} * b0 + vec3{l.n1x[i], l.n1y[i], l.n1z[i]} * b1 +
+                      vec3{l.n2x[i], l.n2y[i], l.n2z[i]} * b2;
+  bool has_normals = l.has_normals[i] != 0, interpolated_in_range;
+  vec3 n = normalize_in_range(interpolated, interpolated_in_range);
+  constexpr float largest_float = std::numeric_limits<float>::max();
+  bool usable = has_normals & (std::abs(n.x) <= largest_float) & (std::abs(n.y) <= largest_float) &
+                (std::abs(n.z) <= largest_float) & (length_squared(n) > 0.5f);
+  vec3 facing = dot(n, geometric_normal) < 0 ? -n : n;
+  vec3 shading_normal = usable ? facing : geometric_normal;
 
   // Its shading (hit_shading.h) and the Lambert lobes (lambert_bsdf.cpp).
   vec3 wo = -normalize_in_range(direction, direction_in_range);
-  vec3 normal = front_face ? geometric_normal : -geometric_normal;
+  vec3 normal = front_face ? shading_normal : -shading_normal;
   float cos_o = dot(normal, wo);
   vec3 lobe_normal = cos_o < 0 ? -normal : normal;
   // std::isfinite(cos_o), as a comparison.
-  bool valid = (std::abs(cos_o) > lambert_min_cosine) & (std::abs(cos_o) <= std::numeric_limits<float>::max());
+  bool valid = (std::abs(cos_o) > lambert_min_cosine) & (std::abs(cos_o) <= largest_float);
 
   // The bounce from the cosine-warped direction.
   vec3 local = {l.cosine_x[i], l.cosine_y[i], l.cosine_z[i]};
@@ -85,7 +96,7 @@ namespace {
   vec3 shadow_origin = offset_lane(point, error, geometric_normal, target - point);
   vec3 next_origin = offset_lane(point, error, geometric_normal, wi);
 
-  l.fallback[i] = !(normal_in_range & direction_in_range);
+  l.fallback[i] = !(normal_in_range & direction_in_range & (interpolated_in_range | !has_normals));
   l.scatters[i] = scatters;
   l.lit[i] = lit;
   l.px[i] = point.x, l.py[i] = point.y, l.pz[i] = point.z;

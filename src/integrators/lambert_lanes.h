@@ -1,5 +1,5 @@
-// A batch's commonest path vertex shaded across SIMD lanes: a triangle of an untransformed mesh
-// without normals, a Lambert material, lit by one point light through opaque shadows. The
+// A batch's commonest path vertex shaded across SIMD lanes: a triangle of an untransformed mesh,
+// a Lambert material, lit by one point light through opaque shadows. The
 // batched path tracer (integrators/path.cpp) gathers such vertices of a stage into these lanes,
 // shades them together and scatters the results back; every other vertex, and every lane this
 // kernel cannot finish (`fallback`), is shaded one path at a time. Each lane's results are what
@@ -15,8 +15,8 @@ namespace radiant {
 
 struct LambertLanes {
   static constexpr int capacity = max_batch_paths;
-  // Inputs: the triangle (its vertices, Embree's barycentrics and unnormalised normal), the
-  // ray's direction, the albedo, the chosen light (position, attenuation, intensity, the
+  // Inputs: the triangle (its vertices, Embree's barycentrics and unnormalised normal, and its
+  // vertex normals where `has_normals`), the ray's direction, the albedo, the chosen light (position, attenuation, intensity, the
   // probability it was chosen with), the bounce's cosine-warped local direction and the path's
   // throughput.
   alignas(32) float p0x[capacity], p0y[capacity], p0z[capacity];
@@ -24,6 +24,10 @@ struct LambertLanes {
   alignas(32) float p2x[capacity], p2y[capacity], p2z[capacity];
   alignas(32) float b1[capacity], b2[capacity];
   alignas(32) float ngx[capacity], ngy[capacity], ngz[capacity];
+  alignas(32) int32_t has_normals[capacity];
+  alignas(32) float n0x[capacity], n0y[capacity], n0z[capacity];
+  alignas(32) float n1x[capacity], n1y[capacity], n1z[capacity];
+  alignas(32) float n2x[capacity], n2y[capacity], n2z[capacity];
   alignas(32) float dx[capacity], dy[capacity], dz[capacity];
   alignas(32) float albedo_r[capacity], albedo_g[capacity], albedo_b[capacity];
   alignas(32) float light_x[capacity], light_y[capacity], light_z[capacity];

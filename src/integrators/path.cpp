@@ -540,7 +540,7 @@ struct PathVariant {
       LightSampling && !(E & effect_group_textures) && !(E & effect_group_transparency);
 
   // Gathers the stage's vertices that the Lambert lanes can shade (lambert_lanes.h) and shades
-  // them: a live path at a hit of an untransformed triangle without normals, whose material is
+  // them: a live path at a hit of an untransformed triangle, whose material is
   // a lane material, which chooses a point light without range. Its light is chosen here, as
   // sample_one_light would choose it.
   [[gnu::noinline]] static void shade_in_lambert_lanes(const RenderContext& ctx, BatchWorkspace& w, int live_count) {
@@ -559,7 +559,7 @@ struct PathVariant {
           !(depth > 0 || path.gathers_first_vertex) || !drawn.has(bsdf_direction) || !accel.instance_identity[id.instance])
         continue;
       const MeshDesc& mesh = scene.meshes[scene.instances[id.instance].mesh];
-      if (!mesh.normals.empty() || !ctx.lambert_lanes[size_t(mesh.material)] || lights.selection.empty()) continue;
+      if (!ctx.lambert_lanes[size_t(mesh.material)] || lights.selection.empty()) continue;
       const SampleContext& sample = depth == 0 ? *path.sample : path.own;
       uint32_t slot = 0;
       if (light_choice_draws(lights))
@@ -578,6 +578,12 @@ struct PathVariant {
       l.p2x[i] = p2.x, l.p2y[i] = p2.y, l.p2z[i] = p2.z;
       l.b1[i] = id.barycentric.x, l.b2[i] = id.barycentric.y;
       l.ngx[i] = id.geometric_normal_raw.x, l.ngy[i] = id.geometric_normal_raw.y, l.ngz[i] = id.geometric_normal_raw.z;
+      l.has_normals[i] = !mesh.normals.empty();
+      vec3 n0, n1, n2;  // zero without normals: the lane then ignores them
+      if (l.has_normals[i]) n0 = mesh.normals[tri[0]], n1 = mesh.normals[tri[1]], n2 = mesh.normals[tri[2]];
+      l.n0x[i] = n0.x, l.n0y[i] = n0.y, l.n0z[i] = n0.z;
+      l.n1x[i] = n1.x, l.n1y[i] = n1.y, l.n1z[i] = n1.z;
+      l.n2x[i] = n2.x, l.n2y[i] = n2.y, l.n2z[i] = n2.z;
       l.dx[i] = path.ray.direction.x, l.dy[i] = path.ray.direction.y, l.dz[i] = path.ray.direction.z;
       color3 albedo = ctx.lambert_albedo[size_t(mesh.material)];
       l.albedo_r[i] = albedo.x, l.albedo_g[i] = albedo.y, l.albedo_b[i] = albedo.z;

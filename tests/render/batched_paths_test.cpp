@@ -109,8 +109,9 @@ void require_same_render(const SceneDesc& scene, RenderOptions o, bool packets =
 }  // namespace
 
 // A room of matte walls lit by point lights, whose vertices the batch shades in its Lambert
-// lanes (integrators/lambert_lanes.h), beside every vertex the lanes must leave to the one-path
-// code: a mesh with normals, a transformed instance, an emitting panel (an area light to
+// lanes (integrators/lambert_lanes.h), one wall with vertex normals, beside every vertex the
+// lanes must leave to the one-path code: vertex normals that are all zero, a transformed
+// instance, an emitting panel (an area light to
 // choose), a spot light, a point light with a range. Scaled down by `scale`, every triangle's
 // normal gets a squared length below float's normal range, and every lane falls back. Nothing in
 // it is seen through or textured, so the render's variant compiles the lanes.
@@ -125,7 +126,10 @@ SceneDesc lambert_lanes_room(float scale) {
   matte.base_color = {0.3f, 0.6f, 0.8f}, matte.metallic = 0, matte.roughness = 1, matte.specular = 0;
   add_box(scene, {-2, 0, -2}, {-0.5f, 1.5f, -0.5f}, add_material(scene, matte));
   add_quad(scene, {3.9f, 0.2f, -3}, {3.9f, 3, -3}, {3.9f, 3, 1}, {3.9f, 0.2f, 1}, wall);
-  scene.meshes.back().normals.assign(4, normalize(vec3{-1, 0.3f, 0.2f}));  // with normals: one path at a time
+  scene.meshes.back().normals = {normalize(vec3{-1, 0.3f, 0.2f}), normalize(vec3{-1, -0.2f, 0}),
+                                 normalize(vec3{-0.8f, 0, 0.4f}), {-1, 0, 0}};
+  add_quad(scene, {-3.9f, 0.2f, 1}, {-3.9f, 3, 1}, {-3.9f, 3, 3}, {-3.9f, 0.2f, 3}, wall);
+  scene.meshes.back().normals.assign(4, vec3{0, 0, 0});  // normalize() rescales: one path at a time
   add_box(scene, {0.5f, 0, -2}, {1.8f, 1, -0.8f}, add_diffuse(scene, {0.9f, 0.9f, 0.9f}));
   scene.instances.back().transform = translation({0.2f, 0.5f, 0.3f}) * rotation_axis({0, 1, 0}, 30);
   MaterialDesc panel;

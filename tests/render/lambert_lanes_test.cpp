@@ -24,6 +24,8 @@ bool same_bits(vec3 a, vec3 b) { return same_bits(a.x, b.x) && same_bits(a.y, b.
 struct LaneCase {
   vec3 p0, p1, p2;
   vec2 barycentric;
+  bool has_normals = false;
+  vec3 n0, n1, n2;  // vertex normals, when it has them
   vec3 direction;
   color3 albedo;
   LightDesc light;
@@ -39,6 +41,10 @@ void set_lane(LambertLanes& l, int i, const LaneCase& c) {
   l.b1[i] = c.barycentric.x, l.b2[i] = c.barycentric.y;
   vec3 ng = cross(c.p1 - c.p0, c.p2 - c.p0);  // Embree's Ng
   l.ngx[i] = ng.x, l.ngy[i] = ng.y, l.ngz[i] = ng.z;
+  l.has_normals[i] = c.has_normals;
+  l.n0x[i] = c.n0.x, l.n0y[i] = c.n0.y, l.n0z[i] = c.n0.z;
+  l.n1x[i] = c.n1.x, l.n1y[i] = c.n1.y, l.n1z[i] = c.n1.z;
+  l.n2x[i] = c.n2.x, l.n2y[i] = c.n2.y, l.n2z[i] = c.n2.z;
   l.dx[i] = c.direction.x, l.dy[i] = c.direction.y, l.dz[i] = c.direction.z;
   l.albedo_r[i] = c.albedo.x, l.albedo_g[i] = c.albedo.y, l.albedo_b[i] = c.albedo.z;
   l.light_x[i] = c.light.position.x, l.light_y[i] = c.light.position.y, l.light_z[i] = c.light.position.z;
@@ -50,7 +56,7 @@ void set_lane(LambertLanes& l, int i, const LaneCase& c) {
 }
 
 // What the one-path code makes of the case: the hit as fill_triangle_hit writes it for an
-// untransformed triangle without normals, then the library's own shading, lobes, bounce, light
+// untransformed triangle, then the library's own shading, lobes, bounce, light
 // sample and ray origins.
 void check_lane(const LambertLanes& l, int i, const LaneCase& c) {
   SurfaceHit hit;
@@ -61,9 +67,14 @@ void check_lane(const LambertLanes& l, int i, const LaneCase& c) {
   hit.position_error = {largest, largest, largest};
   hit.geometric_normal = normalize(cross(e1, e2));
   hit.front_face = dot(c.direction, hit.geometric_normal) < 0;
+  hit.shading_normal = hit.geometric_normal;
+  if (c.has_normals) {
+    vec3 n = normalize(c.n0 * (1 - b1 - b2) + c.n1 * b1 + c.n2 * b2);
+    if (is_finite(n) && length_squared(n) > 0.5f) hit.shading_normal = dot(n, hit.geometric_normal) < 0 ? -n : n;
+  }
   REQUIRE(!l.fallback[i]);
   vec3 wo = -normalize(c.direction);
-  vec3 normal = hit.front_face ? hit.geometric_normal : -hit.geometric_normal;
+  vec3 normal = hit.front_face ? hit.shading_normal : -hit.shading_normal;
   CHECK(same_bits({l.px[i], l.py[i], l.pz[i]}, hit.position));
   CHECK(same_bits({l.nx[i], l.ny[i], l.nz[i]}, normal));
   LambertLobes lobes = make_lambert_lobes({c.albedo}, normal, wo);
@@ -112,6 +123,10 @@ std::vector<LaneCase> lane_cases() {
     c.select_pdf = 0.25f + next();
     c.cosine = sample_cosine_hemisphere({next(), next()});
     c.throughput = {next(), next(), next()};
+    if (k % 2 == 1) {  // vertex normals, some of them turned against the triangle's
+      c.has_normals = true;
+      c.n0 = normalize(point(2)), c.n1 = normalize(point(2)), c.n2 = normalize(point(2));
+    }
     cases.push_back(c);
   }
   // A triangle in a coordinate plane, hit at a vertex on the origin (exact zeros: the offset's
@@ -134,6 +149,11 @@ std::vector<LaneCase> lane_cases() {
   LaneCase at_light = plane;
   at_light.light.position = {0, 0, 0};
   cases.push_back(at_light);
+  // Vertex normals that nearly cancel where the triangle is hit: what is left is normalised.
+  LaneCase cancelling = cases[5];
+  cancelling.has_normals = true;
+  cancelling.n0 = {0, 1, 0}, cancelling.n1 = {0, -1, 0}, cancelling.n2 = {0.01f, 1, 0}, cancelling.barycentric = {0.49f, 0.02f};
+  cases.push_back(cancelling);
   return cases;
 }
 
@@ -165,6 +185,7 @@ TEST_CASE("Lambert lanes: each lane is the one-path vertex to the bit, on every 
 }
 
 TEST_CASE("Lambert lanes: a normal whose squared length leaves float's range falls back to one path") {
+  // The geometric normal's or the interpolated vertex normal's: normalize() rescales there.
   auto lanes = std::make_unique<LambertLanes>();
   LaneCase huge = lane_cases()[1];
   huge.p0 = {-1e20f, 0, -1e20f}, huge.p1 = {-1e20f, 0, 1e20f}, huge.p2 = {1e20f, 0, 1e20f};  // Ng overflows
@@ -172,10 +193,19 @@ TEST_CASE("Lambert lanes: a normal whose squared length leaves float's range fal
   LaneCase tiny = huge;
   tiny.p0 = {0, 0, 0}, tiny.p1 = {0, 0, 1e-20f}, tiny.p2 = {1e-20f, 0, 0};  // Ng's squared length underflows
   set_lane(*lanes, 1, tiny);
-  set_lane(*lanes, 2, lane_cases()[0]);
-  lanes->count = 3;
+  LaneCase zero_normals = lane_cases()[0];  // normalize() rescales the zero vector
+  zero_normals.has_normals = true;
+  set_lane(*lanes, 2, zero_normals);
+  LaneCase infinite_normal = zero_normals;  // and infinities
+  infinite_normal.n0 = {0, 1, 0}, infinite_normal.n1 = {0, 1, 0};
+  infinite_normal.n2 = {std::numeric_limits<float>::infinity(), 0, 0};
+  set_lane(*lanes, 3, infinite_normal);
+  set_lane(*lanes, 4, lane_cases()[0]);
+  lanes->count = 5;
   shade_lambert_lanes(*lanes);
   CHECK(lanes->fallback[0]);
   CHECK(lanes->fallback[1]);
-  CHECK(!lanes->fallback[2]);
+  CHECK(lanes->fallback[2]);
+  CHECK(lanes->fallback[3]);
+  CHECK(!lanes->fallback[4]);
 }
