@@ -1,5 +1,5 @@
 // A batch's commonest path vertex shaded across SIMD lanes: a triangle of an untransformed mesh,
-// a Lambert material, lit by one point light through opaque shadows. The
+// a Lambert material, lit through opaque shadows by one point light or one emitting triangle. The
 // batched path tracer (integrators/path.cpp) gathers such vertices of a stage into these lanes,
 // shades them together and scatters the results back; every other vertex, and every lane this
 // kernel cannot finish (`fallback`), is shaded one path at a time. Each lane's results are what
@@ -20,9 +20,11 @@ struct LambertLanes {
   // render's time once vertex normals added ten arrays).
   static constexpr int stride = capacity + 16;
   // Inputs: the triangle (its vertices, Embree's barycentrics and unnormalised normal, and its
-  // vertex normals where `has_normals`), the ray's direction, the albedo, the chosen light (position, attenuation, intensity, the
-  // probability it was chosen with), the bounce's cosine-warped local direction and the path's
-  // throughput.
+  // vertex normals where `has_normals`), the ray's direction, the albedo, the chosen light and
+  // the probability it was chosen with, the bounce's cosine-warped local direction and the
+  // path's throughput. The light: a point light's position, attenuation and intensity; or,
+  // where `area`, an emitting triangle's corners (light_* the first), front normal, area,
+  // sidedness and emission (in intensity_*), and the point's random numbers.
   alignas(32) float p0x[stride], p0y[stride], p0z[stride];
   alignas(32) float p1x[stride], p1y[stride], p1z[stride];
   alignas(32) float p2x[stride], p2y[stride], p2z[stride];
@@ -37,6 +39,13 @@ struct LambertLanes {
   alignas(32) float light_x[stride], light_y[stride], light_z[stride];
   alignas(32) float kc[stride], kl[stride], kq[stride];
   alignas(32) float intensity_r[stride], intensity_g[stride], intensity_b[stride];
+  alignas(32) int32_t area[stride];
+  alignas(32) float light1_x[stride], light1_y[stride], light1_z[stride];
+  alignas(32) float light2_x[stride], light2_y[stride], light2_z[stride];
+  alignas(32) float light_nx[stride], light_ny[stride], light_nz[stride];
+  alignas(32) float light_area[stride];
+  alignas(32) int32_t two_sided[stride];
+  alignas(32) float u_point_x[stride], u_point_y[stride];
   alignas(32) float select_pdf[stride];
   alignas(32) float cosine_x[stride], cosine_y[stride], cosine_z[stride];
   alignas(32) float throughput_r[stride], throughput_g[stride], throughput_b[stride];
@@ -55,7 +64,13 @@ struct LambertLanes {
   alignas(32) float shadow_ox[stride], shadow_oy[stride], shadow_oz[stride];
   alignas(32) float shadow_dx[stride], shadow_dy[stride], shadow_dz[stride];
   alignas(32) float light_r[stride], light_g[stride], light_b[stride];
+  // Between the kernel's two loops, for the triangle lights: each hit's geometric normal, error
+  // bound, Lambert lobe normal and whether the lobes are valid.
+  alignas(32) float gnx[stride], gny[stride], gnz[stride], error[stride];
+  alignas(32) float lobe_nx[stride], lobe_ny[stride], lobe_nz[stride];
+  alignas(32) int32_t valid[stride];
   int count = 0;
+  bool any_area = false;  // whether any lane's light is a triangle (else the kernel skips them)
 };
 
 // Shades lanes [0, count).

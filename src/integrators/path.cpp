@@ -540,15 +540,16 @@ struct PathVariant {
       LightSampling && !(E & effect_group_textures) && !(E & effect_group_transparency);
 
   // Gathers the stage's vertices that the Lambert lanes can shade (lambert_lanes.h) and shades
-  // them: a live path at a hit of an untransformed triangle, whose material is
-  // a lane material, which chooses a point light without range. Its light is chosen here, as
-  // sample_one_light would choose it.
+  // them: a live path at a hit of an untransformed triangle, whose material is a lane material,
+  // which chooses a point light without range or an emitting triangle. Its light is chosen, and
+  // a triangle's point drawn, here, as sample_one_light would.
   [[gnu::noinline]] static void shade_in_lambert_lanes(const RenderContext& ctx, BatchWorkspace& w, int live_count) {
     const SceneDesc& scene = *ctx.scene;
     const SceneAccel& accel = *ctx.accel;
     const LightTable& lights = *ctx.lights;
     LambertLanes& l = w.lambert;
     l.count = 0;
+    l.any_area = false;
     for (int k = 0; k < live_count; ++k) {
       w.lane_of[k] = -1;
       const PathState& path = w.paths[w.live[k]];
@@ -566,9 +567,18 @@ struct PathVariant {
         slot = uint32_t(sample_discrete(lights.selection, drawn.has(light_choice)
                                                               ? drawn.light_choice
                                                               : sample_1d(sample, dimension(depth, light_choice))));
-      if (slot >= lights.delta_lights.size()) continue;
-      const LightDesc& light = scene.lights[lights.delta_lights[slot]];
-      if (light.kind != LightKind::point || light.range > 0) continue;
+      // A point light without range, or an emitting triangle (not a sphere, nor the environment).
+      const LightDesc* point = nullptr;
+      const AreaLight* triangle = nullptr;
+      if (slot < lights.delta_lights.size()) {
+        point = &scene.lights[lights.delta_lights[slot]];
+        if (point->kind != LightKind::point || point->range > 0) continue;
+      } else if (slot < lights.environment_slot()) {
+        triangle = &lights.area_lights[slot - lights.delta_lights.size()];
+        if (triangle->shape != AreaLightShape::triangle || !enabled<E>(ctx.effects, effect_emission)) continue;
+      } else {
+        continue;
+      }
       int i = l.count++;
       w.lane_of[k] = i;
       const uint32_t* tri = &mesh.indices[size_t(id.primitive) * 3];
@@ -587,9 +597,26 @@ struct PathVariant {
       l.dx[i] = path.ray.direction.x, l.dy[i] = path.ray.direction.y, l.dz[i] = path.ray.direction.z;
       color3 albedo = ctx.lambert_albedo[size_t(mesh.material)];
       l.albedo_r[i] = albedo.x, l.albedo_g[i] = albedo.y, l.albedo_b[i] = albedo.z;
-      l.light_x[i] = light.position.x, l.light_y[i] = light.position.y, l.light_z[i] = light.position.z;
-      l.kc[i] = light.kc, l.kl[i] = light.kl, l.kq[i] = light.kq;
-      l.intensity_r[i] = light.intensity.x, l.intensity_g[i] = light.intensity.y, l.intensity_b[i] = light.intensity.z;
+      l.area[i] = triangle != nullptr;
+      if (point) {
+        l.light_x[i] = point->position.x, l.light_y[i] = point->position.y, l.light_z[i] = point->position.z;
+        l.kc[i] = point->kc, l.kl[i] = point->kl, l.kq[i] = point->kq;
+        l.intensity_r[i] = point->intensity.x, l.intensity_g[i] = point->intensity.y, l.intensity_b[i] = point->intensity.z;
+      } else {
+        l.any_area = true;
+        l.light_x[i] = triangle->p0.x, l.light_y[i] = triangle->p0.y, l.light_z[i] = triangle->p0.z;
+        l.light1_x[i] = triangle->p1.x, l.light1_y[i] = triangle->p1.y, l.light1_z[i] = triangle->p1.z;
+        l.light2_x[i] = triangle->p2.x, l.light2_y[i] = triangle->p2.y, l.light2_z[i] = triangle->p2.z;
+        l.light_nx[i] = triangle->normal.x, l.light_ny[i] = triangle->normal.y, l.light_nz[i] = triangle->normal.z;
+        l.light_area[i] = triangle->area;
+        l.two_sided[i] = triangle->two_sided;
+        color3 emission = ctx.flat_materials[size_t(triangle->material)].emission;  // no texture is read
+        l.intensity_r[i] = emission.x, l.intensity_g[i] = emission.y, l.intensity_b[i] = emission.z;
+        vec2 u = drawn.has(light_point) ? drawn.light_point : sample_2d(sample, dimension(depth, light_point));
+        l.u_point_x[i] = u.x, l.u_point_y[i] = u.y;
+        // A point light's fields the kernel also reads (its results are discarded): finite values.
+        l.kc[i] = 1, l.kl[i] = l.kq[i] = 0;
+      }
       l.select_pdf[i] = lights.selection.pmf[slot];
       l.cosine_x[i] = drawn.cosine.x, l.cosine_y[i] = drawn.cosine.y, l.cosine_z[i] = drawn.cosine.z;
       l.throughput_r[i] = path.throughput.x, l.throughput_g[i] = path.throughput.y, l.throughput_b[i] = path.throughput.z;

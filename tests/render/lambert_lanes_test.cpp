@@ -10,6 +10,7 @@
 
 #include "accel/scene_accel.h"
 #include "integrators/lambert_lanes.h"
+#include "lights/area_light.h"
 #include "lights/delta_light.h"
 #include "materials/bsdf_models.h"
 #include "sampling/warp.h"
@@ -28,7 +29,11 @@ struct LaneCase {
   vec3 n0, n1, n2;  // vertex normals, when it has them
   vec3 direction;
   color3 albedo;
-  LightDesc light;
+  LightDesc light;         // a point light, unless `area`
+  bool area = false;       // an emitting triangle instead
+  AreaLight triangle;
+  color3 emission;
+  vec2 u_point;
   float select_pdf;
   vec3 cosine;
   color3 throughput;
@@ -47,9 +52,23 @@ void set_lane(LambertLanes& l, int i, const LaneCase& c) {
   l.n2x[i] = c.n2.x, l.n2y[i] = c.n2.y, l.n2z[i] = c.n2.z;
   l.dx[i] = c.direction.x, l.dy[i] = c.direction.y, l.dz[i] = c.direction.z;
   l.albedo_r[i] = c.albedo.x, l.albedo_g[i] = c.albedo.y, l.albedo_b[i] = c.albedo.z;
-  l.light_x[i] = c.light.position.x, l.light_y[i] = c.light.position.y, l.light_z[i] = c.light.position.z;
-  l.kc[i] = c.light.kc, l.kl[i] = c.light.kl, l.kq[i] = c.light.kq;
-  l.intensity_r[i] = c.light.intensity.x, l.intensity_g[i] = c.light.intensity.y, l.intensity_b[i] = c.light.intensity.z;
+  l.area[i] = c.area;
+  if (c.area) {
+    l.any_area = true;
+    const AreaLight& t = c.triangle;
+    l.light_x[i] = t.p0.x, l.light_y[i] = t.p0.y, l.light_z[i] = t.p0.z;
+    l.light1_x[i] = t.p1.x, l.light1_y[i] = t.p1.y, l.light1_z[i] = t.p1.z;
+    l.light2_x[i] = t.p2.x, l.light2_y[i] = t.p2.y, l.light2_z[i] = t.p2.z;
+    l.light_nx[i] = t.normal.x, l.light_ny[i] = t.normal.y, l.light_nz[i] = t.normal.z;
+    l.light_area[i] = t.area, l.two_sided[i] = t.two_sided;
+    l.intensity_r[i] = c.emission.x, l.intensity_g[i] = c.emission.y, l.intensity_b[i] = c.emission.z;
+    l.u_point_x[i] = c.u_point.x, l.u_point_y[i] = c.u_point.y;
+    l.kc[i] = 1, l.kl[i] = l.kq[i] = 0;
+  } else {
+    l.light_x[i] = c.light.position.x, l.light_y[i] = c.light.position.y, l.light_z[i] = c.light.position.z;
+    l.kc[i] = c.light.kc, l.kl[i] = c.light.kl, l.kq[i] = c.light.kq;
+    l.intensity_r[i] = c.light.intensity.x, l.intensity_g[i] = c.light.intensity.y, l.intensity_b[i] = c.light.intensity.z;
+  }
   l.select_pdf[i] = c.select_pdf;
   l.cosine_x[i] = c.cosine.x, l.cosine_y[i] = c.cosine.y, l.cosine_z[i] = c.cosine.z;
   l.throughput_r[i] = c.throughput.x, l.throughput_g[i] = c.throughput.y, l.throughput_b[i] = c.throughput.z;
@@ -87,15 +106,38 @@ void check_lane(const LambertLanes& l, int i, const LaneCase& c) {
     spawn_ray(next, hit, bounce->wi);
     CHECK(same_bits({l.ox[i], l.oy[i], l.oz[i]}, next.origin));
   }
-  DeltaLightSample light;
-  bool reaches = sample_delta_light(c.light, hit.position, light);
-  color3 f_cos = reaches ? eval_world(lobes, light.direction) : color3{};
-  REQUIRE(bool(l.lit[i]) == (reaches && !is_black(f_cos)));
-  if (l.lit[i]) {
-    color3 contribution = c.throughput * (f_cos * light.irradiance * color3{1, 1, 1} / c.select_pdf);
+  // sample_one_light's contribution and shadow ray for either kind of light.
+  bool lit = false;
+  color3 contribution;
+  vec3 direction;
+  float distance = 0;
+  if (c.area) {
+    AreaLightSample sample;
+    lit = sample_area_light(c.triangle, hit.position, c.u_point, sample) &&
+          area_light_emits(c.triangle, sample.normal, -sample.direction) && !is_black(c.emission);
+    float bsdf_pdf;
+    color3 f_cos = lit ? eval_world(lobes, sample.direction, bsdf_pdf) : color3{};
+    lit = lit && !is_black(f_cos);
+    if (lit) {
+      float pdf = c.select_pdf * sample.pdf;
+      contribution = c.throughput * (f_cos * c.emission * color3{1, 1, 1} * (power_heuristic(pdf, bsdf_pdf) / pdf));
+      direction = sample.direction, distance = sample.distance * (1 - 1e-4f);
+    }
+  } else {
+    DeltaLightSample light;
+    bool reaches = sample_delta_light(c.light, hit.position, light);
+    color3 f_cos = reaches ? eval_world(lobes, light.direction) : color3{};
+    lit = reaches && !is_black(f_cos);
+    if (lit) {
+      contribution = c.throughput * (f_cos * light.irradiance * color3{1, 1, 1} / c.select_pdf);
+      direction = light.direction, distance = light.distance;
+    }
+  }
+  REQUIRE(bool(l.lit[i]) == lit);
+  if (lit) {
     CHECK(same_bits({l.light_r[i], l.light_g[i], l.light_b[i]}, contribution));
     Ray shadow;
-    spawn_ray_to(shadow, hit, hit.position + light.direction * light.distance);
+    spawn_ray_to(shadow, hit, hit.position + direction * distance);
     CHECK(same_bits({l.shadow_ox[i], l.shadow_oy[i], l.shadow_oz[i]}, shadow.origin));
     CHECK(same_bits({l.shadow_dx[i], l.shadow_dy[i], l.shadow_dz[i]}, shadow.direction));
   }
@@ -123,6 +165,16 @@ std::vector<LaneCase> lane_cases() {
     c.select_pdf = 0.25f + next();
     c.cosine = sample_cosine_hemisphere({next(), next()});
     c.throughput = {next(), next(), next()};
+    if (k % 3 == 1) {  // an emitting triangle, one- or two-sided, facing the point or not
+      c.area = true;
+      c.triangle.p0 = corner + point(4), c.triangle.p1 = c.triangle.p0 + point(1), c.triangle.p2 = c.triangle.p0 + point(1);
+      vec3 n = cross(c.triangle.p1 - c.triangle.p0, c.triangle.p2 - c.triangle.p0);
+      c.triangle.area = 0.5f * length(n);
+      c.triangle.normal = normalize(n);
+      c.triangle.two_sided = k % 4 == 1;
+      c.emission = {4 * next(), 4 * next(), k % 11 == 1 ? 0.0f : 4 * next()};
+      c.u_point = {next(), next()};
+    }
     if (k % 2 == 1) {  // vertex normals, some of them turned against the triangle's
       c.has_normals = true;
       c.n0 = normalize(point(2)), c.n1 = normalize(point(2)), c.n2 = normalize(point(2));
@@ -131,7 +183,7 @@ std::vector<LaneCase> lane_cases() {
   }
   // A triangle in a coordinate plane, hit at a vertex on the origin (exact zeros: the offset's
   // floor and the one-ulp step from zero), lit from below and from behind the ray.
-  LaneCase plane = cases[1];
+  LaneCase plane = cases[0];  // a point light
   plane.p0 = {0, 0, 0}, plane.p1 = {1, 0, 0}, plane.p2 = {0, 0, 1}, plane.barycentric = {0, 0};
   plane.direction = {0.2f, -1, 0.1f};
   cases.push_back(plane);
@@ -160,28 +212,37 @@ std::vector<LaneCase> lane_cases() {
 }  // namespace
 
 TEST_CASE("Lambert lanes: each lane is the one-path vertex to the bit, on every instruction set") {
-  std::vector<LaneCase> cases = lane_cases();
-  REQUIRE(int(cases.size()) <= LambertLanes::capacity);
-  int lit = 0, scatters = 0;
-  for (LaneIsa isa : {LaneIsa::best, LaneIsa::baseline, LaneIsa::avx2}) {
-    if (!lane_isa_available(isa)) continue;
-    CAPTURE(int(isa));
-    auto lanes = std::make_unique<LambertLanes>();
-    for (size_t i = 0; i < cases.size(); ++i) set_lane(*lanes, int(i), cases[i]);
-    lanes->count = int(cases.size());
-    shade_lambert_lanes(*lanes, isa);
-    lit = scatters = 0;
-    for (size_t i = 0; i < cases.size(); ++i) {
-      CAPTURE(i);
-      check_lane(*lanes, int(i), cases[i]);
-      lit += lanes->lit[i], scatters += lanes->scatters[i];
+  // Point lights and emitting triangles mixed, as in a batch; and point lights alone, which
+  // the kernel shades without its triangle loop.
+  std::vector<LaneCase> mixed = lane_cases(), points;
+  for (const LaneCase& c : mixed)
+    if (!c.area) points.push_back(c);
+  for (const std::vector<LaneCase>* cases : {&mixed, &points}) {
+    REQUIRE(int(cases->size()) <= LambertLanes::capacity);
+    for (LaneIsa isa : {LaneIsa::best, LaneIsa::baseline, LaneIsa::avx2}) {
+      if (!lane_isa_available(isa)) continue;
+      CAPTURE(cases->size());
+      CAPTURE(int(isa));
+      auto lanes = std::make_unique<LambertLanes>();
+      for (size_t i = 0; i < cases->size(); ++i) set_lane(*lanes, int(i), (*cases)[i]);
+      lanes->count = int(cases->size());
+      shade_lambert_lanes(*lanes, isa);
+      int lit = 0, scatters = 0, lit_by_triangles = 0;
+      for (size_t i = 0; i < cases->size(); ++i) {
+        CAPTURE(i);
+        check_lane(*lanes, int(i), (*cases)[i]);
+        lit += lanes->lit[i], scatters += lanes->scatters[i];
+        lit_by_triangles += lanes->lit[i] && (*cases)[i].area;
+      }
+      // Both outcomes of both tests occur, for both kinds of light.
+      CHECK(lit > 20);
+      CHECK(lit < int(cases->size()) - 20);
+      CHECK(scatters > 20);
+      CHECK(scatters < int(cases->size()));
+      CHECK(lit_by_triangles > (cases == &mixed ? 10 : -1));
+      CHECK(lit - lit_by_triangles > 10);
     }
   }
-  // Both outcomes of both tests occur.
-  CHECK(lit > 20);
-  CHECK(lit < int(cases.size()) - 20);
-  CHECK(scatters > 20);
-  CHECK(scatters < int(cases.size()));
 }
 
 TEST_CASE("Lambert lanes: a normal whose squared length leaves float's range falls back to one path") {
