@@ -528,7 +528,7 @@ struct PathVariant {
     // A stage's light choices by the BVH (choose_lights_ahead): the points, normals and numbers
     // of the paths that take a light sample, which live path each is, and the choices.
     LightChoiceQueue choices;
-    // A stage's vertices shaded in the Lambert lanes (gather_lambert_lanes): each live path's
+    // A stage's vertices shaded in the Lambert lanes (shade_in_lambert_lanes): each live path's
     // lane, or -1.
     LambertLanes lambert;
     int lane_of[max_batch_paths];
@@ -572,7 +572,8 @@ struct PathVariant {
       const AreaLight* triangle = nullptr;
       if (slot < lights.delta_lights.size()) {
         point = &scene.lights[lights.delta_lights[slot]];
-        if (point->kind != LightKind::point || point->range > 0) continue;
+        if (point->kind != LightKind::point || point->range > 0 || !enabled<E>(ctx.effects, effect_direct_delta))
+          continue;
       } else if (slot < lights.environment_slot()) {
         triangle = &lights.area_lights[slot - lights.delta_lights.size()];
         if (triangle->shape != AreaLightShape::triangle || !enabled<E>(ctx.effects, effect_emission)) continue;
@@ -796,8 +797,7 @@ struct PathVariant {
       if (LightSampling && ctx.lights->sampler == LightSampler::bvh) choose_lights_ahead(ctx, workspace, live_count);
       bool in_lanes = false;
       if constexpr (lambert_lanes_compiled && !SharesFirstVertex) {
-        in_lanes = ctx.lights->sampler == LightSampler::power && enabled<E>(ctx.effects, effect_direct_delta) &&
-                shadows_are_opaque<E>(ctx);
+        in_lanes = ctx.lights->sampler == LightSampler::power && shadows_are_opaque<E>(ctx);
         if (in_lanes) shade_in_lambert_lanes(ctx, workspace, live_count);
       }
       for (int k = 0; k < live_count; ++k) {

@@ -176,6 +176,14 @@ TEST_CASE("batched paths: Lambert vertices shaded in SIMD lanes render what one 
       }
     }
   }
+  // Each kind of light switched off (--effects): the lanes take only the other's vertices.
+  for (std::string effects : {"-direct", "-emission", "-indirect"}) {
+    CAPTURE(effects);
+    RenderOptions o;
+    o.width = 24, o.height = 18, o.spp = 4, o.mode = RenderMode::path;
+    o.effects = effects;
+    require_same_render(lambert_lanes_room(1), o);
+  }
 }
 
 TEST_CASE("batched paths: the glTF Cornell box renders the same in batches, path, naive and Whitted") {
