@@ -15,7 +15,7 @@ namespace radiant {
 
 struct LambertLanes {
   static constexpr int capacity = max_batch_paths;
-  // Each array is a cache line longer than the lanes need: at 1 KiB apart, one lane's seventy
+  // Each array is a cache line longer than the lanes need: at 1 KiB apart, one lane's eighty
   // fields would all fall into four of the L1 cache's 64 sets and evict each other (1.18x the
   // render's time once vertex normals added ten arrays).
   static constexpr int stride = capacity + 16;
@@ -70,7 +70,9 @@ struct LambertLanes {
   alignas(32) float lobe_nx[stride], lobe_ny[stride], lobe_nz[stride];
   alignas(32) int32_t valid[stride];
   int count = 0;
-  bool any_area = false;  // whether any lane's light is a triangle (else the kernel skips them)
+  // Set by whoever fills the lanes when any lane's light is a triangle: without, the kernel
+  // leaves out the triangle lights' loop.
+  bool any_area = false;
 };
 
 // Shades lanes [0, count).
