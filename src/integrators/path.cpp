@@ -8,7 +8,7 @@
 #include "integrators/background.h"
 #include "integrators/naive.h"
 #include "integrators/hit_shading.h"
-#include "integrators/lambert_lanes.h"
+#include "integrators/surface_lanes.h"
 #include "integrators/light_choice_point.h"
 #include "integrators/shadow.h"
 #include "lights/area_light.h"
@@ -528,39 +528,41 @@ struct PathVariant {
     // A stage's light choices by the BVH (choose_lights_ahead): the points, normals and numbers
     // of the paths that take a light sample, which live path each is, and the choices.
     LightChoiceQueue choices;
-    // A stage's vertices shaded in the Lambert lanes (shade_in_lambert_lanes): each live path's
-    // lane, or -1.
-    LambertLanes lambert;
+    // A stage's vertices shaded in the surface lanes (shade_in_surface_lanes), a set per model,
+    // and each live path's lane: -1, a Lambert lane, or max_batch_paths + a glossy lane.
+    SurfaceLanes lambert, glossy;
     int lane_of[max_batch_paths];
   };
 
-  // Whether this variant can shade vertices in the Lambert lanes: no texture is read and no
-  // surface is seen through, so every Lambert vertex is the lanes' kind.
-  static constexpr bool lambert_lanes_compiled =
+  // Whether this variant can shade vertices in the surface lanes: no texture is read and no
+  // surface is seen through, so every vertex on a lane material is the lanes' kind.
+  static constexpr bool surface_lanes_compiled =
       LightSampling && !(E & effect_group_textures) && !(E & effect_group_transparency);
 
-  // Gathers the stage's vertices that the Lambert lanes can shade (lambert_lanes.h) and shades
+  // Gathers the stage's vertices that the surface lanes can shade (surface_lanes.h) and shades
   // them: a live path at a hit of an untransformed triangle, whose material is a lane material,
-  // which chooses a point light without range or an emitting triangle. Its light is chosen, and
-  // a triangle's point drawn, here, as sample_one_light would.
-  [[gnu::noinline]] static void shade_in_lambert_lanes(const RenderContext& ctx, BatchWorkspace& w, int live_count) {
+  // which chooses a point light without range or an emitting triangle. Its light is chosen, a
+  // triangle's point drawn and a glossy material's lobe choice drawn here, as the one-path code
+  // would.
+  [[gnu::noinline]] static void shade_in_surface_lanes(const RenderContext& ctx, BatchWorkspace& w, int live_count) {
+    using LaneModel = RenderContext::LaneModel;
     const SceneDesc& scene = *ctx.scene;
     const SceneAccel& accel = *ctx.accel;
     const LightTable& lights = *ctx.lights;
-    LambertLanes& l = w.lambert;
-    l.count = 0;
-    l.any_area = false;
+    for (SurfaceLanes* set : {&w.lambert, &w.glossy}) set->count = 0, set->any_area = false;
+    w.glossy.glossy = true;
     for (int k = 0; k < live_count; ++k) {
       w.lane_of[k] = -1;
       const PathState& path = w.paths[w.live[k]];
       const HitId& id = w.hits[k];
-      const VertexDraws& drawn = w.drawn[k];
+      VertexDraws& drawn = w.drawn[k];
       int depth = path.depth;
       if (id.instance < 0 || depth >= path.max_depth || (path.first_hit && depth == 0) ||
           !(depth > 0 || path.gathers_first_vertex) || !drawn.has(bsdf_direction) || !accel.instance_identity[id.instance])
         continue;
       const MeshDesc& mesh = scene.meshes[scene.instances[id.instance].mesh];
-      if (!ctx.lambert_lanes[size_t(mesh.material)] || lights.selection.empty()) continue;
+      LaneModel model = ctx.lane_models[size_t(mesh.material)];
+      if (model == LaneModel::none || lights.selection.empty()) continue;
       const SampleContext& sample = depth == 0 ? *path.sample : path.own;
       uint32_t slot = 0;
       if (light_choice_draws(lights))
@@ -580,8 +582,10 @@ struct PathVariant {
       } else {
         continue;
       }
+      bool glossy = model == LaneModel::glossy;
+      SurfaceLanes& l = glossy ? w.glossy : w.lambert;
       int i = l.count++;
-      w.lane_of[k] = i;
+      w.lane_of[k] = glossy ? max_batch_paths + i : i;
       const uint32_t* tri = &mesh.indices[size_t(id.primitive) * 3];
       vec3 p0 = mesh.positions[tri[0]], p1 = mesh.positions[tri[1]], p2 = mesh.positions[tri[2]];
       l.p0x[i] = p0.x, l.p0y[i] = p0.y, l.p0z[i] = p0.z;
@@ -596,8 +600,15 @@ struct PathVariant {
       l.n1x[i] = n1.x, l.n1y[i] = n1.y, l.n1z[i] = n1.z;
       l.n2x[i] = n2.x, l.n2y[i] = n2.y, l.n2z[i] = n2.z;
       l.dx[i] = path.ray.direction.x, l.dy[i] = path.ray.direction.y, l.dz[i] = path.ray.direction.z;
-      color3 albedo = ctx.lambert_albedo[size_t(mesh.material)];
-      l.albedo_r[i] = albedo.x, l.albedo_g[i] = albedo.y, l.albedo_b[i] = albedo.z;
+      const BsdfMaterial& material = ctx.flat_bsdf_materials[size_t(mesh.material)];
+      if (glossy) {
+        set_glossy_material(l, i, *material.metallic_roughness());
+        l.u_lobe[i] = glossy_lobe_choice(*material.metallic_roughness(), path, drawn);
+        l.u_x[i] = drawn.direction.x, l.u_y[i] = drawn.direction.y;
+      } else {
+        color3 albedo = material.lambert()->albedo;
+        l.albedo_r[i] = albedo.x, l.albedo_g[i] = albedo.y, l.albedo_b[i] = albedo.z;
+      }
       l.area[i] = triangle != nullptr;
       if (point) {
         l.light_x[i] = point->position.x, l.light_y[i] = point->position.y, l.light_z[i] = point->position.z;
@@ -622,15 +633,32 @@ struct PathVariant {
       l.cosine_x[i] = drawn.cosine.x, l.cosine_y[i] = drawn.cosine.y, l.cosine_z[i] = drawn.cosine.z;
       l.throughput_r[i] = path.throughput.x, l.throughput_g[i] = path.throughput.y, l.throughput_b[i] = path.throughput.z;
     }
-    if (l.count > 0) shade_lambert_lanes(l);
+    for (SurfaceLanes* set : {&w.lambert, &w.glossy})
+      if (set->count > 0) shade_surface_lanes(*set);
+  }
+
+  static void set_glossy_material(SurfaceLanes& l, int i, const MetallicRoughnessParams& p) {
+    l.albedo_r[i] = p.base.x, l.albedo_g[i] = p.base.y, l.albedo_b[i] = p.base.z;
+    l.alpha[i] = p.alpha, l.ior[i] = p.ior, l.ior_f0[i] = p.ior_f0;
+    l.metal[i] = p.metal, l.plastic[i] = p.plastic, l.specular[i] = p.specular;
+    l.specular_f0_r[i] = p.specular_f0.x, l.specular_f0_g[i] = p.specular_f0.y, l.specular_f0_b[i] = p.specular_f0.z;
+    l.specular_f0_max[i] = p.specular_f0_max;
+  }
+  // The lobe choice a glossy vertex draws (scatter): only where its BSDF mixes lobes, which a
+  // lane material's does wherever its lobes are valid if it has both a specular and a diffuse
+  // lobe (elsewhere the vertex does not scatter, and the choice is not read).
+  static float glossy_lobe_choice(const MetallicRoughnessParams& p, const PathState& path, VertexDraws& drawn) {
+    bool specular = p.metal > 0 || p.plastic * p.specular > 0, diffuse = p.plastic > 0 && max_component(p.base) > 0;
+    if (!(specular && diffuse)) return 0.5f;
+    drawn.lobe_choice_used = true;
+    return drawn.has(lobe_choice) ? drawn.lobe_choice : sample_1d(path.own, dimension(path.depth, lobe_choice));
   }
 
   // The rest of advance() for a vertex shaded in lane `i`: the light sample's result, the path's
   // state and its next ray, as advance() sets them.
-  [[gnu::always_inline]] static bool finish_lambert_lane(const RenderContext& ctx, PathState& path,
-                                                        const LambertLanes& l, int i, const HitId& id,
-                                                        const VertexDraws& drawn, LightSampleResult& light,
-                                                        RayCounts& counts) {
+  [[gnu::always_inline]] static bool finish_surface_lane(const RenderContext& ctx, PathState& path,
+                                                        const SurfaceLanes& l, int i, const VertexDraws& drawn,
+                                                        LightSampleResult& light, RayCounts& counts) {
     color3& throughput = path.throughput;
     light.traces = l.lit[i];
     if (light.traces) {
@@ -647,7 +675,7 @@ struct PathVariant {
     int depth = path.depth;
     if (!enabled<E>(ctx.effects, effect_indirect)) path.max_depth = std::min(path.max_depth, depth + 1);
     path.ray_kind = &RayCounts::indirect;
-    color3 weight = ctx.lambert_albedo[size_t(ctx.scene->meshes[ctx.scene->instances[id.instance].mesh].material)];
+    color3 weight = {l.weight_r[i], l.weight_g[i], l.weight_b[i]};
     throughput *= depth == 0 ? weight * path.split_weight : weight;
     path.specular_bounce = false;
     path.previous_pdf = l.pdf[i];
@@ -775,7 +803,7 @@ struct PathVariant {
     static tbb::enumerable_thread_specific<BatchWorkspace> per_thread;
     BatchWorkspace& workspace = per_thread.local();
     auto& [paths, lights, rays, hits, occluded, live, shadowed, scratch, first_vertex, lanes, cosine_x, cosine_y, cosine_z, drawn,
-           lobe_choices, first_lobe_choices, light_choices, lambert, lane_of] = workspace;
+           lobe_choices, first_lobe_choices, light_choices, lambert, glossy, lane_of] = workspace;
     // Without sharing there is one sub-path per camera sample (run_batch): a constant, the
     // loop below is one start per sample. Read from ctx, GCC vectorised it for any split, with
     // run-time alias checks that cost more per camera sample than the start itself.
@@ -796,15 +824,17 @@ struct PathVariant {
       draw_ahead(ctx, workspace, live_count);
       if (LightSampling && ctx.lights->sampler == LightSampler::bvh) choose_lights_ahead(ctx, workspace, live_count);
       bool in_lanes = false;
-      if constexpr (lambert_lanes_compiled && !SharesFirstVertex) {
+      if constexpr (surface_lanes_compiled && !SharesFirstVertex) {
         in_lanes = ctx.lights->sampler == LightSampler::power && shadows_are_opaque<E>(ctx);
-        if (in_lanes) shade_in_lambert_lanes(ctx, workspace, live_count);
+        if (in_lanes) shade_in_surface_lanes(ctx, workspace, live_count);
       }
       for (int k = 0; k < live_count; ++k) {
         int i = live[k];
         int lane = in_lanes ? lane_of[k] : -1;
-        bool goes_on = lane >= 0 && !lambert.fallback[lane]
-                           ? finish_lambert_lane(ctx, paths[i], lambert, lane, hits[k], drawn[k], lights[i], counts)
+        const SurfaceLanes& set = lane >= max_batch_paths ? glossy : lambert;
+        lane -= lane >= max_batch_paths ? max_batch_paths : 0;
+        bool goes_on = lane >= 0 && !set.fallback[lane]
+                           ? finish_surface_lane(ctx, paths[i], set, lane, drawn[k], lights[i], counts)
                            : advance<SharesFirstVertex>(ctx, paths[i], hits[k], &drawn[k], scratch, &first_vertex,
                                                         lights[i], counts);
         if (lights[i].traces) {

@@ -55,10 +55,11 @@ struct RenderContext {
   std::vector<SurfaceMaterial> flat_materials; // each material resolved once, for untextured renders
   std::vector<BsdfMaterial> flat_bsdf_materials;  // and its BSDF's direction-independent part
   std::vector<color3> absorption;                 // each material's volume sigma (KHR_materials_volume)
-  // Per material: whether a vertex on it can be shaded in the path tracer's Lambert lanes
-  // (integrators/lambert_lanes.h: Lambertian, untextured, opaque, not emitting), and its albedo.
-  std::vector<char> lambert_lanes;
-  std::vector<color3> lambert_albedo;
+  // Per material: which of the path tracer's surface lanes can shade a vertex on it
+  // (integrators/surface_lanes.h: untextured, opaque, not emitting; Lambertian, or the
+  // metallic-roughness case of materials/metallic_roughness_lane.h), if any.
+  enum class LaneModel : uint8_t { none, lambert, glossy };
+  std::vector<LaneModel> lane_models;
   TextureLookup texture_lookup;  // --texture-filter and its pyramids
   PixelSpread pixel_spread;      // the camera's, for texture footprints (trilinear only)
   uint32_t effects = effect_all;

@@ -25,6 +25,8 @@ class BsdfMaterial {
   explicit BsdfMaterial(const SurfaceMaterial& m);
   // The Lambert parameters when the material is exactly Lambertian, else null.
   const LambertParams* lambert() const { return std::get_if<LambertParams>(&params_); }
+  // The metallic-roughness parameters when the material has that model without layers, else null.
+  const MetallicRoughnessParams* metallic_roughness() const { return std::get_if<MetallicRoughnessParams>(&params_); }
 
  private:
   friend class Bsdf;

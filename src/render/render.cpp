@@ -18,6 +18,7 @@
 #include "integrators/naive.h"
 #include "integrators/path.h"
 #include "integrators/whitted.h"
+#include "materials/metallic_roughness_lane.h"
 #include "materials/volume_absorption.h"
 #include "render/camera.h"
 #include "render/progress_meter.h"
@@ -49,12 +50,17 @@ RenderContext make_context(const PreparedScene& prepared, const ResolvedSettings
   for (const SurfaceMaterial& m : ctx.flat_materials) ctx.flat_bsdf_materials.emplace_back(m);
   for (size_t i = 0; i < scene.materials.size(); ++i) {
     const SurfaceMaterial& m = ctx.flat_materials[i];
-    const LambertParams* lambert = ctx.flat_bsdf_materials[i].lambert();
+    const BsdfMaterial& bsdf = ctx.flat_bsdf_materials[i];
     // Textures need not be asked about: the lanes run only where no texture is read (path.cpp).
-    ctx.lambert_lanes.push_back(lambert && max_component(lambert->albedo) > 0 && is_black(m.emission) &&
-                                !m.unlit && m.opacity >= 1 && is_black(m.kt) && !(m.transmission > 0) &&
-                                !m.has_normal_map && !m.has_bump_map);
-    ctx.lambert_albedo.push_back(lambert ? lambert->albedo : color3{});
+    bool plain = is_black(m.emission) && !m.unlit && m.opacity >= 1 && is_black(m.kt) && !(m.transmission > 0) &&
+                 !m.has_normal_map && !m.has_bump_map;
+    using LaneModel = RenderContext::LaneModel;
+    LaneModel model = LaneModel::none;
+    if (plain && bsdf.lambert() && max_component(bsdf.lambert()->albedo) > 0)
+      model = LaneModel::lambert;
+    else if (plain && bsdf.metallic_roughness() && is_metallic_roughness_lane_case(*bsdf.metallic_roughness()))
+      model = LaneModel::glossy;
+    ctx.lane_models.push_back(model);
   }
   ctx.absorption.reserve(scene.materials.size());
   for (const MaterialDesc& m : scene.materials) ctx.absorption.push_back(volume_absorption(m));

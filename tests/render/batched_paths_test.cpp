@@ -108,14 +108,14 @@ void require_same_render(const SceneDesc& scene, RenderOptions o, bool packets =
 
 }  // namespace
 
-// A room of matte walls lit by point lights, whose vertices the batch shades in its Lambert
-// lanes (integrators/lambert_lanes.h), one wall with vertex normals, beside every vertex the
-// lanes must leave to the one-path code: vertex normals that are all zero, a transformed
-// instance, an emitting panel (an area light to
-// choose), a spot light, a point light with a range. Scaled down by `scale`, every triangle's
+// A room of matte walls, a glTF plastic box and a rough metal panel lit by point lights and an
+// emitting panel, whose vertices the batch shades in its surface lanes
+// (integrators/surface_lanes.h), one wall with vertex normals, beside every vertex the lanes
+// must leave to the one-path code: vertex normals that are all zero, a transformed instance, a
+// smooth metal, the emitting panel itself, a spot light, a point light with a range. Scaled down by `scale`, every triangle's
 // normal gets a squared length below float's normal range, and every lane falls back. Nothing in
 // it is seen through or textured, so the render's variant compiles the lanes.
-SceneDesc lambert_lanes_room(float scale) {
+SceneDesc surface_lanes_room(float scale) {
   SceneDesc scene;
   int wall = add_diffuse(scene, {0.7f, 0.6f, 0.5f});
   add_quad(scene, {-4, 0, -4}, {-4, 0, 4}, {4, 0, 4}, {4, 0, -4}, wall);    // floor, facing up
@@ -125,6 +125,16 @@ SceneDesc lambert_lanes_room(float scale) {
   matte.model = MaterialModel::metallic_roughness;
   matte.base_color = {0.3f, 0.6f, 0.8f}, matte.metallic = 0, matte.roughness = 1, matte.specular = 0;
   add_box(scene, {-2, 0, -2}, {-0.5f, 1.5f, -0.5f}, add_material(scene, matte));
+  MaterialDesc plastic = matte;  // the glossy lanes' commonest material: glTF's default coating
+  plastic.base_color = {0.8f, 0.3f, 0.2f}, plastic.roughness = 0.5f, plastic.specular = 1;
+  add_box(scene, {-3.5f, 0, 0.5f}, {-2.5f, 2, 1.5f}, add_material(scene, plastic));
+  MaterialDesc metal = matte;  // a rough metal, half the back wall
+  metal.base_color = {0.9f, 0.8f, 0.5f}, metal.metallic = 1, metal.roughness = 0.3f;
+  add_quad(scene, {0, 0.1f, -3.9f}, {3.5f, 0.1f, -3.9f}, {3.5f, 3, -3.9f}, {0, 3, -3.9f}, add_material(scene, metal));
+  MaterialDesc mirror = metal;  // a smooth one: delta lobes, one path at a time
+  mirror.roughness = 0;
+  add_quad(scene, {-3.5f, 0.1f, -3.9f}, {-1, 0.1f, -3.9f}, {-1, 2, -3.9f}, {-3.5f, 2, -3.9f},
+           add_material(scene, mirror));
   add_quad(scene, {3.9f, 0.2f, -3}, {3.9f, 3, -3}, {3.9f, 3, 1}, {3.9f, 0.2f, 1}, wall);
   scene.meshes.back().normals = {normalize(vec3{-1, 0.3f, 0.2f}), normalize(vec3{-1, -0.2f, 0}),
                                  normalize(vec3{-0.8f, 0, 0.4f}), {-1, 0, 0}};
@@ -158,9 +168,9 @@ SceneDesc lambert_lanes_room(float scale) {
   return scene;
 }
 
-TEST_CASE("batched paths: Lambert vertices shaded in SIMD lanes render what one path renders") {
+TEST_CASE("batched paths: vertices shaded in SIMD lanes render what one path renders") {
   for (float scale : {1.0f, 1e-11f}) {
-    SceneDesc scene = lambert_lanes_room(scale);
+    SceneDesc scene = surface_lanes_room(scale);
     for (bool aovs : {false, true}) {  // AOVs: the first vertices go one path at a time
       for (int max_depth : {1, 8}) {
       CAPTURE(scale);
@@ -182,7 +192,7 @@ TEST_CASE("batched paths: Lambert vertices shaded in SIMD lanes render what one 
     RenderOptions o;
     o.width = 24, o.height = 18, o.spp = 4, o.mode = RenderMode::path;
     o.effects = effects;
-    require_same_render(lambert_lanes_room(1), o);
+    require_same_render(surface_lanes_room(1), o);
   }
 }
 

@@ -1,9 +1,11 @@
-// A batch's commonest path vertex shaded across SIMD lanes: a triangle of an untransformed mesh,
-// a Lambert material, lit through opaque shadows by one point light or one emitting triangle. The
-// batched path tracer (integrators/path.cpp) gathers such vertices of a stage into these lanes,
-// shades them together and scatters the results back; every other vertex, and every lane this
-// kernel cannot finish (`fallback`), is shaded one path at a time. Each lane's results are what
-// the one-path code gives, to the bit: the same operations in the same order (math/lane_isa.h).
+// A batch's commonest path vertices shaded across SIMD lanes: a triangle of an untransformed
+// mesh, lit through opaque shadows by one point light or one emitting triangle, with a Lambert
+// material, or (`glossy`) a metallic-roughness one in the case metallic_roughness_lane.h takes.
+// The batched path tracer (integrators/path.cpp) gathers such vertices of a stage into these
+// lanes, one set per model, shades them together and scatters the results back; every other
+// vertex, and every lane this kernel cannot finish (`fallback`), is shaded one path at a time.
+// Each lane's results are what the one-path code gives, to the bit: the same operations in the
+// same order (math/lane_isa.h).
 #pragma once
 
 #include <cstdint>
@@ -13,7 +15,7 @@
 
 namespace radiant {
 
-struct LambertLanes {
+struct SurfaceLanes {
   static constexpr int capacity = max_batch_paths;
   // Each array is a cache line longer than the lanes need: at 1 KiB apart, one lane's eighty
   // fields would all fall into four of the L1 cache's 64 sets and evict each other (1.18x the
@@ -35,7 +37,7 @@ struct LambertLanes {
   alignas(32) float n1x[stride], n1y[stride], n1z[stride];
   alignas(32) float n2x[stride], n2y[stride], n2z[stride];
   alignas(32) float dx[stride], dy[stride], dz[stride];
-  alignas(32) float albedo_r[stride], albedo_g[stride], albedo_b[stride];
+  alignas(32) float albedo_r[stride], albedo_g[stride], albedo_b[stride];  // or a glossy lane's base colour
   alignas(32) float light_x[stride], light_y[stride], light_z[stride];
   alignas(32) float kc[stride], kl[stride], kq[stride];
   alignas(32) float intensity_r[stride], intensity_g[stride], intensity_b[stride];
@@ -49,11 +51,17 @@ struct LambertLanes {
   alignas(32) float select_pdf[stride];
   alignas(32) float cosine_x[stride], cosine_y[stride], cosine_z[stride];
   alignas(32) float throughput_r[stride], throughput_g[stride], throughput_b[stride];
+  // A glossy lane's material (GlossyLaneMaterial without its base colour), its lobe choice and
+  // the bounce's random numbers (the GGX lobe warps them itself).
+  alignas(32) float alpha[stride], ior[stride], ior_f0[stride], metal[stride], plastic[stride];
+  alignas(32) float specular[stride], specular_f0_r[stride], specular_f0_g[stride], specular_f0_b[stride];
+  alignas(32) float specular_f0_max[stride];
+  alignas(32) float u_lobe[stride], u_x[stride], u_y[stride];
 
   // Outputs. `fallback`: a value left float's normal range where the one-path code rescales it;
   // the vertex must be shaded one path at a time. Otherwise: the hit's position and the
   // shading normal facing the ray (the path's previous_*); `scatters`, and where it does the
-  // next ray (origin, direction wi) and its pdf; `lit`, and where it is the shadow ray
+  // next ray (origin, direction wi), its pdf and the throughput's weight; `lit`, and where it is the shadow ray
   // (origin, direction; tmax 1 - 1e-4) and the light's contribution through the throughput.
   alignas(32) int32_t fallback[stride], scatters[stride], lit[stride];
   alignas(32) float px[stride], py[stride], pz[stride];
@@ -61,21 +69,27 @@ struct LambertLanes {
   alignas(32) float ox[stride], oy[stride], oz[stride];
   alignas(32) float wix[stride], wiy[stride], wiz[stride];
   alignas(32) float pdf[stride];
+  alignas(32) float weight_r[stride], weight_g[stride], weight_b[stride];
   alignas(32) float shadow_ox[stride], shadow_oy[stride], shadow_oz[stride];
   alignas(32) float shadow_dx[stride], shadow_dy[stride], shadow_dz[stride];
   alignas(32) float light_r[stride], light_g[stride], light_b[stride];
-  // Between the kernel's two loops, for the triangle lights: each hit's geometric normal, error
-  // bound, Lambert lobe normal and whether the lobes are valid.
+  // Between the kernel's loops: each hit's geometric normal, error bound, lobe normal and
+  // whether the lobes are valid; a glossy lane's local wo, lobe probabilities, the coating's
+  // transmittance and GGX Lambda along wo, and its GGX lobe's direction (local) where chosen.
   alignas(32) float gnx[stride], gny[stride], gnz[stride], error[stride];
   alignas(32) float lobe_nx[stride], lobe_ny[stride], lobe_nz[stride];
   alignas(32) int32_t valid[stride];
+  alignas(32) float wo_x[stride], wo_y[stride], wo_z[stride];
+  alignas(32) float p_specular[stride], p_diffuse[stride], coating_o[stride], lambda_o[stride];
+  alignas(32) float specular_x[stride], specular_y[stride], specular_z[stride];
   int count = 0;
+  bool glossy = false;  // the lanes' model: metallic-roughness, or Lambert
   // Set by whoever fills the lanes when any lane's light is a triangle: without, the kernel
   // leaves out the triangle lights' loop.
   bool any_area = false;
 };
 
 // Shades lanes [0, count).
-void shade_lambert_lanes(LambertLanes& lanes, LaneIsa isa = LaneIsa::best);
+void shade_surface_lanes(SurfaceLanes& lanes, LaneIsa isa = LaneIsa::best);
 
 }  // namespace radiant

@@ -1,6 +1,6 @@
-// The Lambert lanes (integrators/lambert_lanes.h) against the one-path functions they stand in
-// for, to the bit, on every instruction set this CPU runs. The render-level check, the batch
-// against one path at a time, is in batched_paths_test.cpp.
+// The surface lanes (integrators/surface_lanes.h), Lambert and glossy, against the one-path
+// functions they stand in for, to the bit, on every instruction set this CPU runs. The
+// render-level check, the batch against one path at a time, is in batched_paths_test.cpp.
 #include <doctest/doctest.h>
 
 #include <bit>
@@ -9,10 +9,12 @@
 #include <vector>
 
 #include "accel/scene_accel.h"
-#include "integrators/lambert_lanes.h"
+#include "integrators/surface_lanes.h"
 #include "lights/area_light.h"
 #include "lights/delta_light.h"
+#include "materials/bsdf.h"
 #include "materials/bsdf_models.h"
+#include "materials/metallic_roughness_lane.h"
 #include "sampling/warp.h"
 
 using namespace radiant;
@@ -37,9 +39,14 @@ struct LaneCase {
   float select_pdf;
   vec3 cosine;
   color3 throughput;
+  // A glossy lane's metallic-roughness material (its base colour instead of `albedo`), lobe
+  // choice and the bounce's numbers, of which `cosine` is the diffuse warp.
+  SurfaceMaterial material;
+  float u_lobe = 0.5f;
+  vec2 u;
 };
 
-void set_lane(LambertLanes& l, int i, const LaneCase& c) {
+void set_lane(SurfaceLanes& l, int i, const LaneCase& c) {
   l.p0x[i] = c.p0.x, l.p0y[i] = c.p0.y, l.p0z[i] = c.p0.z;
   l.p1x[i] = c.p1.x, l.p1y[i] = c.p1.y, l.p1z[i] = c.p1.z;
   l.p2x[i] = c.p2.x, l.p2y[i] = c.p2.y, l.p2z[i] = c.p2.z;
@@ -72,12 +79,36 @@ void set_lane(LambertLanes& l, int i, const LaneCase& c) {
   l.select_pdf[i] = c.select_pdf;
   l.cosine_x[i] = c.cosine.x, l.cosine_y[i] = c.cosine.y, l.cosine_z[i] = c.cosine.z;
   l.throughput_r[i] = c.throughput.x, l.throughput_g[i] = c.throughput.y, l.throughput_b[i] = c.throughput.z;
+  if (l.glossy) {
+    BsdfMaterial material(c.material);
+    const MetallicRoughnessParams* p = material.metallic_roughness();
+    REQUIRE(p);
+    REQUIRE(is_metallic_roughness_lane_case(*p));
+    l.albedo_r[i] = p->base.x, l.albedo_g[i] = p->base.y, l.albedo_b[i] = p->base.z;
+    l.alpha[i] = p->alpha, l.ior[i] = p->ior, l.ior_f0[i] = p->ior_f0;
+    l.metal[i] = p->metal, l.plastic[i] = p->plastic, l.specular[i] = p->specular;
+    l.specular_f0_r[i] = p->specular_f0.x, l.specular_f0_g[i] = p->specular_f0.y, l.specular_f0_b[i] = p->specular_f0.z;
+    l.specular_f0_max[i] = p->specular_f0_max;
+    l.u_lobe[i] = c.u_lobe, l.u_x[i] = c.u.x, l.u_y[i] = c.u.y;
+  }
 }
+
+// The one-path code's BSDF at the hit, as path.cpp builds and asks it: the Lambert lobes, or
+// the metallic-roughness material's Bsdf.
+struct ReferenceBsdf {
+  LambertLobes lambert;
+  std::optional<Bsdf> glossy;
+  color3 eval(vec3 wi) const { return glossy ? glossy->eval(wi) : eval_world(lambert, wi); }
+  color3 eval(vec3 wi, float& pdf) const { return glossy ? glossy->eval(wi, pdf) : eval_world(lambert, wi, pdf); }
+  std::optional<BsdfSample> sample(const LaneCase& c) const {
+    return glossy ? glossy->sample(c.u_lobe, c.u, c.cosine) : sample_warped(lambert, c.cosine);
+  }
+};
 
 // What the one-path code makes of the case: the hit as fill_triangle_hit writes it for an
 // untransformed triangle, then the library's own shading, lobes, bounce, light
 // sample and ray origins.
-void check_lane(const LambertLanes& l, int i, const LaneCase& c) {
+void check_lane(const SurfaceLanes& l, int i, const LaneCase& c, int& specular_bounces) {
   SurfaceHit hit;
   vec3 e1 = c.p1 - c.p0, e2 = c.p2 - c.p0;
   float b1 = c.barycentric.x, b2 = c.barycentric.y;
@@ -96,12 +127,19 @@ void check_lane(const LambertLanes& l, int i, const LaneCase& c) {
   vec3 normal = hit.front_face ? hit.shading_normal : -hit.shading_normal;
   CHECK(same_bits({l.px[i], l.py[i], l.pz[i]}, hit.position));
   CHECK(same_bits({l.nx[i], l.ny[i], l.nz[i]}, normal));
-  LambertLobes lobes = make_lambert_lobes({c.albedo}, normal, wo);
-  std::optional<BsdfSample> bounce = sample_warped(lobes, c.cosine);
+  ReferenceBsdf bsdf;
+  if (l.glossy)
+    bsdf.glossy.emplace(BsdfMaterial(c.material), normal, wo);
+  else
+    bsdf.lambert = make_lambert_lobes({c.albedo}, normal, wo);
+  std::optional<BsdfSample> bounce = bsdf.sample(c);
+  if (bounce && is_black(bounce->weight)) bounce.reset();  // the path tracer stops there too
   REQUIRE(bool(l.scatters[i]) == bounce.has_value());
   if (bounce) {
     CHECK(same_bits({l.wix[i], l.wiy[i], l.wiz[i]}, bounce->wi));
     CHECK(same_bits(l.pdf[i], bounce->pdf));
+    CHECK(same_bits({l.weight_r[i], l.weight_g[i], l.weight_b[i]}, bounce->weight));
+    specular_bounces += l.glossy && c.u_lobe < l.p_specular[i];
     Ray next;
     spawn_ray(next, hit, bounce->wi);
     CHECK(same_bits({l.ox[i], l.oy[i], l.oz[i]}, next.origin));
@@ -116,7 +154,7 @@ void check_lane(const LambertLanes& l, int i, const LaneCase& c) {
     lit = sample_area_light(c.triangle, hit.position, c.u_point, sample) &&
           area_light_emits(c.triangle, sample.normal, -sample.direction) && !is_black(c.emission);
     float bsdf_pdf;
-    color3 f_cos = lit ? eval_world(lobes, sample.direction, bsdf_pdf) : color3{};
+    color3 f_cos = lit ? bsdf.eval(sample.direction, bsdf_pdf) : color3{};
     lit = lit && !is_black(f_cos);
     if (lit) {
       float pdf = c.select_pdf * sample.pdf;
@@ -126,7 +164,7 @@ void check_lane(const LambertLanes& l, int i, const LaneCase& c) {
   } else {
     DeltaLightSample light;
     bool reaches = sample_delta_light(c.light, hit.position, light);
-    color3 f_cos = reaches ? eval_world(lobes, light.direction) : color3{};
+    color3 f_cos = reaches ? bsdf.eval(light.direction) : color3{};
     lit = reaches && !is_black(f_cos);
     if (lit) {
       contribution = c.throughput * (f_cos * light.irradiance * color3{1, 1, 1} / c.select_pdf);
@@ -209,6 +247,30 @@ std::vector<LaneCase> lane_cases() {
   return cases;
 }
 
+// The same hits on metallic-roughness materials of the glossy lanes' case: metals, coated
+// Lambert and mixes of them, rough to nearly smooth, with tinted and weak coatings, an ior
+// whose F0 is 0, and black base colours (the coating's lobe alone).
+std::vector<LaneCase> glossy_cases() {
+  uint32_t state = 7;
+  auto next = [&] { return float((state = state * 1664525u + 1013904223u) >> 8) * 0x1p-24f; };
+  std::vector<LaneCase> cases = lane_cases();
+  for (size_t k = 0; k < cases.size(); ++k) {
+    LaneCase& c = cases[k];
+    SurfaceMaterial& m = c.material;
+    m.model = MaterialModel::metallic_roughness;
+    m.base_color = k % 9 == 4 ? color3{} : c.albedo;
+    m.metallic = k % 4 == 0 ? 1.0f : k % 4 == 1 ? next() : 0.0f;
+    m.roughness = k % 6 == 5 ? 0.04f : 0.1f + 0.9f * next();
+    m.specular = k % 5 == 2 ? 0.2f : 1.0f;
+    m.specular_color = k % 3 == 0 ? color3{next(), next(), 1} : color3{1, 1, 1};
+    m.ior = k % 7 == 3 ? 1.0f : k % 7 == 5 ? 2.4f : 1.5f;
+    c.u_lobe = next();
+    c.u = {next(), next()};
+    c.cosine = sample_cosine_hemisphere(c.u);  // the batch warps the same numbers
+  }
+  return cases;
+}
+
 }  // namespace
 
 TEST_CASE("Lambert lanes: each lane is the one-path vertex to the bit, on every instruction set") {
@@ -218,19 +280,20 @@ TEST_CASE("Lambert lanes: each lane is the one-path vertex to the bit, on every 
   for (const LaneCase& c : mixed)
     if (!c.area) points.push_back(c);
   for (const std::vector<LaneCase>* cases : {&mixed, &points}) {
-    REQUIRE(int(cases->size()) <= LambertLanes::capacity);
+    REQUIRE(int(cases->size()) <= SurfaceLanes::capacity);
     for (LaneIsa isa : {LaneIsa::best, LaneIsa::baseline, LaneIsa::avx2}) {
       if (!lane_isa_available(isa)) continue;
       CAPTURE(cases->size());
       CAPTURE(int(isa));
-      auto lanes = std::make_unique<LambertLanes>();
+      auto lanes = std::make_unique<SurfaceLanes>();
       for (size_t i = 0; i < cases->size(); ++i) set_lane(*lanes, int(i), (*cases)[i]);
       lanes->count = int(cases->size());
-      shade_lambert_lanes(*lanes, isa);
+      shade_surface_lanes(*lanes, isa);
       int lit = 0, scatters = 0, lit_by_triangles = 0;
       for (size_t i = 0; i < cases->size(); ++i) {
         CAPTURE(i);
-        check_lane(*lanes, int(i), (*cases)[i]);
+        int unused = 0;
+        check_lane(*lanes, int(i), (*cases)[i], unused);
         lit += lanes->lit[i], scatters += lanes->scatters[i];
         lit_by_triangles += lanes->lit[i] && (*cases)[i].area;
       }
@@ -247,7 +310,7 @@ TEST_CASE("Lambert lanes: each lane is the one-path vertex to the bit, on every 
 
 TEST_CASE("Lambert lanes: a normal whose squared length leaves float's range falls back to one path") {
   // The geometric normal's or the interpolated vertex normal's: normalize() rescales there.
-  auto lanes = std::make_unique<LambertLanes>();
+  auto lanes = std::make_unique<SurfaceLanes>();
   LaneCase huge = lane_cases()[1];
   huge.p0 = {-1e20f, 0, -1e20f}, huge.p1 = {-1e20f, 0, 1e20f}, huge.p2 = {1e20f, 0, 1e20f};  // Ng overflows
   set_lane(*lanes, 0, huge);
@@ -263,10 +326,45 @@ TEST_CASE("Lambert lanes: a normal whose squared length leaves float's range fal
   set_lane(*lanes, 3, infinite_normal);
   set_lane(*lanes, 4, lane_cases()[0]);
   lanes->count = 5;
-  shade_lambert_lanes(*lanes);
+  shade_surface_lanes(*lanes);
   CHECK(lanes->fallback[0]);
   CHECK(lanes->fallback[1]);
   CHECK(lanes->fallback[2]);
   CHECK(lanes->fallback[3]);
   CHECK(!lanes->fallback[4]);
+}
+
+TEST_CASE("Glossy lanes: each lane is the one-path metallic-roughness vertex to the bit, on every instruction set") {
+  std::vector<LaneCase> mixed = glossy_cases(), points;
+  for (const LaneCase& c : mixed)
+    if (!c.area) points.push_back(c);
+  for (const std::vector<LaneCase>* cases : {&mixed, &points}) {
+    REQUIRE(int(cases->size()) <= SurfaceLanes::capacity);
+    for (LaneIsa isa : {LaneIsa::best, LaneIsa::baseline, LaneIsa::avx2}) {
+      if (!lane_isa_available(isa)) continue;
+      CAPTURE(cases->size());
+      CAPTURE(int(isa));
+      auto lanes = std::make_unique<SurfaceLanes>();
+      lanes->glossy = true;
+      for (size_t i = 0; i < cases->size(); ++i) set_lane(*lanes, int(i), (*cases)[i]);
+      lanes->count = int(cases->size());
+      shade_surface_lanes(*lanes, isa);
+      int lit = 0, scatters = 0, lit_by_triangles = 0, specular_bounces = 0;
+      for (size_t i = 0; i < cases->size(); ++i) {
+        CAPTURE(i);
+        check_lane(*lanes, int(i), (*cases)[i], specular_bounces);
+        lit += lanes->lit[i], scatters += lanes->scatters[i];
+        lit_by_triangles += lanes->lit[i] && (*cases)[i].area;
+      }
+      // Both outcomes of both tests occur, for both kinds of light and both lobes.
+      CHECK(lit > 20);
+      CHECK(lit < int(cases->size()) - 20);
+      CHECK(scatters > 20);
+      CHECK(scatters < int(cases->size()));
+      CHECK(specular_bounces > 10);
+      CHECK(scatters - specular_bounces > 10);
+      CHECK(lit_by_triangles > (cases == &mixed ? 10 : -1));
+      CHECK(lit - lit_by_triangles > 10);
+    }
+  }
 }

@@ -1,0 +1,377 @@
+#include "integrators/surface_lanes.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <limits>
+
+#include "accel/ray.h"
+#include "materials/bsdf_models.h"
+#include "materials/metallic_roughness_lane.h"
+#include "materials/microfacet.h"
+#include "materials/shading_frame.h"
+
+namespace radiant {
+
+namespace {
+
+using lane::largest_float;
+using lane::normalize_in_range;
+using lane::select;
+
+// next_float and offset_ray_origin (accel/ray.h) as selects without a branch, which a vector
+// loop needs: the same values.
+[[gnu::always_inline]] inline float step_lane(float coordinate, float normal) {
+  uint32_t bits = std::bit_cast<uint32_t>(coordinate);
+  bool up = normal > 0;
+  uint32_t stepped = bits + (((coordinate > 0) == up) ? 1u : ~0u);
+  stepped = coordinate == 0 ? (up ? 1u : 0x80000001u) : stepped;
+  bool steps = (bits & 0x7f800000u) != 0x7f800000u && normal != 0;
+  return std::bit_cast<float>(steps ? stepped : bits);
+}
+[[gnu::always_inline]] inline vec3 offset_lane(vec3 p, vec3 error, vec3 n, vec3 w) {
+  vec3 away = dot(w, n) < 0 ? -n : n;
+  vec3 po = p + away * std::max(dot(abs(n), error), 1e-20f);
+  return {step_lane(po.x, away.x), step_lane(po.y, away.y), step_lane(po.z, away.z)};
+}
+
+// A BSDF's value towards a light: f * |cos|, the pdf its sampling gives the direction, whether
+// the light sample goes on (the one-path code's test that f is not black), and false in
+// `in_range` where the lane must fall back.
+struct LaneBsdfValue {
+  color3 f_cos;
+  float pdf;
+  bool nonzero;
+  bool in_range = true;
+};
+
+// What a light sample leaves for its shadow ray: the direction to the light, how far the ray
+// goes, the contribution before the throughput, whether there is one, and the BSDF's in_range.
+struct LaneLight {
+  vec3 direction;
+  float distance;
+  color3 contribution;
+  bool lit;
+  bool in_range;
+};
+
+// A point light without range (delta_light.h, sample_delta_light) and its contribution
+// (path.cpp, sample_one_light). `eval(direction)` is the BSDF's LaneBsdfValue (LambertValue or
+// GlossyValue: a lambda's call GCC may leave out of line, and the loop is then not vectorised).
+template <class Eval>
+[[gnu::always_inline]] inline LaneLight point_light_lane(const SurfaceLanes& l, int i, vec3 point, Eval eval) {
+  LaneLight s;
+  vec3 to_light = vec3{l.light_x[i], l.light_y[i], l.light_z[i]} - point;
+  float d = length(to_light);
+  s.direction = to_light * (1 / d);
+  s.distance = d;
+  float attenuation = l.kc[i] + l.kl[i] * d + l.kq[i] * d * d;
+  color3 irradiance = color3{l.intensity_r[i], l.intensity_g[i], l.intensity_b[i]} * (1.0f / attenuation);
+  LaneBsdfValue bsdf = eval(s.direction);
+  s.lit = (d > 0) & (attenuation > 0) & bsdf.nonzero;
+  s.in_range = bsdf.in_range;
+  s.contribution = bsdf.f_cos * irradiance * color3{1, 1, 1} / l.select_pdf[i];
+  return s;
+}
+
+// An emitting triangle (area_light.cpp, sample_area_light and area_light_emits; Heitz's
+// mapping of sample_uniform_triangle) and its contribution with MIS against the BSDF's sampling.
+template <class Eval>
+[[gnu::always_inline]] inline LaneLight triangle_light_lane(const SurfaceLanes& l, int i, vec3 point, Eval eval) {
+  LaneLight s;
+  float ux = l.u_point_x[i], uy = l.u_point_y[i];
+  bool lower = ux < uy;
+  float half_x = ux / 2, half_y = uy / 2;
+  vec2 b = {lower ? half_x : ux - half_y, lower ? uy - half_x : half_y};
+  vec3 position = vec3{l.light_x[i], l.light_y[i], l.light_z[i]} * (1 - b.x - b.y) +
+                  vec3{l.light1_x[i], l.light1_y[i], l.light1_z[i]} * b.x +
+                  vec3{l.light2_x[i], l.light2_y[i], l.light2_z[i]} * b.y;
+  vec3 light_normal = {l.light_nx[i], l.light_ny[i], l.light_nz[i]};
+  vec3 to_light = position - point;
+  float d = length(to_light);
+  s.direction = to_light / d;
+  float area = l.light_area[i];
+  float cos_light = std::abs(dot(light_normal, s.direction));
+  float light_pdf = d * d / (area * cos_light);
+  bool emits = (l.two_sided[i] != 0) | (dot(light_normal, -s.direction) > 0);
+  color3 emitted = {l.intensity_r[i], l.intensity_g[i], l.intensity_b[i]};
+  LaneBsdfValue bsdf = eval(s.direction);
+  float pdf = l.select_pdf[i] * light_pdf;
+  float a = pdf * pdf, c = bsdf.pdf * bsdf.pdf;  // power_heuristic (sampling/warp.h)
+  float weight = a + c > 0 ? a / (a + c) : 0.0f;
+  s.distance = d * (1 - 1e-4f);
+  s.lit = (d > 0) & (area > 0) & (cos_light > 1e-7f) & (std::abs(light_pdf) <= largest_float) & emits &
+          !lane::black(emitted) & bsdf.nonzero;
+  s.contribution = bsdf.f_cos * emitted * color3{1, 1, 1} * (weight / pdf);
+  s.in_range = bsdf.in_range;
+  return s;
+}
+
+// The Lambert lobes' value towards `wi` (eval_world), `normal` facing wo.
+struct LambertValue {
+  vec3 normal;
+  color3 albedo;
+  bool valid;
+  [[gnu::always_inline]] LaneBsdfValue operator()(vec3 wi) const {
+    float cos_i = dot(normal, wi);
+    color3 f_cos = albedo * (inv_pi * cos_i);
+    return {f_cos, cos_i * inv_pi, bool(valid & (cos_i >= lambert_min_cosine) & !lane::black(f_cos))};
+  }
+};
+
+// A glossy lane's material and its lobes as the first loop left them.
+[[gnu::always_inline]] inline GlossyLaneMaterial glossy_material(const SurfaceLanes& l, int i) {
+  return {{l.albedo_r[i], l.albedo_g[i], l.albedo_b[i]},
+          l.alpha[i],
+          l.ior[i],
+          l.ior_f0[i],
+          l.metal[i],
+          l.plastic[i],
+          l.specular[i],
+          {l.specular_f0_r[i], l.specular_f0_g[i], l.specular_f0_b[i]},
+          l.specular_f0_max[i]};
+}
+[[gnu::always_inline]] inline GlossyLaneLobes stored_glossy_lobes(const SurfaceLanes& l, int i) {
+  return {{l.lobe_nx[i], l.lobe_ny[i], l.lobe_nz[i]},
+          {l.wo_x[i], l.wo_y[i], l.wo_z[i]},
+          l.p_specular[i],
+          l.p_diffuse[i],
+          l.coating_o[i],
+          l.lambda_o[i],
+          l.valid[i] != 0};
+}
+// The metallic-roughness lobes' value towards the world direction `wi` (Bsdf::eval_framed).
+template <bool WithPdf>
+struct GlossyValue {
+  GlossyLaneMaterial m;
+  GlossyLaneLobes lobes;
+  [[gnu::always_inline]] LaneBsdfValue operator()(vec3 wi) const {
+    float pdf = 0;
+    bool in_range;
+    color3 f = eval_glossy_lane<WithPdf>(m, lobes, to_local(make_shading_frame(lobes.normal), wi), pdf, in_range);
+    return {f, pdf, !lane::black(f), in_range};
+  }
+};
+
+// A light sample's outputs: whether it lights the point, its contribution through the
+// throughput, and its shadow ray (spawn_ray_to towards the light, as set_shadow_ray).
+struct LightOutputs {
+  int32_t lit;
+  color3 contribution;
+  vec3 shadow_origin, shadow_direction;
+};
+[[gnu::always_inline]] inline LightOutputs light_outputs(const SurfaceLanes& l, int i, const LaneLight& light,
+                                                         vec3 point, vec3 error, vec3 geometric_normal) {
+  LightOutputs o;
+  o.lit = light.lit;
+  o.contribution = color3{l.throughput_r[i], l.throughput_g[i], l.throughput_b[i]} * light.contribution;
+  vec3 target = point + light.direction * light.distance;
+  o.shadow_origin = offset_lane(point, error, geometric_normal, target - point);
+  o.shadow_direction = target - o.shadow_origin;
+  return o;
+}
+[[gnu::always_inline]] inline LightOutputs stored_light_outputs(const SurfaceLanes& l, int i) {
+  return {l.lit[i], {l.light_r[i], l.light_g[i], l.light_b[i]}, {l.shadow_ox[i], l.shadow_oy[i], l.shadow_oz[i]},
+          {l.shadow_dx[i], l.shadow_dy[i], l.shadow_dz[i]}};
+}
+[[gnu::always_inline]] inline void store_light_outputs(SurfaceLanes& l, int i, const LightOutputs& o) {
+  l.lit[i] = o.lit;
+  l.light_r[i] = o.contribution.x, l.light_g[i] = o.contribution.y, l.light_b[i] = o.contribution.z;
+  l.shadow_ox[i] = o.shadow_origin.x, l.shadow_oy[i] = o.shadow_origin.y, l.shadow_oz[i] = o.shadow_origin.z;
+  l.shadow_dx[i] = o.shadow_direction.x, l.shadow_dy[i] = o.shadow_direction.y, l.shadow_dz[i] = o.shadow_direction.z;
+}
+
+// A lane's hit: make_surface_hit for an untransformed triangle (surface_hit.cpp,
+// fill_triangle_hit) and make_hit_shading. `in_range` is false where a normalize() the
+// one-path code does would have rescaled.
+struct LaneHit {
+  vec3 point;
+  float error;  // the position's error bound, the same along every axis
+  vec3 geometric_normal;
+  vec3 normal;  // the shading normal facing the ray (HitShading::normal)
+  vec3 wo;
+  bool in_range;
+};
+[[gnu::always_inline]] inline LaneHit decode_lane(const SurfaceLanes& l, int i) {
+  LaneHit hit;
+  vec3 p0 = {l.p0x[i], l.p0y[i], l.p0z[i]}, p1 = {l.p1x[i], l.p1y[i], l.p1z[i]}, p2 = {l.p2x[i], l.p2y[i], l.p2z[i]};
+  float b1 = l.b1[i], b2 = l.b2[i];
+  vec3 direction = {l.dx[i], l.dy[i], l.dz[i]};
+  vec3 e1 = p1 - p0, e2 = p2 - p0;
+  hit.point = p0 + (b1 * e1 + b2 * e2);
+  vec3 object_error = rounding_gamma(5) * (abs(b1 * e1) + abs(b2 * e2)) + rounding_gamma(2) * abs(hit.point);
+  hit.error = max_component(object_error);
+  bool normal_in_range, direction_in_range;
+  hit.geometric_normal = normalize_in_range({l.ngx[i], l.ngy[i], l.ngz[i]}, normal_in_range);
+  bool front_face = dot(direction, hit.geometric_normal) < 0;
+  // Interpolated vertex normals, on the geometric normal's side, where they are usable.
+  float b0 = 1 - b1 - b2;
+  vec3 interpolated = vec3{l.n0x[i], l.n0y[i], l.n0z[i]} * b0 + vec3{l.n1x[i], l.n1y[i], l.n1z[i]} * b1 +
+                      vec3{l.n2x[i], l.n2y[i], l.n2z[i]} * b2;
+  bool has_normals = l.has_normals[i] != 0, interpolated_in_range;
+  vec3 n = normalize_in_range(interpolated, interpolated_in_range);
+  bool usable = has_normals & lane::finite(n) & (length_squared(n) > 0.5f);
+  vec3 facing = dot(n, hit.geometric_normal) < 0 ? -n : n;
+  vec3 shading_normal = usable ? facing : hit.geometric_normal;
+  hit.wo = -normalize_in_range(direction, direction_in_range);
+  hit.normal = front_face ? shading_normal : -shading_normal;
+  hit.in_range = normal_in_range & direction_in_range & (interpolated_in_range | !has_normals);
+  return hit;
+}
+
+// What every lane stores of its hit for the outputs and the later loops.
+[[gnu::always_inline]] inline void store_hit(SurfaceLanes& l, int i, const LaneHit& hit, vec3 lobe_normal, bool valid) {
+  l.fallback[i] = !hit.in_range;
+  l.px[i] = hit.point.x, l.py[i] = hit.point.y, l.pz[i] = hit.point.z;
+  l.nx[i] = hit.normal.x, l.ny[i] = hit.normal.y, l.nz[i] = hit.normal.z;
+  l.gnx[i] = hit.geometric_normal.x, l.gny[i] = hit.geometric_normal.y, l.gnz[i] = hit.geometric_normal.z;
+  l.error[i] = hit.error;
+  l.lobe_nx[i] = lobe_normal.x, l.lobe_ny[i] = lobe_normal.y, l.lobe_nz[i] = lobe_normal.z;
+  l.valid[i] = valid;
+}
+[[gnu::always_inline]] inline void store_bounce(SurfaceLanes& l, int i, bool scatters, vec3 origin, vec3 wi,
+                                                float pdf, color3 weight) {
+  l.scatters[i] = scatters;
+  l.ox[i] = origin.x, l.oy[i] = origin.y, l.oz[i] = origin.z;
+  l.wix[i] = wi.x, l.wiy[i] = wi.y, l.wiz[i] = wi.z;
+  l.pdf[i] = pdf;
+  l.weight_r[i] = weight.x, l.weight_g[i] = weight.y, l.weight_b[i] = weight.z;
+}
+
+// A Lambert lane: its hit, the lobes (lambert_bsdf.cpp) and their bounce (sample_warped), then
+// sample_one_light for a point light with opaque shadows, and the two rays' origins (spawn_ray,
+// spawn_ray_to).
+[[gnu::always_inline]] inline void lambert_lane(SurfaceLanes& l, int i) {
+  LaneHit hit = decode_lane(l, i);
+  color3 albedo = {l.albedo_r[i], l.albedo_g[i], l.albedo_b[i]};
+  float cos_o = dot(hit.normal, hit.wo);
+  vec3 lobe_normal = cos_o < 0 ? -hit.normal : hit.normal;
+  bool valid = (std::abs(cos_o) > lambert_min_cosine) & lane::finite(cos_o);  // a lane's albedo is never black
+  store_hit(l, i, hit, lobe_normal, valid);
+
+  vec3 local = {l.cosine_x[i], l.cosine_y[i], l.cosine_z[i]};
+  bool scatters = valid & (local.z >= lambert_min_cosine);
+  vec3 wi = to_world(make_shading_frame(lobe_normal), local);
+  store_bounce(l, i, scatters, offset_lane(hit.point, {hit.error, hit.error, hit.error}, hit.geometric_normal, wi),
+               wi, local.z * inv_pi, albedo);
+  LaneLight light = point_light_lane(l, i, hit.point, LambertValue{lobe_normal, albedo, valid});
+  store_light_outputs(l, i, light_outputs(l, i, light, hit.point, {hit.error, hit.error, hit.error}, hit.geometric_normal));
+}
+
+// A glossy lane's first loop: its hit, the metallic-roughness lobes and the point light's sample.
+[[gnu::always_inline]] inline void glossy_lane(SurfaceLanes& l, int i) {
+  LaneHit hit = decode_lane(l, i);
+  GlossyLaneMaterial m = glossy_material(l, i);
+  GlossyLaneLobes lobes = make_glossy_lane_lobes(m, hit.normal, hit.wo);
+  store_hit(l, i, hit, lobes.normal, lobes.valid);
+  l.wo_x[i] = lobes.wo.x, l.wo_y[i] = lobes.wo.y, l.wo_z[i] = lobes.wo.z;
+  l.p_specular[i] = lobes.p_specular, l.p_diffuse[i] = lobes.p_diffuse;
+  l.coating_o[i] = lobes.coating_o, l.lambda_o[i] = lobes.lambda_o;
+  LaneLight light = point_light_lane(l, i, hit.point, GlossyValue<false>{m, lobes});
+  l.fallback[i] |= !light.in_range;
+  store_light_outputs(l, i, light_outputs(l, i, light, hit.point, {hit.error, hit.error, hit.error}, hit.geometric_normal));
+}
+
+// The GGX lobe's directions where a glossy lane chose it (sample_specular): one lane at a time,
+// in the one-path code's own function, whose sine and cosine no vector loop reproduces to the
+// bit. Most lanes choose the diffuse lobe.
+void sample_glossy_specular(SurfaceLanes& l) {
+  for (int i = 0; i < l.count; ++i) {
+    if (!l.valid[i] || !(l.u_lobe[i] < l.p_specular[i])) continue;
+    vec3 wo = {l.wo_x[i], l.wo_y[i], l.wo_z[i]};
+    vec3 wi = reflect(wo, sample_ggx_visible_normal(wo, l.alpha[i], {l.u_x[i], l.u_y[i]}));
+    l.specular_x[i] = wi.x, l.specular_y[i] = wi.y, l.specular_z[i] = wi.z;
+  }
+}
+
+// A glossy lane's bounce (sample_local, mixture_sample): the chosen lobe's direction weighted by
+// the whole mixture, and the next ray's origin.
+[[gnu::always_inline]] inline void glossy_bounce_lane(SurfaceLanes& l, int i) {
+  GlossyLaneMaterial m = glossy_material(l, i);
+  GlossyLaneLobes lobes = stored_glossy_lobes(l, i);
+  bool specular = lobes.valid & (l.u_lobe[i] < lobes.p_specular);
+  bool diffuse = lobes.valid & !specular & (l.u_lobe[i] < lobes.p_specular + lobes.p_diffuse);
+  vec3 local = select(specular, {l.specular_x[i], l.specular_y[i], l.specular_z[i]},
+                      {l.cosine_x[i], l.cosine_y[i], l.cosine_z[i]});
+  float pdf;
+  bool in_range;
+  color3 f = eval_glossy_lane<true>(m, lobes, local, pdf, in_range);
+  color3 weight = f / pdf;
+  bool scatters = (specular & !(local.z <= 0)) | diffuse;
+  scatters = scatters & (pdf > 0) & !lane::black(f) & lane::finite(weight) & !lane::black(weight);
+  vec3 wi = to_world(make_shading_frame(lobes.normal), local);
+  vec3 point = {l.px[i], l.py[i], l.pz[i]};
+  float error = l.error[i];
+  vec3 origin = offset_lane(point, {error, error, error}, {l.gnx[i], l.gny[i], l.gnz[i]}, wi);
+  l.fallback[i] |= (!in_range) & (specular | diffuse);
+  store_bounce(l, i, scatters, origin, wi, pdf, weight);
+}
+
+// A lane whose light is an emitting triangle, after the first loop: its light sample replaces
+// the point light's. A loop of its own: in one loop with the rest, GCC would not vectorise it.
+template <bool Glossy>
+[[gnu::always_inline]] inline void triangle_lane(SurfaceLanes& l, int i) {
+  vec3 point = {l.px[i], l.py[i], l.pz[i]};
+  vec3 lobe_normal = {l.lobe_nx[i], l.lobe_ny[i], l.lobe_nz[i]};
+  LaneLight light;
+  if constexpr (Glossy) {
+    GlossyLaneMaterial m = glossy_material(l, i);
+    GlossyLaneLobes lobes = stored_glossy_lobes(l, i);
+    light = triangle_light_lane(l, i, point, GlossyValue<true>{m, lobes});
+  } else {
+    color3 albedo = {l.albedo_r[i], l.albedo_g[i], l.albedo_b[i]};
+    bool valid = l.valid[i] != 0;
+    light = triangle_light_lane(l, i, point, LambertValue{lobe_normal, albedo, valid});
+  }
+  float largest = l.error[i];
+  LightOutputs o = light_outputs(l, i, light, point, {largest, largest, largest}, {l.gnx[i], l.gny[i], l.gnz[i]});
+  // Stored in every lane, the point lights' lanes keeping what they had: a conditional store
+  // is a branch without AVX2's masked stores.
+  LightOutputs kept = stored_light_outputs(l, i);
+  bool area = l.area[i] != 0;
+  o.lit = area ? o.lit : kept.lit;
+  o.contribution = select(area, o.contribution, kept.contribution);
+  o.shadow_origin = select(area, o.shadow_origin, kept.shadow_origin);
+  o.shadow_direction = select(area, o.shadow_direction, kept.shadow_direction);
+  store_light_outputs(l, i, o);
+  if constexpr (Glossy) l.fallback[i] |= (!light.in_range) & area;
+}
+
+// The kernel's loops, compiled once per instruction set. Each is a loop of its own: GCC
+// vectorises these one at a time, not together.
+template <bool Glossy, bool AnyArea>
+[[gnu::always_inline]] inline void shade_lanes(SurfaceLanes& l) {
+  if constexpr (Glossy) {
+    for (int i = 0; i < l.count; ++i) glossy_lane(l, i);
+    sample_glossy_specular(l);
+    for (int i = 0; i < l.count; ++i) glossy_bounce_lane(l, i);
+  } else {
+    for (int i = 0; i < l.count; ++i) lambert_lane(l, i);
+  }
+  if constexpr (AnyArea)
+    for (int i = 0; i < l.count; ++i) triangle_lane<Glossy>(l, i);
+}
+template <bool Glossy, bool AnyArea>
+[[gnu::target("avx2")]] void shade_lanes_avx2(SurfaceLanes& l) {
+  shade_lanes<Glossy, AnyArea>(l);
+}
+template <bool Glossy, bool AnyArea>
+void shade_lanes_baseline(SurfaceLanes& l) {
+  shade_lanes<Glossy, AnyArea>(l);
+}
+template <bool Glossy>
+void shade_lanes_on(SurfaceLanes& l, bool avx2) {
+  if (l.any_area)
+    avx2 ? shade_lanes_avx2<Glossy, true>(l) : shade_lanes_baseline<Glossy, true>(l);
+  else
+    avx2 ? shade_lanes_avx2<Glossy, false>(l) : shade_lanes_baseline<Glossy, false>(l);
+}
+
+}  // namespace
+
+void shade_surface_lanes(SurfaceLanes& lanes, LaneIsa isa) {
+  bool avx2 = resolve_lane_isa(isa) == LaneIsa::avx2;
+  lanes.glossy ? shade_lanes_on<true>(lanes, avx2) : shade_lanes_on<false>(lanes, avx2);
+}
+
+}  // namespace radiant

@@ -1,0 +1,179 @@
+// The glTF metallic-roughness BSDF (metallic_roughness_bsdf.cpp) written for one SIMD lane of the
+// path tracer's surface lanes (integrators/surface_lanes.h), in its commonest case: opaque,
+// isotropic, rough and without iridescence, a GGX metal mixed with a GGX-coated Lambert. Every
+// branch of the model is a select here, so that a loop over lanes vectorises, and every value
+// is worked out with the model's operations in the model's order, so that each lane's results
+// are the model's to the bit (tests/render/surface_lanes_test.cpp).
+#pragma once
+
+#include <algorithm>
+#include <bit>
+#include <cstdint>
+#include <cmath>
+#include <limits>
+
+#include "materials/bsdf_models.h"
+#include "materials/fresnel.h"
+#include "materials/metallic_roughness.h"
+#include "materials/shading_frame.h"
+
+namespace radiant {
+
+// Whether a material's parameters are the case these lanes shade.
+inline bool is_metallic_roughness_lane_case(const MetallicRoughnessParams& p) {
+  return !p.anisotropic && !p.smooth && !(p.glass > 0) && !(p.iridescence > 0);
+}
+
+namespace lane {
+
+constexpr float largest_float = std::numeric_limits<float>::max();
+
+// std::isfinite as comparisons, which a vector loop can take.
+[[gnu::always_inline]] inline bool finite(float x) { return std::abs(x) <= largest_float; }
+[[gnu::always_inline]] inline bool finite(vec3 a) { return finite(a.x) & finite(a.y) & finite(a.z); }
+[[gnu::always_inline]] inline bool black(vec3 a) { return (a.x == 0) & (a.y == 0) & (a.z == 0); }
+// A per-component select: a ternary on whole vectors is a branch GCC does not if-convert.
+[[gnu::always_inline]] inline vec3 select(bool c, vec3 a, vec3 b) {
+  return {c ? a.x : b.x, c ? a.y : b.y, c ? a.z : b.z};
+}
+
+// `x` where `keep`, else +0: the select written on the bits. As a float select, GCC folds the
+// comparisons callers make of the result into selects of booleans, which it cannot vectorise.
+[[gnu::always_inline]] inline float zero_unless(bool keep, float x) {
+  return std::bit_cast<float>(std::bit_cast<uint32_t>(x) & (keep ? ~0u : 0u));
+}
+
+// normalize() without its rescaling branch: `in_range` says whether the result is normalize()'s.
+[[gnu::always_inline]] inline vec3 normalize_in_range(vec3 a, bool& in_range) {
+  float l2 = dot(a, a);
+  in_range = (l2 >= std::numeric_limits<float>::min()) & (l2 <= std::numeric_limits<float>::max());
+  return a * (1 / std::sqrt(l2));
+}
+
+// fresnel_dielectric (fresnel.h): under total internal reflection the square root's NaN is
+// worked out and not selected.
+[[gnu::always_inline]] inline float fresnel_dielectric(float cos_i, float eta) {
+  cos_i = std::clamp(cos_i, 0.0f, 1.0f);
+  float sin2_t = (1 - cos_i * cos_i) / (eta * eta);
+  float cos_t = std::sqrt(1 - sin2_t);
+  float parallel = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
+  float perpendicular = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
+  float reflectance = (parallel * parallel + perpendicular * perpendicular) / 2;
+  return sin2_t >= 1 ? 1.0f : reflectance;
+}
+
+// ggx_lambda and ggx_distribution (microfacet.h).
+[[gnu::always_inline]] inline float ggx_lambda(vec3 w, float alpha) {
+  float cos2 = w.z * w.z;
+  float tan2 = std::max(0.0f, 1 - cos2) / cos2;
+  float lambda = (std::sqrt(1 + alpha * alpha * tan2) - 1) / 2;
+  return cos2 <= 0 ? std::numeric_limits<float>::infinity() : lambda;
+}
+[[gnu::always_inline]] inline float ggx_distribution(vec3 m, float alpha) {
+  float a2 = alpha * alpha;
+  float d = m.z * m.z * (a2 - 1) + 1;
+  float density = a2 / (pi * d * d);
+  return m.z <= 0 ? 0.0f : density;
+}
+
+}  // namespace lane
+
+// The parameters of the case that a lane reads (MetallicRoughnessParams' fields).
+struct GlossyLaneMaterial {
+  color3 base;
+  float alpha, ior, ior_f0;
+  float metal, plastic;
+  float specular;  // the coating's strength, its tinted F0 and that F0's largest channel
+  color3 specular_f0;
+  float specular_f0_max;
+};
+
+// The lobes seen from wo (MetallicRoughnessLobes' fields), meaningful where `valid`.
+struct GlossyLaneLobes {
+  vec3 normal;  // the frame's z, make_shading_frame's input: the shading normal on wo's side
+  vec3 wo;      // local
+  float p_specular, p_diffuse;
+  float coating_o, lambda_o;
+  bool valid;
+};
+
+// coating_rise, coating_fresnel and coating_transmittance without iridescence.
+[[gnu::always_inline]] inline float glossy_coating_rise(const GlossyLaneMaterial& m, float cos) {
+  float rise = std::max((lane::fresnel_dielectric(cos, m.ior) - m.ior_f0) / (1 - m.ior_f0), 0.0f);
+  return m.ior_f0 < 1 ? rise : 1.0f;
+}
+[[gnu::always_inline]] inline float glossy_coating_transmittance(const GlossyLaneMaterial& m, float rise) {
+  return 1 - (m.specular_f0_max + (1 - m.specular_f0_max) * rise) * m.specular;
+}
+// specular_fresnel without glass and iridescence, given the coating's curve at `cos_h`.
+[[gnu::always_inline]] inline color3 glossy_specular_fresnel(const GlossyLaneMaterial& m, float cos_h, float rise) {
+  color3 coating = (m.specular_f0 + (color3{1, 1, 1} - m.specular_f0) * rise) * m.specular;
+  color3 plastic = lane::select(m.plastic > 0, coating * m.plastic, color3{0, 0, 0});
+  color3 metal = lane::select(m.metal > 0, fresnel_schlick(m.base, cos_h) * m.metal, color3{0, 0, 0});
+  float glass = 0;
+  return metal + plastic + color3{glass, glass, glass};
+}
+
+// make_metallic_roughness_lobes for `n` the shading normal (any side) and wo the unit direction
+// towards the viewer.
+[[gnu::always_inline]] inline GlossyLaneLobes make_glossy_lane_lobes(const GlossyLaneMaterial& m, vec3 n, vec3 wo) {
+  GlossyLaneLobes l;
+  l.normal = dot(n, wo) < 0 ? -n : n;  // facing_frame
+  ShadingFrame frame = make_shading_frame(l.normal);
+  l.wo = to_local(frame, wo);
+  bool valid = (l.wo.z > 1e-7f) & lane::finite(l.wo);
+  bool colored = max_component(m.base) > 0;
+  float cos_o = l.wo.z;
+  float rise_o = glossy_coating_rise(m, cos_o);
+  l.coating_o = glossy_coating_transmittance(m, rise_o);
+  l.lambda_o = lane::ggx_lambda(l.wo, m.alpha);
+  // selection_weight of the present lobes, with its floor.
+  constexpr float min_lobe_weight = 0.05f;
+  bool specular_present = (m.metal > 0) | (m.plastic * m.specular > 0);
+  float specular = std::max(mean(glossy_specular_fresnel(m, cos_o, rise_o)), min_lobe_weight);
+  specular = specular_present ? specular : 0.0f;
+  bool diffuse_present = (m.plastic > 0) & colored;
+  float diffuse = std::max(m.plastic * mean(m.base) * l.coating_o, min_lobe_weight);
+  diffuse = diffuse_present ? diffuse : 0.0f;
+  float transmitted = 0;
+  float total = specular + diffuse + transmitted;
+  l.valid = valid & !(total <= 0);  // as the model's test: a NaN total leaves it valid
+  l.p_specular = specular / total;
+  l.p_diffuse = diffuse / total;
+  return l;
+}
+
+// evaluate<true, WithPdf>: f(wo, wi) * |cos| at the local direction `wi`, and the pdf that the
+// lobes sample it with (0 where not finite). `in_range` turns false where the half vector's
+// normalize() would have rescaled: the lane must fall back.
+template <bool WithPdf>
+[[gnu::always_inline]] inline color3 eval_glossy_lane(const GlossyLaneMaterial& m, const GlossyLaneLobes& l, vec3 wi,
+                                                      float& pdf, bool& in_range) {
+  bool upper = l.valid & !(std::abs(wi.z) < 1e-7f) & (wi.z > 0);
+  // The coated Lambert.
+  float coating = l.coating_o * glossy_coating_transmittance(m, glossy_coating_rise(m, wi.z));
+  color3 diffuse = m.base * (m.plastic * coating * inv_pi * wi.z);
+  color3 f = color3{0, 0, 0} + lane::select(upper & (l.p_diffuse > 0), diffuse, color3{0, 0, 0});
+  pdf = 0;
+  if constexpr (WithPdf) pdf = upper ? pdf + l.p_diffuse * wi.z * inv_pi : pdf;
+  // The rough reflection (add_rough_reflection).
+  bool h_in_range;
+  vec3 h = lane::normalize_in_range(l.wo + wi, h_in_range);
+  float cos_h = dot(l.wo, h);
+  bool reflects = upper & (l.p_specular > 0) & !(cos_h <= 0);  // a NaN goes on, as in the model
+  in_range = h_in_range | !(upper & (l.p_specular > 0));
+  float density = lane::ggx_distribution(h, m.alpha);
+  float rise = m.plastic > 0 ? glossy_coating_rise(m, cos_h) : 0.0f;
+  float masking_shadowing = 1 / (1 + l.lambda_o + lane::ggx_lambda(wi, m.alpha));
+  color3 reflected = glossy_specular_fresnel(m, cos_h, rise) * (density * masking_shadowing / (4 * l.wo.z));
+  f = lane::select(reflects, f + reflected, f);
+  if constexpr (WithPdf) {
+    float visible = 1 / (1 + l.lambda_o) * std::max(0.0f, dot(l.wo, h)) * density / l.wo.z;
+    pdf = reflects ? pdf + l.p_specular * (visible / (4 * cos_h)) : pdf;
+    pdf = lane::zero_unless(lane::finite(pdf), pdf);
+  }
+  bool finite = lane::finite(f);
+  return {lane::zero_unless(finite, f.x), lane::zero_unless(finite, f.y), lane::zero_unless(finite, f.z)};
+}
+
+}  // namespace radiant
