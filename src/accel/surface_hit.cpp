@@ -18,13 +18,6 @@ vec4 interpolate4(const std::vector<vec4>& v, const uint32_t* tri, float b0, flo
           a.w * b0 + b.w * b1 + c.w * b2};
 }
 
-vec3 abs_transform_vector(const mat4& m, vec3 v) {
-  mat4 a;
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 4; ++c) a.m[r][c] = std::abs(m.m[r][c]);
-  return transform_vector(a, v);
-}
-
 // dP/du and dP/dv of the triangle (object space) from its edges and their texcoord differences.
 void triangle_uv_derivatives(const MeshDesc& mesh, const uint32_t* tri, vec3 e1, vec3 e2, SurfaceHit& hit) {
   vec2 uv0 = mesh.texcoords0[tri[0]], d1 = mesh.texcoords0[tri[1]] - uv0, d2 = mesh.texcoords0[tri[2]] - uv0;

@@ -540,7 +540,7 @@ struct PathVariant {
       LightSampling && !(E & effect_group_textures) && !(E & effect_group_transparency);
 
   // Gathers the stage's vertices that the surface lanes can shade (surface_lanes.h) and shades
-  // them: a live path at a hit of an untransformed triangle, whose material is a lane material,
+  // them: a live path at a hit of a mesh's triangle, whose material is a lane material,
   // which chooses a point light without range or an emitting triangle. Its light is chosen, a
   // triangle's point drawn and a glossy material's lobe choice drawn here, as the one-path code
   // would.
@@ -549,7 +549,7 @@ struct PathVariant {
     const SceneDesc& scene = *ctx.scene;
     const SceneAccel& accel = *ctx.accel;
     const LightTable& lights = *ctx.lights;
-    for (SurfaceLanes* set : {&w.lambert, &w.glossy}) set->count = 0, set->any_area = false;
+    for (SurfaceLanes* set : {&w.lambert, &w.glossy}) set->count = 0, set->any_area = set->any_transformed = false;
     w.glossy.glossy = true;
     for (int k = 0; k < live_count; ++k) {
       w.lane_of[k] = -1;
@@ -558,7 +558,7 @@ struct PathVariant {
       VertexDraws& drawn = w.drawn[k];
       int depth = path.depth;
       if (id.instance < 0 || depth >= path.max_depth || (path.first_hit && depth == 0) ||
-          !(depth > 0 || path.gathers_first_vertex) || !drawn.has(bsdf_direction) || !accel.instance_identity[id.instance])
+          !(depth > 0 || path.gathers_first_vertex) || !drawn.has(bsdf_direction))
         continue;
       const MeshDesc& mesh = scene.meshes[scene.instances[id.instance].mesh];
       LaneModel model = ctx.lane_models[size_t(mesh.material)];
@@ -594,6 +594,8 @@ struct PathVariant {
       l.b1[i] = id.barycentric.x, l.b2[i] = id.barycentric.y;
       l.ngx[i] = id.geometric_normal_raw.x, l.ngy[i] = id.geometric_normal_raw.y, l.ngz[i] = id.geometric_normal_raw.z;
       l.has_normals[i] = !mesh.normals.empty();
+      l.transformed[i] = !accel.instance_identity[id.instance];
+      if (l.transformed[i]) set_instance_transform(l, i, accel, id.instance);
       vec3 n0, n1, n2;  // zero without normals: the lane then ignores them
       if (l.has_normals[i]) n0 = mesh.normals[tri[0]], n1 = mesh.normals[tri[1]], n2 = mesh.normals[tri[2]];
       l.n0x[i] = n0.x, l.n0y[i] = n0.y, l.n0z[i] = n0.z;
@@ -637,6 +639,16 @@ struct PathVariant {
       if (set->count > 0) shade_surface_lanes(*set);
   }
 
+  static void set_instance_transform(SurfaceLanes& l, int i, const SceneAccel& accel, int instance) {
+    l.any_transformed = true;
+    const mat4& to_world = accel.scene->instances[instance].transform;
+    const mat4& to_object = accel.instance_inverse[instance];
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 4; ++c) l.to_world[r * 4 + c][i] = to_world.m[r][c];
+      for (int c = 0; c < 3; ++c) l.to_object[r * 3 + c][i] = to_object.m[r][c];
+    }
+    l.orientation[i] = accel.instance_orientation[instance];
+  }
   static void set_glossy_material(SurfaceLanes& l, int i, const MetallicRoughnessParams& p) {
     l.albedo_r[i] = p.base.x, l.albedo_g[i] = p.base.y, l.albedo_b[i] = p.base.z;
     l.alpha[i] = p.alpha, l.ior[i] = p.ior, l.ior_f0[i] = p.ior_f0;

@@ -181,9 +181,28 @@ struct LightOutputs {
   l.shadow_dx[i] = o.shadow_direction.x, l.shadow_dy[i] = o.shadow_direction.y, l.shadow_dz[i] = o.shadow_direction.z;
 }
 
-// A lane's hit: make_surface_hit for an untransformed triangle (surface_hit.cpp,
-// fill_triangle_hit) and make_hit_shading. `in_range` is false where a normalize() the
-// one-path code does would have rescaled.
+// The instance transforms of a lane (surface_hit.cpp, fill_triangle_hit): a point and an error
+// bound into the world, and a normal (the inverse's transpose).
+[[gnu::always_inline]] inline vec3 lane_transform_point(const SurfaceLanes& l, int i, vec3 p) {
+  auto m = [&](int r, int c) { return l.to_world[r * 4 + c][i]; };
+  return {m(0, 0) * p.x + m(0, 1) * p.y + m(0, 2) * p.z + m(0, 3), m(1, 0) * p.x + m(1, 1) * p.y + m(1, 2) * p.z + m(1, 3),
+          m(2, 0) * p.x + m(2, 1) * p.y + m(2, 2) * p.z + m(2, 3)};
+}
+[[gnu::always_inline]] inline vec3 lane_abs_transform_vector(const SurfaceLanes& l, int i, vec3 v) {
+  auto m = [&](int r, int c) { return std::abs(l.to_world[r * 4 + c][i]); };
+  return {m(0, 0) * v.x + m(0, 1) * v.y + m(0, 2) * v.z, m(1, 0) * v.x + m(1, 1) * v.y + m(1, 2) * v.z,
+          m(2, 0) * v.x + m(2, 1) * v.y + m(2, 2) * v.z};
+}
+[[gnu::always_inline]] inline vec3 lane_transform_normal(const SurfaceLanes& l, int i, vec3 n) {
+  auto inverse = [&](int r, int c) { return l.to_object[r * 3 + c][i]; };
+  return {inverse(0, 0) * n.x + inverse(1, 0) * n.y + inverse(2, 0) * n.z,
+          inverse(0, 1) * n.x + inverse(1, 1) * n.y + inverse(2, 1) * n.z,
+          inverse(0, 2) * n.x + inverse(1, 2) * n.y + inverse(2, 2) * n.z};
+}
+
+// A lane's hit: make_surface_hit for a triangle (surface_hit.cpp, fill_triangle_hit) and
+// make_hit_shading. `in_range` is false where a normalize() the one-path code does would have
+// rescaled. `AnyTransformed`: some lanes' triangles are placed by their instance's transform.
 struct LaneHit {
   vec3 point;
   float error;  // the position's error bound, the same along every axis
@@ -192,22 +211,41 @@ struct LaneHit {
   vec3 wo;
   bool in_range;
 };
+template <bool AnyTransformed>
 [[gnu::always_inline]] inline LaneHit decode_lane(const SurfaceLanes& l, int i) {
   LaneHit hit;
   vec3 p0 = {l.p0x[i], l.p0y[i], l.p0z[i]}, p1 = {l.p1x[i], l.p1y[i], l.p1z[i]}, p2 = {l.p2x[i], l.p2y[i], l.p2z[i]};
   float b1 = l.b1[i], b2 = l.b2[i];
   vec3 direction = {l.dx[i], l.dy[i], l.dz[i]};
   vec3 e1 = p1 - p0, e2 = p2 - p0;
-  hit.point = p0 + (b1 * e1 + b2 * e2);
-  vec3 object_error = rounding_gamma(5) * (abs(b1 * e1) + abs(b2 * e2)) + rounding_gamma(2) * abs(hit.point);
-  hit.error = max_component(object_error);
+  vec3 object_point = p0 + (b1 * e1 + b2 * e2);
+  vec3 object_error = rounding_gamma(5) * (abs(b1 * e1) + abs(b2 * e2)) + rounding_gamma(2) * abs(object_point);
+  // Untransformed, Embree's Ng; transformed, the object normal's image.
+  vec3 geometric = {l.ngx[i], l.ngy[i], l.ngz[i]};
+  bool transformed = false;
+  hit.point = object_point;
+  vec3 error = object_error;
+  if constexpr (AnyTransformed) {
+    transformed = l.transformed[i] != 0;
+    vec3 translation = {l.to_world[3][i], l.to_world[7][i], l.to_world[11][i]};
+    vec3 world_error = (1 + rounding_gamma(3)) * lane_abs_transform_vector(l, i, object_error) +
+                       rounding_gamma(3) * (lane_abs_transform_vector(l, i, abs(object_point)) + abs(translation));
+    hit.point = lane::select_bits(transformed, lane_transform_point(l, i, object_point), object_point);
+    error = lane::select_bits(transformed, world_error, object_error);
+    geometric = lane::select_bits(transformed, lane_transform_normal(l, i, cross(e1, e2)), geometric);
+  }
+  hit.error = max_component(error);
   bool normal_in_range, direction_in_range;
-  hit.geometric_normal = normalize_in_range({l.ngx[i], l.ngy[i], l.ngz[i]}, normal_in_range);
+  hit.geometric_normal = normalize_in_range(geometric, normal_in_range);
+  if constexpr (AnyTransformed)
+    hit.geometric_normal = lane::select_bits(transformed, hit.geometric_normal * l.orientation[i], hit.geometric_normal);
   bool front_face = dot(direction, hit.geometric_normal) < 0;
   // Interpolated vertex normals, on the geometric normal's side, where they are usable.
   float b0 = 1 - b1 - b2;
   vec3 interpolated = vec3{l.n0x[i], l.n0y[i], l.n0z[i]} * b0 + vec3{l.n1x[i], l.n1y[i], l.n1z[i]} * b1 +
                       vec3{l.n2x[i], l.n2y[i], l.n2z[i]} * b2;
+  if constexpr (AnyTransformed)
+    interpolated = lane::select_bits(transformed, lane_transform_normal(l, i, interpolated), interpolated);
   bool has_normals = l.has_normals[i] != 0, interpolated_in_range;
   vec3 n = normalize_in_range(interpolated, interpolated_in_range);
   bool usable = has_normals & lane::finite(n) & (length_squared(n) > 0.5f);
@@ -241,8 +279,9 @@ struct LaneHit {
 // A Lambert lane: its hit, the lobes (lambert_bsdf.cpp) and their bounce (sample_warped), then
 // sample_one_light for a point light with opaque shadows, and the two rays' origins (spawn_ray,
 // spawn_ray_to).
+template <bool AnyTransformed>
 [[gnu::always_inline]] inline void lambert_lane(SurfaceLanes& l, int i) {
-  LaneHit hit = decode_lane(l, i);
+  LaneHit hit = decode_lane<AnyTransformed>(l, i);
   color3 albedo = {l.albedo_r[i], l.albedo_g[i], l.albedo_b[i]};
   float cos_o = dot(hit.normal, hit.wo);
   vec3 lobe_normal = cos_o < 0 ? -hit.normal : hit.normal;
@@ -259,8 +298,9 @@ struct LaneHit {
 }
 
 // A glossy lane's first loop: its hit, the metallic-roughness lobes and the point light's sample.
+template <bool AnyTransformed>
 [[gnu::always_inline]] inline void glossy_lane(SurfaceLanes& l, int i) {
-  LaneHit hit = decode_lane(l, i);
+  LaneHit hit = decode_lane<AnyTransformed>(l, i);
   GlossyLaneMaterial m = glossy_material(l, i);
   GlossyLaneLobes lobes = make_glossy_lane_lobes(m, hit.normal, hit.wo);
   store_hit(l, i, hit, lobes.normal, lobes.valid);
@@ -339,32 +379,36 @@ template <bool Glossy>
 
 // The kernel's loops, compiled once per instruction set. Each is a loop of its own: GCC
 // vectorises these one at a time, not together.
-template <bool Glossy, bool AnyArea>
+template <bool Glossy, bool AnyArea, bool AnyTransformed>
 [[gnu::always_inline]] inline void shade_lanes(SurfaceLanes& l) {
   if constexpr (Glossy) {
-    for (int i = 0; i < l.count; ++i) glossy_lane(l, i);
+    for (int i = 0; i < l.count; ++i) glossy_lane<AnyTransformed>(l, i);
     sample_glossy_specular(l);
     for (int i = 0; i < l.count; ++i) glossy_bounce_lane(l, i);
   } else {
-    for (int i = 0; i < l.count; ++i) lambert_lane(l, i);
+    for (int i = 0; i < l.count; ++i) lambert_lane<AnyTransformed>(l, i);
   }
   if constexpr (AnyArea)
     for (int i = 0; i < l.count; ++i) triangle_lane<Glossy>(l, i);
 }
-template <bool Glossy, bool AnyArea>
+template <bool Glossy, bool AnyArea, bool AnyTransformed>
 [[gnu::target("avx2")]] void shade_lanes_avx2(SurfaceLanes& l) {
-  shade_lanes<Glossy, AnyArea>(l);
+  shade_lanes<Glossy, AnyArea, AnyTransformed>(l);
+}
+template <bool Glossy, bool AnyArea, bool AnyTransformed>
+void shade_lanes_baseline(SurfaceLanes& l) {
+  shade_lanes<Glossy, AnyArea, AnyTransformed>(l);
 }
 template <bool Glossy, bool AnyArea>
-void shade_lanes_baseline(SurfaceLanes& l) {
-  shade_lanes<Glossy, AnyArea>(l);
+void shade_lanes_on(SurfaceLanes& l, bool avx2) {
+  if (l.any_transformed)
+    avx2 ? shade_lanes_avx2<Glossy, AnyArea, true>(l) : shade_lanes_baseline<Glossy, AnyArea, true>(l);
+  else
+    avx2 ? shade_lanes_avx2<Glossy, AnyArea, false>(l) : shade_lanes_baseline<Glossy, AnyArea, false>(l);
 }
 template <bool Glossy>
 void shade_lanes_on(SurfaceLanes& l, bool avx2) {
-  if (l.any_area)
-    avx2 ? shade_lanes_avx2<Glossy, true>(l) : shade_lanes_baseline<Glossy, true>(l);
-  else
-    avx2 ? shade_lanes_avx2<Glossy, false>(l) : shade_lanes_baseline<Glossy, false>(l);
+  l.any_area ? shade_lanes_on<Glossy, true>(l, avx2) : shade_lanes_on<Glossy, false>(l, avx2);
 }
 
 }  // namespace

@@ -1,5 +1,4 @@
-// A batch's commonest path vertices shaded across SIMD lanes: a triangle of an untransformed
-// mesh, lit through opaque shadows by one point light or one emitting triangle, with a Lambert
+// A batch's commonest path vertices shaded across SIMD lanes: a triangle of a mesh, lit through opaque shadows by one point light or one emitting triangle, with a Lambert
 // material, or (`glossy`) a metallic-roughness one in the case metallic_roughness_lane.h takes.
 // The batched path tracer (integrators/path.cpp) gathers such vertices of a stage into these
 // lanes, one set per model, shades them together and scatters the results back; every other
@@ -36,6 +35,13 @@ struct SurfaceLanes {
   alignas(32) float n0x[stride], n0y[stride], n0z[stride];
   alignas(32) float n1x[stride], n1y[stride], n1z[stride];
   alignas(32) float n2x[stride], n2y[stride], n2z[stride];
+  // Where `transformed`, the triangle's instance places it: its transform's first three rows
+  // (row-major), its inverse's upper 3x3 (row-major; normals go by its transpose) and the sign
+  // of its determinant.
+  alignas(32) int32_t transformed[stride];
+  alignas(32) float to_world[12][stride];
+  alignas(32) float to_object[9][stride];
+  alignas(32) float orientation[stride];
   alignas(32) float dx[stride], dy[stride], dz[stride];
   alignas(32) float albedo_r[stride], albedo_g[stride], albedo_b[stride];  // or a glossy lane's base colour
   alignas(32) float light_x[stride], light_y[stride], light_z[stride];
@@ -84,9 +90,10 @@ struct SurfaceLanes {
   alignas(32) float specular_x[stride], specular_y[stride], specular_z[stride];
   int count = 0;
   bool glossy = false;  // the lanes' model: metallic-roughness, or Lambert
-  // Set by whoever fills the lanes when any lane's light is a triangle: without, the kernel
-  // leaves out the triangle lights' loop.
+  // Set by whoever fills the lanes when any lane's light is a triangle, or any lane's triangle
+  // is transformed: without, the kernel leaves out the triangle lights' loop or the transforms.
   bool any_area = false;
+  bool any_transformed = false;
 };
 
 // Shades lanes [0, count).

@@ -43,6 +43,16 @@ constexpr float largest_float = std::numeric_limits<float>::max();
   return std::bit_cast<float>(std::bit_cast<uint32_t>(x) & (keep ? ~0u : 0u));
 }
 
+// select() written on the bits, for a choice GCC must not turn back into a branch: sunk into
+// one, the chosen side's loads become conditional, which the SSE2 loops cannot vectorise.
+[[gnu::always_inline]] inline float select_bits(bool c, float a, float b) {
+  uint32_t mask = c ? ~0u : 0u;
+  return std::bit_cast<float>((std::bit_cast<uint32_t>(a) & mask) | (std::bit_cast<uint32_t>(b) & ~mask));
+}
+[[gnu::always_inline]] inline vec3 select_bits(bool c, vec3 a, vec3 b) {
+  return {select_bits(c, a.x, b.x), select_bits(c, a.y, b.y), select_bits(c, a.z, b.z)};
+}
+
 // normalize() without its rescaling branch: `in_range` says whether the result is normalize()'s.
 [[gnu::always_inline]] inline vec3 normalize_in_range(vec3 a, bool& in_range) {
   float l2 = dot(a, a);

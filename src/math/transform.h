@@ -1,6 +1,8 @@
 // Affine transforms as 4x4 row-major matrices (last row 0 0 0 1 for affine ones).
 #pragma once
 
+#include <cmath>
+
 #include "math/vec.h"
 
 namespace radiant {
@@ -37,6 +39,13 @@ inline vec3 transform_vector(const mat4& a, vec3 v) {
   return {a.m[0][0] * v.x + a.m[0][1] * v.y + a.m[0][2] * v.z,
           a.m[1][0] * v.x + a.m[1][1] * v.y + a.m[1][2] * v.z,
           a.m[2][0] * v.x + a.m[2][1] * v.y + a.m[2][2] * v.z};
+}
+// transform_vector by the matrix of |a|'s entries: how far errors in v's coordinates can move the
+// result (hit positions' error bounds).
+inline vec3 abs_transform_vector(const mat4& a, vec3 v) {
+  return {std::abs(a.m[0][0]) * v.x + std::abs(a.m[0][1]) * v.y + std::abs(a.m[0][2]) * v.z,
+          std::abs(a.m[1][0]) * v.x + std::abs(a.m[1][1]) * v.y + std::abs(a.m[1][2]) * v.z,
+          std::abs(a.m[2][0]) * v.x + std::abs(a.m[2][1]) * v.y + std::abs(a.m[2][2]) * v.z};
 }
 // Normals transform by the inverse transpose; pass the inverse matrix.
 inline vec3 transform_normal(const mat4& inverse, vec3 n) {

@@ -110,9 +110,10 @@ void require_same_render(const SceneDesc& scene, RenderOptions o, bool packets =
 
 // A room of matte walls, a glTF plastic box and a rough metal panel lit by point lights and an
 // emitting panel, whose vertices the batch shades in its surface lanes
-// (integrators/surface_lanes.h), one wall with vertex normals, beside every vertex the lanes
-// must leave to the one-path code: vertex normals that are all zero, a transformed instance, a
-// smooth metal, the emitting panel itself, a spot light, a point light with a range. Scaled down by `scale`, every triangle's
+// (integrators/surface_lanes.h), one wall with vertex normals, a rotated and a mirrored
+// instance, beside every vertex the lanes must leave to the one-path code: vertex normals that
+// are all zero, a smooth metal, the emitting panel itself, a spot light, a point light with a
+// range. Scaled down by `scale`, every triangle's
 // normal gets a squared length below float's normal range, and every lane falls back. Nothing in
 // it is seen through or textured, so the render's variant compiles the lanes.
 SceneDesc surface_lanes_room(float scale) {
@@ -142,6 +143,10 @@ SceneDesc surface_lanes_room(float scale) {
   scene.meshes.back().normals.assign(4, vec3{0, 0, 0});  // normalize() rescales: one path at a time
   add_box(scene, {0.5f, 0, -2}, {1.8f, 1, -0.8f}, add_diffuse(scene, {0.9f, 0.9f, 0.9f}));
   scene.instances.back().transform = translation({0.2f, 0.5f, 0.3f}) * rotation_axis({0, 1, 0}, 30);
+  add_quad(scene, {0.5f, 0.2f, 2}, {1.5f, 0.2f, 2}, {1.5f, 1.5f, 2.5f}, {0.5f, 1.5f, 2.5f}, wall);
+  scene.meshes.back().normals = {normalize(vec3{0.1f, -0.4f, 1}), normalize(vec3{-0.2f, -0.5f, 1}),
+                                 normalize(vec3{0, -0.3f, 1}), normalize(vec3{0.3f, -0.4f, 0.9f})};
+  scene.instances.back().transform = translation({-1, 0.1f, 0}) * scaling({-1, 1.2f, 1});  // mirrored
   MaterialDesc panel;
   panel.kd = {0, 0, 0}, panel.emission = {3, 3, 2}, panel.double_sided = false;
   add_quad(scene, {-1, 4, 1}, {1, 4, 1}, {1, 4, 3}, {-1, 4, 3}, add_material(scene, panel));  // facing down

@@ -15,6 +15,7 @@
 #include "materials/bsdf.h"
 #include "materials/bsdf_models.h"
 #include "materials/metallic_roughness_lane.h"
+#include "math/transform.h"
 #include "sampling/warp.h"
 
 using namespace radiant;
@@ -44,7 +45,11 @@ struct LaneCase {
   SurfaceMaterial material;
   float u_lobe = 0.5f;
   vec2 u;
+  // The triangle's instance transform, where it has one.
+  bool transformed = false;
+  mat4 transform;
 };
+
 
 void set_lane(SurfaceLanes& l, int i, const LaneCase& c) {
   l.p0x[i] = c.p0.x, l.p0y[i] = c.p0.y, l.p0z[i] = c.p0.z;
@@ -79,6 +84,17 @@ void set_lane(SurfaceLanes& l, int i, const LaneCase& c) {
   l.select_pdf[i] = c.select_pdf;
   l.cosine_x[i] = c.cosine.x, l.cosine_y[i] = c.cosine.y, l.cosine_z[i] = c.cosine.z;
   l.throughput_r[i] = c.throughput.x, l.throughput_g[i] = c.throughput.y, l.throughput_b[i] = c.throughput.z;
+  l.transformed[i] = c.transformed;
+  if (c.transformed) {
+    l.any_transformed = true;
+    mat4 inverse;
+    REQUIRE(inverse_affine(c.transform, inverse));
+    for (int r = 0; r < 3; ++r) {
+      for (int col = 0; col < 4; ++col) l.to_world[r * 4 + col][i] = c.transform.m[r][col];
+      for (int col = 0; col < 3; ++col) l.to_object[r * 3 + col][i] = inverse.m[r][col];
+    }
+    l.orientation[i] = determinant3(c.transform) < 0 ? -1.0f : 1.0f;
+  }
   if (l.glossy) {
     BsdfMaterial material(c.material);
     const MetallicRoughnessParams* p = material.metallic_roughness();
@@ -112,14 +128,27 @@ void check_lane(const SurfaceLanes& l, int i, const LaneCase& c, int& specular_b
   SurfaceHit hit;
   vec3 e1 = c.p1 - c.p0, e2 = c.p2 - c.p0;
   float b1 = c.barycentric.x, b2 = c.barycentric.y;
-  hit.position = c.p0 + (b1 * e1 + b2 * e2);
-  float largest = max_component(rounding_gamma(5) * (abs(b1 * e1) + abs(b2 * e2)) + rounding_gamma(2) * abs(hit.position));
-  hit.position_error = {largest, largest, largest};
+  vec3 object_point = c.p0 + (b1 * e1 + b2 * e2);
+  vec3 error = rounding_gamma(5) * (abs(b1 * e1) + abs(b2 * e2)) + rounding_gamma(2) * abs(object_point);
+  hit.position = object_point;
   hit.geometric_normal = normalize(cross(e1, e2));
+  mat4 inverse;
+  if (c.transformed) {  // fill_triangle_hit's instance
+    REQUIRE(inverse_affine(c.transform, inverse));
+    const mat4& m = c.transform;
+    hit.position = transform_point(m, object_point);
+    error = (1 + rounding_gamma(3)) * abs_transform_vector(m, error) +
+            rounding_gamma(3) * (abs_transform_vector(m, abs(object_point)) + abs(vec3{m.m[0][3], m.m[1][3], m.m[2][3]}));
+    hit.geometric_normal =
+        normalize(transform_normal(inverse, cross(e1, e2))) * (determinant3(m) < 0 ? -1.0f : 1.0f);
+  }
+  float largest = max_component(error);
+  hit.position_error = {largest, largest, largest};
   hit.front_face = dot(c.direction, hit.geometric_normal) < 0;
   hit.shading_normal = hit.geometric_normal;
   if (c.has_normals) {
-    vec3 n = normalize(c.n0 * (1 - b1 - b2) + c.n1 * b1 + c.n2 * b2);
+    vec3 n = c.n0 * (1 - b1 - b2) + c.n1 * b1 + c.n2 * b2;
+    n = normalize(c.transformed ? transform_normal(inverse, n) : n);
     if (is_finite(n) && length_squared(n) > 0.5f) hit.shading_normal = dot(n, hit.geometric_normal) < 0 ? -n : n;
   }
   REQUIRE(!l.fallback[i]);
@@ -271,15 +300,32 @@ std::vector<LaneCase> glossy_cases() {
   return cases;
 }
 
+// The same hits on triangles placed by instances: rotated, stretched, mirrored, and moved far.
+std::vector<LaneCase> transformed(std::vector<LaneCase> cases) {
+  for (size_t k = 0; k < cases.size(); ++k) {
+    if (k % 4 == 3) continue;  // some lanes untransformed, beside the others
+    LaneCase& c = cases[k];
+    c.transformed = true;
+    vec3 scale = k % 5 == 0 ? vec3{-1, 2, 0.5f} : vec3{1.5f, 1.5f, 1.5f};
+    vec3 offset = k % 3 == 0 ? vec3{3e4f, -2, 7} : vec3{0.25f, 1, -0.5f};
+    c.transform = translation(offset) * rotation_axis(normalize(vec3{1, 2, float(k % 7)}), 10.0f + float(k)) * scaling(scale);
+    // The world-space ray and lights as the untransformed case had them, moved along.
+    vec3 moved = transform_point(c.transform, c.p0) - c.p0;
+    c.light.position = c.light.position + moved;
+    for (vec3* p : {&c.triangle.p0, &c.triangle.p1, &c.triangle.p2}) *p = *p + moved;
+  }
+  return cases;
+}
+
 }  // namespace
 
 TEST_CASE("Lambert lanes: each lane is the one-path vertex to the bit, on every instruction set") {
   // Point lights and emitting triangles mixed, as in a batch; and point lights alone, which
   // the kernel shades without its triangle loop.
-  std::vector<LaneCase> mixed = lane_cases(), points;
+  std::vector<LaneCase> mixed = lane_cases(), points, placed = transformed(mixed);
   for (const LaneCase& c : mixed)
     if (!c.area) points.push_back(c);
-  for (const std::vector<LaneCase>* cases : {&mixed, &points}) {
+  for (const std::vector<LaneCase>* cases : {&mixed, &points, &placed}) {
     REQUIRE(int(cases->size()) <= SurfaceLanes::capacity);
     for (LaneIsa isa : {LaneIsa::best, LaneIsa::baseline, LaneIsa::avx2}) {
       if (!lane_isa_available(isa)) continue;
@@ -302,7 +348,7 @@ TEST_CASE("Lambert lanes: each lane is the one-path vertex to the bit, on every 
       CHECK(lit < int(cases->size()) - 20);
       CHECK(scatters > 20);
       CHECK(scatters < int(cases->size()));
-      CHECK(lit_by_triangles > (cases == &mixed ? 10 : -1));
+      CHECK(lit_by_triangles > (cases != &points ? 10 : -1));
       CHECK(lit - lit_by_triangles > 10);
     }
   }
@@ -335,10 +381,10 @@ TEST_CASE("Lambert lanes: a normal whose squared length leaves float's range fal
 }
 
 TEST_CASE("Glossy lanes: each lane is the one-path metallic-roughness vertex to the bit, on every instruction set") {
-  std::vector<LaneCase> mixed = glossy_cases(), points;
+  std::vector<LaneCase> mixed = glossy_cases(), points, placed = transformed(mixed);
   for (const LaneCase& c : mixed)
     if (!c.area) points.push_back(c);
-  for (const std::vector<LaneCase>* cases : {&mixed, &points}) {
+  for (const std::vector<LaneCase>* cases : {&mixed, &points, &placed}) {
     REQUIRE(int(cases->size()) <= SurfaceLanes::capacity);
     for (LaneIsa isa : {LaneIsa::best, LaneIsa::baseline, LaneIsa::avx2}) {
       if (!lane_isa_available(isa)) continue;
@@ -363,7 +409,7 @@ TEST_CASE("Glossy lanes: each lane is the one-path metallic-roughness vertex to 
       CHECK(scatters < int(cases->size()));
       CHECK(specular_bounces > 10);
       CHECK(scatters - specular_bounces > 10);
-      CHECK(lit_by_triangles > (cases == &mixed ? 10 : -1));
+      CHECK(lit_by_triangles > (cases != &points ? 10 : -1));
       CHECK(lit - lit_by_triangles > 10);
     }
   }
