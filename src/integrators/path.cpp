@@ -562,13 +562,22 @@ struct PathVariant {
         continue;
       const MeshDesc& mesh = scene.meshes[scene.instances[id.instance].mesh];
       LaneModel model = ctx.lane_models[size_t(mesh.material)];
-      if (model == LaneModel::none || lights.selection.empty()) continue;
+      if (model == LaneModel::none) continue;
       const SampleContext& sample = depth == 0 ? *path.sample : path.own;
+      // The light: chosen by the light BVH ahead (choose_lights_ahead), or by power here.
       uint32_t slot = 0;
-      if (light_choice_draws(lights))
-        slot = uint32_t(sample_discrete(lights.selection, drawn.has(light_choice)
-                                                              ? drawn.light_choice
-                                                              : sample_1d(sample, dimension(depth, light_choice))));
+      float select_pdf;
+      if (lights.sampler == LightSampler::bvh) {
+        if (!drawn.light_chosen || !drawn.light_found) continue;
+        slot = drawn.light_slot, select_pdf = drawn.light_probability;
+      } else {
+        if (lights.selection.empty()) continue;
+        if (light_choice_draws(lights))
+          slot = uint32_t(sample_discrete(lights.selection, drawn.has(light_choice)
+                                                                ? drawn.light_choice
+                                                                : sample_1d(sample, dimension(depth, light_choice))));
+        select_pdf = lights.selection.pmf[slot];
+      }
       // A point light without range, or an emitting triangle (not a sphere, nor the environment).
       const LightDesc* point = nullptr;
       const AreaLight* triangle = nullptr;
@@ -631,7 +640,7 @@ struct PathVariant {
         // A point light's fields the kernel also reads (its results are discarded): finite values.
         l.kc[i] = 1, l.kl[i] = l.kq[i] = 0;
       }
-      l.select_pdf[i] = lights.selection.pmf[slot];
+      l.select_pdf[i] = select_pdf;
       l.cosine_x[i] = drawn.cosine.x, l.cosine_y[i] = drawn.cosine.y, l.cosine_z[i] = drawn.cosine.z;
       l.throughput_r[i] = path.throughput.x, l.throughput_g[i] = path.throughput.y, l.throughput_b[i] = path.throughput.z;
     }
@@ -669,8 +678,9 @@ struct PathVariant {
   // The rest of advance() for a vertex shaded in lane `i`: the light sample's result, the path's
   // state and its next ray, as advance() sets them.
   [[gnu::always_inline]] static bool finish_surface_lane(const RenderContext& ctx, PathState& path,
-                                                        const SurfaceLanes& l, int i, const VertexDraws& drawn,
-                                                        LightSampleResult& light, RayCounts& counts) {
+                                                        const SurfaceLanes& l, int i, const HitId& id,
+                                                        const VertexDraws& drawn, LightSampleResult& light,
+                                                        RayCounts& counts) {
     color3& throughput = path.throughput;
     light.traces = l.lit[i];
     if (light.traces) {
@@ -693,6 +703,7 @@ struct PathVariant {
     path.previous_pdf = l.pdf[i];
     path.previous_position = {l.px[i], l.py[i], l.pz[i]};
     path.previous_normal = {l.nx[i], l.ny[i], l.nz[i]};
+    if (ctx.lights->sampler == LightSampler::bvh) path.previous_choice = light_choice_point(*ctx.accel, path.ray, id);
     path.ray.origin = {l.ox[i], l.oy[i], l.oz[i]};
     path.ray.direction = {l.wix[i], l.wiy[i], l.wiz[i]};
     path.ray.tmax = std::numeric_limits<float>::infinity();
@@ -837,7 +848,7 @@ struct PathVariant {
       if (LightSampling && ctx.lights->sampler == LightSampler::bvh) choose_lights_ahead(ctx, workspace, live_count);
       bool in_lanes = false;
       if constexpr (surface_lanes_compiled && !SharesFirstVertex) {
-        in_lanes = ctx.lights->sampler == LightSampler::power && shadows_are_opaque<E>(ctx);
+        in_lanes = shadows_are_opaque<E>(ctx);
         if (in_lanes) shade_in_surface_lanes(ctx, workspace, live_count);
       }
       for (int k = 0; k < live_count; ++k) {
@@ -846,7 +857,7 @@ struct PathVariant {
         const SurfaceLanes& set = lane >= max_batch_paths ? glossy : lambert;
         lane -= lane >= max_batch_paths ? max_batch_paths : 0;
         bool goes_on = lane >= 0 && !set.fallback[lane]
-                           ? finish_surface_lane(ctx, paths[i], set, lane, drawn[k], lights[i], counts)
+                           ? finish_surface_lane(ctx, paths[i], set, lane, hits[k], drawn[k], lights[i], counts)
                            : advance<SharesFirstVertex>(ctx, paths[i], hits[k], &drawn[k], scratch, &first_vertex,
                                                         lights[i], counts);
         if (lights[i].traces) {

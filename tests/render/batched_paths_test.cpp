@@ -178,16 +178,22 @@ TEST_CASE("batched paths: vertices shaded in SIMD lanes render what one path ren
     SceneDesc scene = surface_lanes_room(scale);
     for (bool aovs : {false, true}) {  // AOVs: the first vertices go one path at a time
       for (int max_depth : {1, 8}) {
-      CAPTURE(scale);
-      CAPTURE(aovs);
-      CAPTURE(max_depth);
-      RenderOptions o;
-      o.width = 30, o.height = 22, o.spp = 6, o.mode = RenderMode::path, o.max_depth = max_depth;
-      if (aovs) o.aovs = {"albedo", "normal", "depth"};
-      RenderResult result = render_scene(scene, o);
-      CHECK((result.settings.effects & (effect_group_transparency | effect_group_textures)) == 0);
-      CHECK(result.stats.rays.shadow > 1000);
-      require_same_render(scene, o);
+        // The light BVH's choices, made ahead for the whole stage, reach the lanes too.
+        for (LightSampler light_sampler : {LightSampler::power, LightSampler::bvh}) {
+          CAPTURE(scale);
+          CAPTURE(aovs);
+          CAPTURE(max_depth);
+          CAPTURE(int(light_sampler));
+          RenderOptions o;
+          o.width = 30, o.height = 22, o.spp = 6, o.mode = RenderMode::path, o.max_depth = max_depth;
+          o.light_sampler = light_sampler;
+          if (aovs) o.aovs = {"albedo", "normal", "depth"};
+          RenderResult result = render_scene(scene, o);
+          CHECK(result.settings.light_sampler == light_sampler);
+          CHECK((result.settings.effects & (effect_group_transparency | effect_group_textures)) == 0);
+          CHECK(result.stats.rays.shadow > 1000);
+          require_same_render(scene, o);
+        }
       }
     }
   }
