@@ -530,7 +530,7 @@ struct PathVariant {
     LightChoiceQueue choices;
     // A stage's vertices shaded in the surface lanes (shade_in_surface_lanes), a set per model,
     // and each live path's lane: -1, a Lambert lane, or max_batch_paths + a glossy lane.
-    SurfaceLanes lambert, glossy;
+    SurfaceLanes lambert{}, glossy{};  // zeroed: a lane's unused fields are read, never chosen
     int lane_of[max_batch_paths];
   };
 
@@ -549,7 +549,7 @@ struct PathVariant {
     const SceneDesc& scene = *ctx.scene;
     const SceneAccel& accel = *ctx.accel;
     const LightTable& lights = *ctx.lights;
-    for (SurfaceLanes* set : {&w.lambert, &w.glossy}) set->count = 0, set->any_area = set->any_transformed = false;
+    for (SurfaceLanes* set : {&w.lambert, &w.glossy}) set->count = 0, set->any_area = set->mixed_hits = false;
     w.glossy.glossy = true;
     for (int k = 0; k < live_count; ++k) {
       w.lane_of[k] = -1;
@@ -557,11 +557,15 @@ struct PathVariant {
       const HitId& id = w.hits[k];
       VertexDraws& drawn = w.drawn[k];
       int depth = path.depth;
-      if (id.instance < 0 || depth >= path.max_depth || (path.first_hit && depth == 0) ||
+      if (!id.valid() || depth >= path.max_depth || (path.first_hit && depth == 0) ||
           !(depth > 0 || path.gathers_first_vertex) || !drawn.has(bsdf_direction))
         continue;
-      const MeshDesc& mesh = scene.meshes[scene.instances[id.instance].mesh];
-      LaneModel model = ctx.lane_models[size_t(mesh.material)];
+      // A mesh's triangle, a sphere or a plane.
+      const MeshDesc* mesh = id.instance >= 0 ? &scene.meshes[scene.instances[id.instance].mesh] : nullptr;
+      const ShapeDesc* shape = mesh ? nullptr : &scene.shapes[id.shape];
+      if (shape && shape->kind != ShapeKind::sphere && shape->kind != ShapeKind::plane) continue;
+      int material_index = mesh ? mesh->material : shape->material;
+      LaneModel model = ctx.lane_models[size_t(material_index)];
       if (model == LaneModel::none) continue;
       const SampleContext& sample = depth == 0 ? *path.sample : path.own;
       // The light: chosen by the light BVH ahead (choose_lights_ahead), or by power here.
@@ -595,23 +599,13 @@ struct PathVariant {
       SurfaceLanes& l = glossy ? w.glossy : w.lambert;
       int i = l.count++;
       w.lane_of[k] = glossy ? max_batch_paths + i : i;
-      const uint32_t* tri = &mesh.indices[size_t(id.primitive) * 3];
-      vec3 p0 = mesh.positions[tri[0]], p1 = mesh.positions[tri[1]], p2 = mesh.positions[tri[2]];
-      l.p0x[i] = p0.x, l.p0y[i] = p0.y, l.p0z[i] = p0.z;
-      l.p1x[i] = p1.x, l.p1y[i] = p1.y, l.p1z[i] = p1.z;
-      l.p2x[i] = p2.x, l.p2y[i] = p2.y, l.p2z[i] = p2.z;
-      l.b1[i] = id.barycentric.x, l.b2[i] = id.barycentric.y;
       l.ngx[i] = id.geometric_normal_raw.x, l.ngy[i] = id.geometric_normal_raw.y, l.ngz[i] = id.geometric_normal_raw.z;
-      l.has_normals[i] = !mesh.normals.empty();
-      l.transformed[i] = !accel.instance_identity[id.instance];
-      if (l.transformed[i]) set_instance_transform(l, i, accel, id.instance);
-      vec3 n0, n1, n2;  // zero without normals: the lane then ignores them
-      if (l.has_normals[i]) n0 = mesh.normals[tri[0]], n1 = mesh.normals[tri[1]], n2 = mesh.normals[tri[2]];
-      l.n0x[i] = n0.x, l.n0y[i] = n0.y, l.n0z[i] = n0.z;
-      l.n1x[i] = n1.x, l.n1y[i] = n1.y, l.n1z[i] = n1.z;
-      l.n2x[i] = n2.x, l.n2y[i] = n2.y, l.n2z[i] = n2.z;
+      if (mesh)
+        set_triangle_hit(l, i, *mesh, accel, id);
+      else
+        set_shape_hit(l, i, *shape, path.ray, id);
       l.dx[i] = path.ray.direction.x, l.dy[i] = path.ray.direction.y, l.dz[i] = path.ray.direction.z;
-      const BsdfMaterial& material = ctx.flat_bsdf_materials[size_t(mesh.material)];
+      const BsdfMaterial& material = ctx.flat_bsdf_materials[size_t(material_index)];
       if (glossy) {
         set_glossy_material(l, i, *material.metallic_roughness());
         l.u_lobe[i] = glossy_lobe_choice(*material.metallic_roughness(), path, drawn);
@@ -648,8 +642,35 @@ struct PathVariant {
       if (set->count > 0) shade_surface_lanes(*set);
   }
 
+  static void set_triangle_hit(SurfaceLanes& l, int i, const MeshDesc& mesh, const SceneAccel& accel, const HitId& id) {
+    l.shape[i] = SurfaceLanes::triangle_hit;
+    const uint32_t* tri = &mesh.indices[size_t(id.primitive) * 3];
+    vec3 p0 = mesh.positions[tri[0]], p1 = mesh.positions[tri[1]], p2 = mesh.positions[tri[2]];
+    l.p0x[i] = p0.x, l.p0y[i] = p0.y, l.p0z[i] = p0.z;
+    l.p1x[i] = p1.x, l.p1y[i] = p1.y, l.p1z[i] = p1.z;
+    l.p2x[i] = p2.x, l.p2y[i] = p2.y, l.p2z[i] = p2.z;
+    l.b1[i] = id.barycentric.x, l.b2[i] = id.barycentric.y;
+    l.has_normals[i] = !mesh.normals.empty();
+    l.transformed[i] = !accel.instance_identity[id.instance];
+    if (l.transformed[i]) set_instance_transform(l, i, accel, id.instance);
+    vec3 n0, n1, n2;  // zero without normals: the lane then ignores them
+    if (l.has_normals[i]) n0 = mesh.normals[tri[0]], n1 = mesh.normals[tri[1]], n2 = mesh.normals[tri[2]];
+    l.n0x[i] = n0.x, l.n0y[i] = n0.y, l.n0z[i] = n0.z;
+    l.n1x[i] = n1.x, l.n1y[i] = n1.y, l.n1z[i] = n1.z;
+    l.n2x[i] = n2.x, l.n2y[i] = n2.y, l.n2z[i] = n2.z;
+  }
+  // A sphere's or a plane's hit (fill_shape_hit): no vertex normals, no transform.
+  static void set_shape_hit(SurfaceLanes& l, int i, const ShapeDesc& shape, const Ray& ray, const HitId& id) {
+    l.mixed_hits = true;
+    l.shape[i] = shape.kind == ShapeKind::sphere ? SurfaceLanes::sphere_hit : SurfaceLanes::plane_hit;
+    l.has_normals[i] = 0, l.transformed[i] = 0;
+    l.ray_ox[i] = ray.origin.x, l.ray_oy[i] = ray.origin.y, l.ray_oz[i] = ray.origin.z, l.ray_t[i] = id.t;
+    l.center_x[i] = shape.center.x, l.center_y[i] = shape.center.y, l.center_z[i] = shape.center.z;
+    l.radius[i] = shape.radius;
+    l.axis_x[i] = shape.axis.x, l.axis_y[i] = shape.axis.y, l.axis_z[i] = shape.axis.z;
+  }
   static void set_instance_transform(SurfaceLanes& l, int i, const SceneAccel& accel, int instance) {
-    l.any_transformed = true;
+    l.mixed_hits = true;
     const mat4& to_world = accel.scene->instances[instance].transform;
     const mat4& to_object = accel.instance_inverse[instance];
     for (int r = 0; r < 3; ++r) {

@@ -10,6 +10,7 @@
 #include "materials/metallic_roughness_lane.h"
 #include "materials/microfacet.h"
 #include "materials/shading_frame.h"
+#include "math/dvec3.h"
 
 namespace radiant {
 
@@ -200,9 +201,37 @@ struct LightOutputs {
           inverse(0, 2) * n.x + inverse(1, 2) * n.y + inverse(2, 2) * n.z};
 }
 
+// A sphere's or a plane's hit moved onto the surface in double precision, and its error bound
+// (analytic_shapes.cpp, refine_shape_point, from fill_shape_hit's approximate point).
+struct ShapePoint {
+  vec3 point;
+  float error;
+};
+[[gnu::always_inline]] inline ShapePoint refine_shape_lane(const SurfaceLanes& l, int i, vec3 direction) {
+  vec3 approximate = vec3{l.ray_ox[i], l.ray_oy[i], l.ray_oz[i]} + direction * l.ray_t[i];
+  dvec3 p = to_double(approximate), c = to_double({l.center_x[i], l.center_y[i], l.center_z[i]});
+  float radius = l.radius[i];
+  bool sphere = l.shape[i] == SurfaceLanes::sphere_hit;
+  dvec3 local = p - c;
+  double len = std::sqrt(dot(local, local));
+  dvec3 on_sphere = c + local * (double(radius) / len);
+  dvec3 n = to_double({l.axis_x[i], l.axis_y[i], l.axis_z[i]});
+  dvec3 on_plane = p - n * dot(p - c, n);
+  // Chosen after rounding to float, by 32-bit masks: SSE2 has no 64-bit compare to make double
+  // masks from, and as ternaries GCC branches. len > 0 exactly when its float is: p and c are
+  // floats, so a nonzero len is at least their smallest nonzero difference, a float.
+  bool moves = float(len) > 0;
+  vec3 sphere_point = lane::select_bits(moves, to_float(on_sphere), approximate);
+  ShapePoint s;
+  s.point = lane::select_bits(sphere, sphere_point, to_float(on_plane));
+  s.error = max_component(abs(s.point)) * rounding_gamma(4);
+  s.error = lane::select_bits(sphere, s.error + std::abs(radius) * rounding_gamma(4), s.error);
+  return s;
+}
+
 // A lane's hit: make_surface_hit for a triangle (surface_hit.cpp, fill_triangle_hit) and
 // make_hit_shading. `in_range` is false where a normalize() the one-path code does would have
-// rescaled. `AnyTransformed`: some lanes' triangles are placed by their instance's transform.
+// rescaled. `MixedHits`: some lanes' hits are of transformed instances or analytic shapes.
 struct LaneHit {
   vec3 point;
   float error;  // the position's error bound, the same along every axis
@@ -211,7 +240,7 @@ struct LaneHit {
   vec3 wo;
   bool in_range;
 };
-template <bool AnyTransformed>
+template <bool MixedHits>
 [[gnu::always_inline]] inline LaneHit decode_lane(const SurfaceLanes& l, int i) {
   LaneHit hit;
   vec3 p0 = {l.p0x[i], l.p0y[i], l.p0z[i]}, p1 = {l.p1x[i], l.p1y[i], l.p1z[i]}, p2 = {l.p2x[i], l.p2y[i], l.p2z[i]};
@@ -225,7 +254,7 @@ template <bool AnyTransformed>
   bool transformed = false;
   hit.point = object_point;
   vec3 error = object_error;
-  if constexpr (AnyTransformed) {
+  if constexpr (MixedHits) {
     transformed = l.transformed[i] != 0;
     vec3 translation = {l.to_world[3][i], l.to_world[7][i], l.to_world[11][i]};
     vec3 world_error = (1 + rounding_gamma(3)) * lane_abs_transform_vector(l, i, object_error) +
@@ -235,16 +264,22 @@ template <bool AnyTransformed>
     geometric = lane::select_bits(transformed, lane_transform_normal(l, i, cross(e1, e2)), geometric);
   }
   hit.error = max_component(error);
+  if constexpr (MixedHits) {
+    bool shape = l.shape[i] != SurfaceLanes::triangle_hit;
+    ShapePoint refined = refine_shape_lane(l, i, direction);
+    hit.point = lane::select_bits(shape, refined.point, hit.point);
+    hit.error = lane::select_bits(shape, refined.error, hit.error);
+  }
   bool normal_in_range, direction_in_range;
   hit.geometric_normal = normalize_in_range(geometric, normal_in_range);
-  if constexpr (AnyTransformed)
+  if constexpr (MixedHits)
     hit.geometric_normal = lane::select_bits(transformed, hit.geometric_normal * l.orientation[i], hit.geometric_normal);
   bool front_face = dot(direction, hit.geometric_normal) < 0;
   // Interpolated vertex normals, on the geometric normal's side, where they are usable.
   float b0 = 1 - b1 - b2;
   vec3 interpolated = vec3{l.n0x[i], l.n0y[i], l.n0z[i]} * b0 + vec3{l.n1x[i], l.n1y[i], l.n1z[i]} * b1 +
                       vec3{l.n2x[i], l.n2y[i], l.n2z[i]} * b2;
-  if constexpr (AnyTransformed)
+  if constexpr (MixedHits)
     interpolated = lane::select_bits(transformed, lane_transform_normal(l, i, interpolated), interpolated);
   bool has_normals = l.has_normals[i] != 0, interpolated_in_range;
   vec3 n = normalize_in_range(interpolated, interpolated_in_range);
@@ -279,9 +314,9 @@ template <bool AnyTransformed>
 // A Lambert lane: its hit, the lobes (lambert_bsdf.cpp) and their bounce (sample_warped), then
 // sample_one_light for a point light with opaque shadows, and the two rays' origins (spawn_ray,
 // spawn_ray_to).
-template <bool AnyTransformed>
+template <bool MixedHits>
 [[gnu::always_inline]] inline void lambert_lane(SurfaceLanes& l, int i) {
-  LaneHit hit = decode_lane<AnyTransformed>(l, i);
+  LaneHit hit = decode_lane<MixedHits>(l, i);
   color3 albedo = {l.albedo_r[i], l.albedo_g[i], l.albedo_b[i]};
   float cos_o = dot(hit.normal, hit.wo);
   vec3 lobe_normal = cos_o < 0 ? -hit.normal : hit.normal;
@@ -298,9 +333,9 @@ template <bool AnyTransformed>
 }
 
 // A glossy lane's first loop: its hit, the metallic-roughness lobes and the point light's sample.
-template <bool AnyTransformed>
+template <bool MixedHits>
 [[gnu::always_inline]] inline void glossy_lane(SurfaceLanes& l, int i) {
-  LaneHit hit = decode_lane<AnyTransformed>(l, i);
+  LaneHit hit = decode_lane<MixedHits>(l, i);
   GlossyLaneMaterial m = glossy_material(l, i);
   GlossyLaneLobes lobes = make_glossy_lane_lobes(m, hit.normal, hit.wo);
   store_hit(l, i, hit, lobes.normal, lobes.valid);
@@ -379,29 +414,29 @@ template <bool Glossy>
 
 // The kernel's loops, compiled once per instruction set. Each is a loop of its own: GCC
 // vectorises these one at a time, not together.
-template <bool Glossy, bool AnyArea, bool AnyTransformed>
+template <bool Glossy, bool AnyArea, bool MixedHits>
 [[gnu::always_inline]] inline void shade_lanes(SurfaceLanes& l) {
   if constexpr (Glossy) {
-    for (int i = 0; i < l.count; ++i) glossy_lane<AnyTransformed>(l, i);
+    for (int i = 0; i < l.count; ++i) glossy_lane<MixedHits>(l, i);
     sample_glossy_specular(l);
     for (int i = 0; i < l.count; ++i) glossy_bounce_lane(l, i);
   } else {
-    for (int i = 0; i < l.count; ++i) lambert_lane<AnyTransformed>(l, i);
+    for (int i = 0; i < l.count; ++i) lambert_lane<MixedHits>(l, i);
   }
   if constexpr (AnyArea)
     for (int i = 0; i < l.count; ++i) triangle_lane<Glossy>(l, i);
 }
-template <bool Glossy, bool AnyArea, bool AnyTransformed>
+template <bool Glossy, bool AnyArea, bool MixedHits>
 [[gnu::target("avx2")]] void shade_lanes_avx2(SurfaceLanes& l) {
-  shade_lanes<Glossy, AnyArea, AnyTransformed>(l);
+  shade_lanes<Glossy, AnyArea, MixedHits>(l);
 }
-template <bool Glossy, bool AnyArea, bool AnyTransformed>
+template <bool Glossy, bool AnyArea, bool MixedHits>
 void shade_lanes_baseline(SurfaceLanes& l) {
-  shade_lanes<Glossy, AnyArea, AnyTransformed>(l);
+  shade_lanes<Glossy, AnyArea, MixedHits>(l);
 }
 template <bool Glossy, bool AnyArea>
 void shade_lanes_on(SurfaceLanes& l, bool avx2) {
-  if (l.any_transformed)
+  if (l.mixed_hits)
     avx2 ? shade_lanes_avx2<Glossy, AnyArea, true>(l) : shade_lanes_baseline<Glossy, AnyArea, true>(l);
   else
     avx2 ? shade_lanes_avx2<Glossy, AnyArea, false>(l) : shade_lanes_baseline<Glossy, AnyArea, false>(l);

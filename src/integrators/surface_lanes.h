@@ -1,4 +1,5 @@
-// A batch's commonest path vertices shaded across SIMD lanes: a triangle of a mesh, lit through opaque shadows by one point light or one emitting triangle, with a Lambert
+// A batch's commonest path vertices shaded across SIMD lanes: a hit of a mesh's triangle, a sphere
+// or a plane, lit through opaque shadows by one point light or one emitting triangle, with a Lambert
 // material, or (`glossy`) a metallic-roughness one in the case metallic_roughness_lane.h takes.
 // The batched path tracer (integrators/path.cpp) gathers such vertices of a stage into these
 // lanes, one set per model, shades them together and scatters the results back; every other
@@ -42,6 +43,14 @@ struct SurfaceLanes {
   alignas(32) float to_world[12][stride];
   alignas(32) float to_object[9][stride];
   alignas(32) float orientation[stride];
+  // What a lane hit: a triangle, or the analytic shape refine_shape_point moves the hit onto.
+  static constexpr int32_t triangle_hit = 0, sphere_hit = 1, plane_hit = 2;
+  // Where `shape` is not a triangle: the ray's origin and hit distance, and the shape's centre
+  // (a point on a plane), radius and axis (a plane's normal); its triangle fields are read, not used.
+  alignas(32) int32_t shape[stride];
+  alignas(32) float ray_ox[stride], ray_oy[stride], ray_oz[stride], ray_t[stride];
+  alignas(32) float center_x[stride], center_y[stride], center_z[stride], radius[stride];
+  alignas(32) float axis_x[stride], axis_y[stride], axis_z[stride];
   alignas(32) float dx[stride], dy[stride], dz[stride];
   alignas(32) float albedo_r[stride], albedo_g[stride], albedo_b[stride];  // or a glossy lane's base colour
   alignas(32) float light_x[stride], light_y[stride], light_z[stride];
@@ -90,10 +99,11 @@ struct SurfaceLanes {
   alignas(32) float specular_x[stride], specular_y[stride], specular_z[stride];
   int count = 0;
   bool glossy = false;  // the lanes' model: metallic-roughness, or Lambert
-  // Set by whoever fills the lanes when any lane's light is a triangle, or any lane's triangle
-  // is transformed: without, the kernel leaves out the triangle lights' loop or the transforms.
+  // Set by whoever fills the lanes when any lane's light is a triangle, or any lane's hit is of a
+  // transformed instance or a shape: without, the kernel leaves out the triangle lights' loop or
+  // that decoding.
   bool any_area = false;
-  bool any_transformed = false;
+  bool mixed_hits = false;
 };
 
 // Shades lanes [0, count).

@@ -1,5 +1,5 @@
 // Which instruction set a loop over SIMD lanes runs with. radiant's lane loops (the Sobol lanes,
-// the cosine warp, the Lambert vertices) are plain loops GCC vectorises, compiled once for the x86-64 baseline (SSE2)
+// the cosine warp, the surface lanes) are plain loops GCC vectorises, compiled once for the x86-64 baseline (SSE2)
 // and once for AVX2, and picked when they run (AVX2 where the CPU has it). Every choice gives the same bits, integer
 // arithmetic and float arithmetic without fused multiply-adds alike (neither target has FMA),
 // so shards rendered on machines with and without AVX2 still merge to one image; the tests run

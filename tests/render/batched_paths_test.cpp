@@ -111,12 +111,12 @@ void require_same_render(const SceneDesc& scene, RenderOptions o, bool packets =
 // A room of matte walls, a glTF plastic box and a rough metal panel lit by point lights and an
 // emitting panel, whose vertices the batch shades in its surface lanes
 // (integrators/surface_lanes.h), one wall with vertex normals, a rotated and a mirrored
-// instance, beside every vertex the lanes must leave to the one-path code: vertex normals that
+// instance, and with `shapes` a matte and a plastic sphere and a plane for a ceiling, beside every vertex the lanes must leave to the one-path code: vertex normals that
 // are all zero, a smooth metal, the emitting panel itself, a spot light, a point light with a
 // range. Scaled down by `scale`, every triangle's
 // normal gets a squared length below float's normal range, and every lane falls back. Nothing in
 // it is seen through or textured, so the render's variant compiles the lanes.
-SceneDesc surface_lanes_room(float scale) {
+SceneDesc surface_lanes_room(float scale, bool shapes = false) {
   SceneDesc scene;
   int wall = add_diffuse(scene, {0.7f, 0.6f, 0.5f});
   add_quad(scene, {-4, 0, -4}, {-4, 0, 4}, {4, 0, 4}, {4, 0, -4}, wall);    // floor, facing up
@@ -160,7 +160,18 @@ SceneDesc surface_lanes_room(float scale) {
   spot.direction = normalize(vec3{1, -2, -1.5f});
   spot.use_cone = true, spot.inner_cone = 0.3f, spot.outer_cone = 0.5f;
   scene.lights.push_back(spot);
+  ShapeDesc ball;  // shapes make Embree call radiant back for each ray: no packets
+  ball.kind = ShapeKind::sphere, ball.center = {2.5f, 0.7f, 1}, ball.radius = 0.7f;
+  ball.material = add_material(scene, plastic);
+  scene.shapes.push_back(ball);
+  ball.center = {-1.2f, 0.5f, 2}, ball.radius = 0.5f, ball.material = wall;
+  scene.shapes.push_back(ball);
+  ShapeDesc ceiling;
+  ceiling.kind = ShapeKind::plane, ceiling.center = {0, 5, 0}, ceiling.axis = {0, -1, 0}, ceiling.material = wall;
+  scene.shapes.push_back(ceiling);
+  if (!shapes) scene.shapes.clear();
   scene.cameras.push_back(perspective_camera({0, 2, 6}, normalize(vec3{0, -0.25f, -1}), {0, 1, 0}, 70));
+  for (ShapeDesc& shape : scene.shapes) shape.center = shape.center * scale, shape.radius *= scale;
   for (MeshDesc& mesh : scene.meshes)
     for (vec3& p : mesh.positions) p = p * scale;
   for (InstanceDesc& instance : scene.instances)
@@ -174,8 +185,8 @@ SceneDesc surface_lanes_room(float scale) {
 }
 
 TEST_CASE("batched paths: vertices shaded in SIMD lanes render what one path renders") {
-  for (float scale : {1.0f, 1e-11f}) {
-    SceneDesc scene = surface_lanes_room(scale);
+  for (auto [scale, shapes] : {std::pair{1.0f, false}, {1e-11f, false}, {1.0f, true}, {1e-11f, true}}) {
+    SceneDesc scene = surface_lanes_room(scale, shapes);
     for (bool aovs : {false, true}) {  // AOVs: the first vertices go one path at a time
       for (int max_depth : {1, 8}) {
         // The light BVH's choices, made ahead for the whole stage, reach the lanes too.
@@ -184,6 +195,7 @@ TEST_CASE("batched paths: vertices shaded in SIMD lanes render what one path ren
           CAPTURE(aovs);
           CAPTURE(max_depth);
           CAPTURE(int(light_sampler));
+          CAPTURE(shapes);
           RenderOptions o;
           o.width = 30, o.height = 22, o.spp = 6, o.mode = RenderMode::path, o.max_depth = max_depth;
           o.light_sampler = light_sampler;
@@ -192,7 +204,7 @@ TEST_CASE("batched paths: vertices shaded in SIMD lanes render what one path ren
           CHECK(result.settings.light_sampler == light_sampler);
           CHECK((result.settings.effects & (effect_group_transparency | effect_group_textures)) == 0);
           CHECK(result.stats.rays.shadow > 1000);
-          require_same_render(scene, o);
+          require_same_render(scene, o, !shapes);
         }
       }
     }

@@ -8,6 +8,7 @@
 #include <limits>
 #include <vector>
 
+#include "accel/analytic_shapes.h"
 #include "accel/scene_accel.h"
 #include "integrators/surface_lanes.h"
 #include "lights/area_light.h"
@@ -48,6 +49,12 @@ struct LaneCase {
   // The triangle's instance transform, where it has one.
   bool transformed = false;
   mat4 transform;
+  // Or a sphere or a plane instead of the triangle, hit by a ray from `origin` at distance `t`,
+  // with the intersector's unnormalised normal.
+  bool is_shape = false;
+  ShapeDesc shape;
+  vec3 origin, raw_normal;
+  float t = 0;
 };
 
 
@@ -56,8 +63,17 @@ void set_lane(SurfaceLanes& l, int i, const LaneCase& c) {
   l.p1x[i] = c.p1.x, l.p1y[i] = c.p1.y, l.p1z[i] = c.p1.z;
   l.p2x[i] = c.p2.x, l.p2y[i] = c.p2.y, l.p2z[i] = c.p2.z;
   l.b1[i] = c.barycentric.x, l.b2[i] = c.barycentric.y;
-  vec3 ng = cross(c.p1 - c.p0, c.p2 - c.p0);  // Embree's Ng
+  vec3 ng = c.is_shape ? c.raw_normal : cross(c.p1 - c.p0, c.p2 - c.p0);  // Embree's Ng
   l.ngx[i] = ng.x, l.ngy[i] = ng.y, l.ngz[i] = ng.z;
+  l.shape[i] = !c.is_shape ? SurfaceLanes::triangle_hit
+               : c.shape.kind == ShapeKind::sphere ? SurfaceLanes::sphere_hit : SurfaceLanes::plane_hit;
+  if (c.is_shape) {
+    l.mixed_hits = true;
+    l.ray_ox[i] = c.origin.x, l.ray_oy[i] = c.origin.y, l.ray_oz[i] = c.origin.z, l.ray_t[i] = c.t;
+    l.center_x[i] = c.shape.center.x, l.center_y[i] = c.shape.center.y, l.center_z[i] = c.shape.center.z;
+    l.radius[i] = c.shape.radius;
+    l.axis_x[i] = c.shape.axis.x, l.axis_y[i] = c.shape.axis.y, l.axis_z[i] = c.shape.axis.z;
+  }
   l.has_normals[i] = c.has_normals;
   l.n0x[i] = c.n0.x, l.n0y[i] = c.n0.y, l.n0z[i] = c.n0.z;
   l.n1x[i] = c.n1.x, l.n1y[i] = c.n1.y, l.n1z[i] = c.n1.z;
@@ -86,7 +102,7 @@ void set_lane(SurfaceLanes& l, int i, const LaneCase& c) {
   l.throughput_r[i] = c.throughput.x, l.throughput_g[i] = c.throughput.y, l.throughput_b[i] = c.throughput.z;
   l.transformed[i] = c.transformed;
   if (c.transformed) {
-    l.any_transformed = true;
+    l.mixed_hits = true;
     mat4 inverse;
     REQUIRE(inverse_affine(c.transform, inverse));
     for (int r = 0; r < 3; ++r) {
@@ -144,6 +160,10 @@ void check_lane(const SurfaceLanes& l, int i, const LaneCase& c, int& specular_b
   }
   float largest = max_component(error);
   hit.position_error = {largest, largest, largest};
+  if (c.is_shape) {  // fill_shape_hit
+    hit.geometric_normal = normalize(c.raw_normal);
+    refine_shape_point(c.shape, c.origin + c.direction * c.t, hit.geometric_normal, hit.position, hit.position_error);
+  }
   hit.front_face = dot(c.direction, hit.geometric_normal) < 0;
   hit.shading_normal = hit.geometric_normal;
   if (c.has_normals) {
@@ -300,6 +320,39 @@ std::vector<LaneCase> glossy_cases() {
   return cases;
 }
 
+// Spheres and planes in place of the triangles: hit points on them, far from the origin too, and
+// rays that reach them from either side, as the analytic intersector leaves them (its distance
+// rounded, so that the refinement moves the point).
+std::vector<LaneCase> shapes(std::vector<LaneCase> cases) {
+  uint32_t state = 5;
+  auto next = [&] { return float((state = state * 1664525u + 1013904223u) >> 8) * 0x1p-24f; };
+  for (size_t k = 0; k < cases.size(); ++k) {
+    if (k % 5 == 4) continue;  // some triangles beside them
+    LaneCase& c = cases[k];
+    c.is_shape = true;
+    c.has_normals = false;
+    vec3 center = c.p0;
+    vec3 normal = normalize(vec3{next() - 0.5f, next() - 0.5f, next() - 0.5f});
+    vec3 point;
+    if (k % 2 == 0) {
+      c.shape.kind = ShapeKind::sphere;
+      c.shape.center = center, c.shape.radius = 0.1f + 3 * next();
+      point = center + normal * c.shape.radius;
+      c.raw_normal = (point - center) * 7.0f;
+    } else {
+      c.shape.kind = ShapeKind::plane;
+      c.shape.center = center, c.shape.axis = normal;
+      vec3 t, b;
+      orthonormal_basis(normal, t, b);
+      point = center + t * (4 * next() - 2) + b * (4 * next() - 2);
+      c.raw_normal = normal;
+    }
+    c.t = 0.5f + 5 * next();
+    c.origin = point - c.direction * c.t;
+  }
+  return cases;
+}
+
 // The same hits on triangles placed by instances: rotated, stretched, mirrored, and moved far.
 std::vector<LaneCase> transformed(std::vector<LaneCase> cases) {
   for (size_t k = 0; k < cases.size(); ++k) {
@@ -322,10 +375,10 @@ std::vector<LaneCase> transformed(std::vector<LaneCase> cases) {
 TEST_CASE("Lambert lanes: each lane is the one-path vertex to the bit, on every instruction set") {
   // Point lights and emitting triangles mixed, as in a batch; and point lights alone, which
   // the kernel shades without its triangle loop.
-  std::vector<LaneCase> mixed = lane_cases(), points, placed = transformed(mixed);
+  std::vector<LaneCase> mixed = lane_cases(), points, placed = transformed(mixed), shaped = shapes(mixed);
   for (const LaneCase& c : mixed)
     if (!c.area) points.push_back(c);
-  for (const std::vector<LaneCase>* cases : {&mixed, &points, &placed}) {
+  for (const std::vector<LaneCase>* cases : {&mixed, &points, &placed, &shaped}) {
     REQUIRE(int(cases->size()) <= SurfaceLanes::capacity);
     for (LaneIsa isa : {LaneIsa::best, LaneIsa::baseline, LaneIsa::avx2}) {
       if (!lane_isa_available(isa)) continue;
@@ -381,10 +434,10 @@ TEST_CASE("Lambert lanes: a normal whose squared length leaves float's range fal
 }
 
 TEST_CASE("Glossy lanes: each lane is the one-path metallic-roughness vertex to the bit, on every instruction set") {
-  std::vector<LaneCase> mixed = glossy_cases(), points, placed = transformed(mixed);
+  std::vector<LaneCase> mixed = glossy_cases(), points, placed = transformed(mixed), shaped = shapes(mixed);
   for (const LaneCase& c : mixed)
     if (!c.area) points.push_back(c);
-  for (const std::vector<LaneCase>* cases : {&mixed, &points, &placed}) {
+  for (const std::vector<LaneCase>* cases : {&mixed, &points, &placed, &shaped}) {
     REQUIRE(int(cases->size()) <= SurfaceLanes::capacity);
     for (LaneIsa isa : {LaneIsa::best, LaneIsa::baseline, LaneIsa::avx2}) {
       if (!lane_isa_available(isa)) continue;
