@@ -549,7 +549,7 @@ struct PathVariant {
     const SceneDesc& scene = *ctx.scene;
     const SceneAccel& accel = *ctx.accel;
     const LightTable& lights = *ctx.lights;
-    for (SurfaceLanes* set : {&w.lambert, &w.glossy}) set->count = 0, set->any_area = set->mixed_hits = false;
+    for (SurfaceLanes* set : {&w.lambert, &w.glossy}) set->count = 0, set->any_area = false, set->hit_kinds = 0;
     w.glossy.glossy = true;
     for (int k = 0; k < live_count; ++k) {
       w.lane_of[k] = -1;
@@ -661,7 +661,7 @@ struct PathVariant {
   }
   // A sphere's or a plane's hit (fill_shape_hit): no vertex normals, no transform.
   static void set_shape_hit(SurfaceLanes& l, int i, const ShapeDesc& shape, const Ray& ray, const HitId& id) {
-    l.mixed_hits = true;
+    l.hit_kinds |= SurfaceLanes::shape_hits;
     l.shape[i] = shape.kind == ShapeKind::sphere ? SurfaceLanes::sphere_hit : SurfaceLanes::plane_hit;
     l.has_normals[i] = 0, l.transformed[i] = 0;
     l.ray_ox[i] = ray.origin.x, l.ray_oy[i] = ray.origin.y, l.ray_oz[i] = ray.origin.z, l.ray_t[i] = id.t;
@@ -670,7 +670,7 @@ struct PathVariant {
     l.axis_x[i] = shape.axis.x, l.axis_y[i] = shape.axis.y, l.axis_z[i] = shape.axis.z;
   }
   static void set_instance_transform(SurfaceLanes& l, int i, const SceneAccel& accel, int instance) {
-    l.mixed_hits = true;
+    l.hit_kinds |= SurfaceLanes::transformed_hits;
     const mat4& to_world = accel.scene->instances[instance].transform;
     const mat4& to_object = accel.instance_inverse[instance];
     for (int r = 0; r < 3; ++r) {

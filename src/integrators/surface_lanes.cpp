@@ -231,7 +231,8 @@ struct ShapePoint {
 
 // A lane's hit: make_surface_hit for a triangle (surface_hit.cpp, fill_triangle_hit) and
 // make_hit_shading. `in_range` is false where a normalize() the one-path code does would have
-// rescaled. `MixedHits`: some lanes' hits are of transformed instances or analytic shapes.
+// rescaled. `Hits`: which kinds of hit beside untransformed triangles the lanes hold
+// (SurfaceLanes::hit_kinds), each decoded only where some lane needs it.
 struct LaneHit {
   vec3 point;
   float error;  // the position's error bound, the same along every axis
@@ -240,7 +241,7 @@ struct LaneHit {
   vec3 wo;
   bool in_range;
 };
-template <bool MixedHits>
+template <int Hits>
 [[gnu::always_inline]] inline LaneHit decode_lane(const SurfaceLanes& l, int i) {
   LaneHit hit;
   vec3 p0 = {l.p0x[i], l.p0y[i], l.p0z[i]}, p1 = {l.p1x[i], l.p1y[i], l.p1z[i]}, p2 = {l.p2x[i], l.p2y[i], l.p2z[i]};
@@ -254,7 +255,7 @@ template <bool MixedHits>
   bool transformed = false;
   hit.point = object_point;
   vec3 error = object_error;
-  if constexpr (MixedHits) {
+  if constexpr ((Hits & SurfaceLanes::transformed_hits) != 0) {
     transformed = l.transformed[i] != 0;
     vec3 translation = {l.to_world[3][i], l.to_world[7][i], l.to_world[11][i]};
     vec3 world_error = (1 + rounding_gamma(3)) * lane_abs_transform_vector(l, i, object_error) +
@@ -264,7 +265,7 @@ template <bool MixedHits>
     geometric = lane::select_bits(transformed, lane_transform_normal(l, i, cross(e1, e2)), geometric);
   }
   hit.error = max_component(error);
-  if constexpr (MixedHits) {
+  if constexpr ((Hits & SurfaceLanes::shape_hits) != 0) {
     bool shape = l.shape[i] != SurfaceLanes::triangle_hit;
     ShapePoint refined = refine_shape_lane(l, i, direction);
     hit.point = lane::select_bits(shape, refined.point, hit.point);
@@ -272,14 +273,14 @@ template <bool MixedHits>
   }
   bool normal_in_range, direction_in_range;
   hit.geometric_normal = normalize_in_range(geometric, normal_in_range);
-  if constexpr (MixedHits)
+  if constexpr ((Hits & SurfaceLanes::transformed_hits) != 0)
     hit.geometric_normal = lane::select_bits(transformed, hit.geometric_normal * l.orientation[i], hit.geometric_normal);
   bool front_face = dot(direction, hit.geometric_normal) < 0;
   // Interpolated vertex normals, on the geometric normal's side, where they are usable.
   float b0 = 1 - b1 - b2;
   vec3 interpolated = vec3{l.n0x[i], l.n0y[i], l.n0z[i]} * b0 + vec3{l.n1x[i], l.n1y[i], l.n1z[i]} * b1 +
                       vec3{l.n2x[i], l.n2y[i], l.n2z[i]} * b2;
-  if constexpr (MixedHits)
+  if constexpr ((Hits & SurfaceLanes::transformed_hits) != 0)
     interpolated = lane::select_bits(transformed, lane_transform_normal(l, i, interpolated), interpolated);
   bool has_normals = l.has_normals[i] != 0, interpolated_in_range;
   vec3 n = normalize_in_range(interpolated, interpolated_in_range);
@@ -314,9 +315,9 @@ template <bool MixedHits>
 // A Lambert lane: its hit, the lobes (lambert_bsdf.cpp) and their bounce (sample_warped), then
 // sample_one_light for a point light with opaque shadows, and the two rays' origins (spawn_ray,
 // spawn_ray_to).
-template <bool MixedHits>
+template <int Hits>
 [[gnu::always_inline]] inline void lambert_lane(SurfaceLanes& l, int i) {
-  LaneHit hit = decode_lane<MixedHits>(l, i);
+  LaneHit hit = decode_lane<Hits>(l, i);
   color3 albedo = {l.albedo_r[i], l.albedo_g[i], l.albedo_b[i]};
   float cos_o = dot(hit.normal, hit.wo);
   vec3 lobe_normal = cos_o < 0 ? -hit.normal : hit.normal;
@@ -333,9 +334,9 @@ template <bool MixedHits>
 }
 
 // A glossy lane's first loop: its hit, the metallic-roughness lobes and the point light's sample.
-template <bool MixedHits>
+template <int Hits>
 [[gnu::always_inline]] inline void glossy_lane(SurfaceLanes& l, int i) {
-  LaneHit hit = decode_lane<MixedHits>(l, i);
+  LaneHit hit = decode_lane<Hits>(l, i);
   GlossyLaneMaterial m = glossy_material(l, i);
   GlossyLaneLobes lobes = make_glossy_lane_lobes(m, hit.normal, hit.wo);
   store_hit(l, i, hit, lobes.normal, lobes.valid);
@@ -414,32 +415,39 @@ template <bool Glossy>
 
 // The kernel's loops, compiled once per instruction set. Each is a loop of its own: GCC
 // vectorises these one at a time, not together.
-template <bool Glossy, bool AnyArea, bool MixedHits>
+template <bool Glossy, bool AnyArea, int Hits>
 [[gnu::always_inline]] inline void shade_lanes(SurfaceLanes& l) {
   if constexpr (Glossy) {
-    for (int i = 0; i < l.count; ++i) glossy_lane<MixedHits>(l, i);
+    for (int i = 0; i < l.count; ++i) glossy_lane<Hits>(l, i);
     sample_glossy_specular(l);
     for (int i = 0; i < l.count; ++i) glossy_bounce_lane(l, i);
   } else {
-    for (int i = 0; i < l.count; ++i) lambert_lane<MixedHits>(l, i);
+    for (int i = 0; i < l.count; ++i) lambert_lane<Hits>(l, i);
   }
   if constexpr (AnyArea)
     for (int i = 0; i < l.count; ++i) triangle_lane<Glossy>(l, i);
 }
-template <bool Glossy, bool AnyArea, bool MixedHits>
+template <bool Glossy, bool AnyArea, int Hits>
 [[gnu::target("avx2")]] void shade_lanes_avx2(SurfaceLanes& l) {
-  shade_lanes<Glossy, AnyArea, MixedHits>(l);
+  shade_lanes<Glossy, AnyArea, Hits>(l);
 }
-template <bool Glossy, bool AnyArea, bool MixedHits>
+template <bool Glossy, bool AnyArea, int Hits>
 void shade_lanes_baseline(SurfaceLanes& l) {
-  shade_lanes<Glossy, AnyArea, MixedHits>(l);
+  shade_lanes<Glossy, AnyArea, Hits>(l);
+}
+template <bool Glossy, bool AnyArea, int Hits>
+void shade_lanes_on(SurfaceLanes& l, bool avx2) {
+  avx2 ? shade_lanes_avx2<Glossy, AnyArea, Hits>(l) : shade_lanes_baseline<Glossy, AnyArea, Hits>(l);
 }
 template <bool Glossy, bool AnyArea>
 void shade_lanes_on(SurfaceLanes& l, bool avx2) {
-  if (l.mixed_hits)
-    avx2 ? shade_lanes_avx2<Glossy, AnyArea, true>(l) : shade_lanes_baseline<Glossy, AnyArea, true>(l);
-  else
-    avx2 ? shade_lanes_avx2<Glossy, AnyArea, false>(l) : shade_lanes_baseline<Glossy, AnyArea, false>(l);
+  constexpr int transformed = SurfaceLanes::transformed_hits, shapes = SurfaceLanes::shape_hits;
+  switch (l.hit_kinds) {
+    case 0: return shade_lanes_on<Glossy, AnyArea, 0>(l, avx2);
+    case transformed: return shade_lanes_on<Glossy, AnyArea, transformed>(l, avx2);
+    case shapes: return shade_lanes_on<Glossy, AnyArea, shapes>(l, avx2);
+    default: return shade_lanes_on<Glossy, AnyArea, transformed | shapes>(l, avx2);
+  }
 }
 template <bool Glossy>
 void shade_lanes_on(SurfaceLanes& l, bool avx2) {

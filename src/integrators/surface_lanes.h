@@ -99,11 +99,11 @@ struct SurfaceLanes {
   alignas(32) float specular_x[stride], specular_y[stride], specular_z[stride];
   int count = 0;
   bool glossy = false;  // the lanes' model: metallic-roughness, or Lambert
-  // Set by whoever fills the lanes when any lane's light is a triangle, or any lane's hit is of a
-  // transformed instance or a shape: without, the kernel leaves out the triangle lights' loop or
-  // that decoding.
+  // Set by whoever fills the lanes: whether any lane's light is a triangle, and which kinds of
+  // hit beside untransformed triangles the lanes hold. The kernel leaves out what none needs.
   bool any_area = false;
-  bool mixed_hits = false;
+  static constexpr int transformed_hits = 1, shape_hits = 2;
+  int hit_kinds = 0;
 };
 
 // Shades lanes [0, count).

@@ -68,7 +68,7 @@ void set_lane(SurfaceLanes& l, int i, const LaneCase& c) {
   l.shape[i] = !c.is_shape ? SurfaceLanes::triangle_hit
                : c.shape.kind == ShapeKind::sphere ? SurfaceLanes::sphere_hit : SurfaceLanes::plane_hit;
   if (c.is_shape) {
-    l.mixed_hits = true;
+    l.hit_kinds |= SurfaceLanes::shape_hits;
     l.ray_ox[i] = c.origin.x, l.ray_oy[i] = c.origin.y, l.ray_oz[i] = c.origin.z, l.ray_t[i] = c.t;
     l.center_x[i] = c.shape.center.x, l.center_y[i] = c.shape.center.y, l.center_z[i] = c.shape.center.z;
     l.radius[i] = c.shape.radius;
@@ -102,7 +102,7 @@ void set_lane(SurfaceLanes& l, int i, const LaneCase& c) {
   l.throughput_r[i] = c.throughput.x, l.throughput_g[i] = c.throughput.y, l.throughput_b[i] = c.throughput.z;
   l.transformed[i] = c.transformed;
   if (c.transformed) {
-    l.mixed_hits = true;
+    l.hit_kinds |= SurfaceLanes::transformed_hits;
     mat4 inverse;
     REQUIRE(inverse_affine(c.transform, inverse));
     for (int r = 0; r < 3; ++r) {
