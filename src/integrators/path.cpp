@@ -540,7 +540,7 @@ struct PathVariant {
       LightSampling && !(E & effect_group_textures) && !(E & effect_group_transparency);
 
   // Gathers the stage's vertices that the surface lanes can shade (surface_lanes.h) and shades
-  // them: a live path at a hit of a mesh's triangle, whose material is a lane material,
+  // them: a live path at a hit of a mesh's triangle, a sphere or a plane, whose material is a lane material,
   // which chooses a point light without range or an emitting triangle. Its light is chosen, a
   // triangle's point drawn and a glossy material's lobe choice drawn here, as the one-path code
   // would.

@@ -185,7 +185,10 @@ SceneDesc surface_lanes_room(float scale, bool shapes = false) {
 }
 
 TEST_CASE("batched paths: vertices shaded in SIMD lanes render what one path renders") {
-  for (auto [scale, shapes] : {std::pair{1.0f, false}, {1e-11f, false}, {1.0f, true}, {1e-11f, true}}) {
+  for (std::pair<float, bool> room : {std::pair{1.0f, false}, {1e-11f, false}, {1.0f, true}, {1e-11f, true}}) {
+    // Named copies, not structured bindings: Clang 14 cannot capture those in CAPTURE's lambda.
+    float scale = room.first;
+    bool shapes = room.second;
     SceneDesc scene = surface_lanes_room(scale, shapes);
     for (bool aovs : {false, true}) {  // AOVs: the first vertices go one path at a time
       for (int max_depth : {1, 8}) {
