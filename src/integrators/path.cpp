@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "integrators/background.h"
 #include "integrators/naive.h"
@@ -532,18 +533,18 @@ struct PathVariant {
     // and each live path's lane: -1, a Lambert lane, or max_batch_paths + a glossy lane.
     SurfaceLanes lambert{}, glossy{};  // zeroed: a lane's unused fields are read, never chosen
     int lane_of[max_batch_paths];
+    std::optional<BsdfMaterial> resolved_bsdf;  // a textured candidate's (resolve_lane_vertex)
   };
 
-  // Whether this variant can shade vertices in the surface lanes: no texture is read and no
-  // surface is seen through, so every vertex on a lane material is the lanes' kind.
-  static constexpr bool surface_lanes_compiled =
-      LightSampling && !(E & effect_group_textures) && !(E & effect_group_transparency);
+  // Whether this variant can shade vertices in the surface lanes: no surface is seen through.
+  // Textured variants resolve each candidate's material at its hit first (resolve_lane_vertex).
+  static constexpr bool surface_lanes_compiled = LightSampling && !(E & effect_group_transparency);
 
   // Gathers the stage's vertices that the surface lanes can shade (surface_lanes.h) and shades
   // them: a live path at a hit of a mesh's triangle, a sphere or a plane, whose material is a lane material,
-  // which chooses a point light without range or an emitting triangle. Its light is chosen, a
-  // triangle's point drawn and a glossy material's lobe choice drawn here, as the one-path code
-  // would.
+  // which chooses a point light without range or an emitting triangle without an emission
+  // texture. Its light is chosen, a triangle's point drawn and a glossy material's lobe choice
+  // drawn here, as the one-path code would.
   [[gnu::noinline]] static void shade_in_surface_lanes(const RenderContext& ctx, BatchWorkspace& w, int live_count) {
     using LaneModel = RenderContext::LaneModel;
     const SceneDesc& scene = *ctx.scene;
@@ -592,8 +593,22 @@ struct PathVariant {
       } else if (slot < lights.environment_slot()) {
         triangle = &lights.area_lights[slot - lights.delta_lights.size()];
         if (triangle->shape != AreaLightShape::triangle || !enabled<E>(ctx.effects, effect_emission)) continue;
+        // area_light_emission would read the texture at the point the lane draws.
+        if (enabled<E>(ctx.effects, effect_textures) && scene.materials[triangle->material].emission_texture.valid() &&
+            triangle->instance >= 0)
+          continue;
       } else {
         continue;
+      }
+      // The material as the hit resolves it, and where a map bends the normal, that normal.
+      const BsdfMaterial* bsdf_material = &ctx.flat_bsdf_materials[size_t(material_index)];
+      std::optional<vec3> mapped_normal;
+      if constexpr ((E & effect_group_textures) != 0) {
+        if (enabled<E>(ctx.effects, effect_textures) || enabled<E>(ctx.effects, effect_normal_maps)) {
+          model = resolve_lane_vertex(ctx, path, id, sample, w.scratch, w.resolved_bsdf, mapped_normal);
+          if (model == LaneModel::none) continue;
+          bsdf_material = &*w.resolved_bsdf;
+        }
       }
       bool glossy = model == LaneModel::glossy;
       SurfaceLanes& l = glossy ? w.glossy : w.lambert;
@@ -604,8 +619,12 @@ struct PathVariant {
         set_triangle_hit(l, i, *mesh, accel, id);
       else
         set_shape_hit(l, i, *shape, path.ray, id);
+      if (mapped_normal) {
+        l.normals[i] = SurfaceLanes::given_normal;
+        l.n0x[i] = mapped_normal->x, l.n0y[i] = mapped_normal->y, l.n0z[i] = mapped_normal->z;
+      }
       l.dx[i] = path.ray.direction.x, l.dy[i] = path.ray.direction.y, l.dz[i] = path.ray.direction.z;
-      const BsdfMaterial& material = ctx.flat_bsdf_materials[size_t(material_index)];
+      const BsdfMaterial& material = *bsdf_material;
       if (glossy) {
         set_glossy_material(l, i, *material.metallic_roughness());
         l.u_lobe[i] = glossy_lobe_choice(*material.metallic_roughness(), path, drawn);
@@ -642,6 +661,23 @@ struct PathVariant {
       if (set->count > 0) shade_surface_lanes(*set);
   }
 
+  // A textured render's candidate for the lanes (shade_in_surface_lanes): its material resolved
+  // at the hit as advance() resolves it, into `bsdf`, and the lanes it can go to, if any. Where a
+  // normal or bump map bends the shading normal, `mapped_normal` is advance()'s (HitShading's
+  // authored normal), which the lanes then use instead of their own.
+  static RenderContext::LaneModel resolve_lane_vertex(const RenderContext& ctx, const PathState& path,
+                                                      const HitId& id, const SampleContext& sample,
+                                                      VertexScratch& scratch, std::optional<BsdfMaterial>& bsdf,
+                                                      std::optional<vec3>& mapped_normal) {
+    SurfaceHit hit = make_surface_hit(*ctx.accel, path.ray, id);
+    const SurfaceMaterial& m = material_at<E>(ctx, id, hit, scratch.resolved, texture_footprint_scale(sample.index));
+    RenderContext::LaneModel model = lane_model_of(m, bsdf.emplace(m));
+    if (model != RenderContext::LaneModel::none && enabled<E>(ctx.effects, effect_normal_maps) &&
+        (m.has_normal_map || m.has_bump_map))
+      mapped_normal = make_hit_shading<E>(ctx.effects, hit, m, path.ray.direction).authored_normal;
+    return model;
+  }
+
   static void set_triangle_hit(SurfaceLanes& l, int i, const MeshDesc& mesh, const SceneAccel& accel, const HitId& id) {
     l.shape[i] = SurfaceLanes::triangle_hit;
     const uint32_t* tri = &mesh.indices[size_t(id.primitive) * 3];
@@ -650,11 +686,11 @@ struct PathVariant {
     l.p1x[i] = p1.x, l.p1y[i] = p1.y, l.p1z[i] = p1.z;
     l.p2x[i] = p2.x, l.p2y[i] = p2.y, l.p2z[i] = p2.z;
     l.b1[i] = id.barycentric.x, l.b2[i] = id.barycentric.y;
-    l.has_normals[i] = !mesh.normals.empty();
+    l.normals[i] = mesh.normals.empty() ? SurfaceLanes::no_normals : SurfaceLanes::vertex_normals;
     l.transformed[i] = !accel.instance_identity[id.instance];
     if (l.transformed[i]) set_instance_transform(l, i, accel, id.instance);
     vec3 n0, n1, n2;  // zero without normals: the lane then ignores them
-    if (l.has_normals[i]) n0 = mesh.normals[tri[0]], n1 = mesh.normals[tri[1]], n2 = mesh.normals[tri[2]];
+    if (!mesh.normals.empty()) n0 = mesh.normals[tri[0]], n1 = mesh.normals[tri[1]], n2 = mesh.normals[tri[2]];
     l.n0x[i] = n0.x, l.n0y[i] = n0.y, l.n0z[i] = n0.z;
     l.n1x[i] = n1.x, l.n1y[i] = n1.y, l.n1z[i] = n1.z;
     l.n2x[i] = n2.x, l.n2y[i] = n2.y, l.n2z[i] = n2.z;
@@ -663,7 +699,7 @@ struct PathVariant {
   static void set_shape_hit(SurfaceLanes& l, int i, const ShapeDesc& shape, const Ray& ray, const HitId& id) {
     l.hit_kinds |= SurfaceLanes::shape_hits;
     l.shape[i] = shape.kind == ShapeKind::sphere ? SurfaceLanes::sphere_hit : SurfaceLanes::plane_hit;
-    l.has_normals[i] = 0, l.transformed[i] = 0;
+    l.normals[i] = SurfaceLanes::no_normals, l.transformed[i] = 0;
     l.ray_ox[i] = ray.origin.x, l.ray_oy[i] = ray.origin.y, l.ray_oz[i] = ray.origin.z, l.ray_t[i] = id.t;
     l.center_x[i] = shape.center.x, l.center_y[i] = shape.center.y, l.center_z[i] = shape.center.z;
     l.radius[i] = shape.radius;
@@ -847,7 +883,7 @@ struct PathVariant {
     static tbb::enumerable_thread_specific<BatchWorkspace> per_thread;
     BatchWorkspace& workspace = per_thread.local();
     auto& [paths, lights, rays, hits, occluded, live, shadowed, scratch, first_vertex, lanes, cosine_x, cosine_y, cosine_z, drawn,
-           lobe_choices, first_lobe_choices, light_choices, lambert, glossy, lane_of] = workspace;
+           lobe_choices, first_lobe_choices, light_choices, lambert, glossy, lane_of, resolved_bsdf] = workspace;
     // Without sharing there is one sub-path per camera sample (run_batch): a constant, the
     // loop below is one start per sample. Read from ctx, GCC vectorised it for any split, with
     // run-time alias checks that cost more per camera sample than the start itself.

@@ -55,9 +55,9 @@ struct RenderContext {
   std::vector<SurfaceMaterial> flat_materials; // each material resolved once, for untextured renders
   std::vector<BsdfMaterial> flat_bsdf_materials;  // and its BSDF's direction-independent part
   std::vector<color3> absorption;                 // each material's volume sigma (KHR_materials_volume)
-  // Per material: which of the path tracer's surface lanes can shade a vertex on it
-  // (integrators/surface_lanes.h: untextured, opaque, not emitting; Lambertian, or the
-  // metallic-roughness case of materials/metallic_roughness_lane.h), if any.
+  // Per material: which of the path tracer's surface lanes can shade a vertex on it as it is
+  // without textures (integrators/surface_lanes.h, lane_model_of), if any. A textured render
+  // asks again at each hit on the materials this lets in.
   enum class LaneModel : uint8_t { none, lambert, glossy };
   std::vector<LaneModel> lane_models;
   TextureLookup texture_lookup;  // --texture-filter and its pyramids

@@ -282,11 +282,13 @@ template <int Hits>
                       vec3{l.n2x[i], l.n2y[i], l.n2z[i]} * b2;
   if constexpr ((Hits & SurfaceLanes::transformed_hits) != 0)
     interpolated = lane::select_bits(transformed, lane_transform_normal(l, i, interpolated), interpolated);
-  bool has_normals = l.has_normals[i] != 0, interpolated_in_range;
+  bool has_normals = l.normals[i] == SurfaceLanes::vertex_normals, interpolated_in_range;
   vec3 n = normalize_in_range(interpolated, interpolated_in_range);
   bool usable = has_normals & lane::finite(n) & (length_squared(n) > 0.5f);
   vec3 facing = dot(n, hit.geometric_normal) < 0 ? -n : n;
   vec3 shading_normal = usable ? facing : hit.geometric_normal;
+  bool given = l.normals[i] == SurfaceLanes::given_normal;
+  shading_normal = lane::select_bits(given, vec3{l.n0x[i], l.n0y[i], l.n0z[i]}, shading_normal);
   hit.wo = -normalize_in_range(direction, direction_in_range);
   hit.normal = front_face ? shading_normal : -shading_normal;
   hit.in_range = normal_in_range & direction_in_range & (interpolated_in_range | !has_normals);
@@ -459,6 +461,15 @@ void shade_lanes_on(SurfaceLanes& l, bool avx2) {
 void shade_surface_lanes(SurfaceLanes& lanes, LaneIsa isa) {
   bool avx2 = resolve_lane_isa(isa) == LaneIsa::avx2;
   lanes.glossy ? shade_lanes_on<true>(lanes, avx2) : shade_lanes_on<false>(lanes, avx2);
+}
+
+RenderContext::LaneModel lane_model_of(const SurfaceMaterial& m, const BsdfMaterial& bsdf) {
+  using LaneModel = RenderContext::LaneModel;
+  bool plain = is_black(m.emission) && !m.unlit && m.opacity >= 1 && is_black(m.kt) && !(m.transmission > 0);
+  if (plain && bsdf.lambert() && max_component(bsdf.lambert()->albedo) > 0) return LaneModel::lambert;
+  if (plain && bsdf.metallic_roughness() && is_metallic_roughness_lane_case(*bsdf.metallic_roughness()))
+    return LaneModel::glossy;
+  return LaneModel::none;
 }
 
 }  // namespace radiant

@@ -22,7 +22,7 @@ struct SurfaceLanes {
   // render's time once vertex normals added ten arrays).
   static constexpr int stride = capacity + 16;
   // Inputs: the triangle (its vertices, Embree's barycentrics and unnormalised normal, and its
-  // vertex normals where `has_normals`), the ray's direction, the albedo, the chosen light and
+  // vertex normals where `normals` is vertex_normals), the ray's direction, the albedo, the chosen light and
   // the probability it was chosen with, the bounce's cosine-warped local direction and the
   // path's throughput. The light: a point light's position, attenuation and intensity; or,
   // where `area`, an emitting triangle's corners (light_* the first), front normal, area,
@@ -32,7 +32,11 @@ struct SurfaceLanes {
   alignas(32) float p2x[stride], p2y[stride], p2z[stride];
   alignas(32) float b1[stride], b2[stride];
   alignas(32) float ngx[stride], ngy[stride], ngz[stride];
-  alignas(32) int32_t has_normals[stride];
+  // Where the shading normal comes from: the geometric normal, the vertex normals (n0-n2), or,
+  // where a normal or bump map bent it, the one-path code's own (given_normal: the authored side's
+  // normal in n0, which the lanes only turn to face the ray).
+  static constexpr int32_t no_normals = 0, vertex_normals = 1, given_normal = 2;
+  alignas(32) int32_t normals[stride];
   alignas(32) float n0x[stride], n0y[stride], n0z[stride];
   alignas(32) float n1x[stride], n1y[stride], n1z[stride];
   alignas(32) float n2x[stride], n2y[stride], n2z[stride];
@@ -108,5 +112,10 @@ struct SurfaceLanes {
 
 // Shades lanes [0, count).
 void shade_surface_lanes(SurfaceLanes& lanes, LaneIsa isa = LaneIsa::best);
+
+// Which lanes can shade a vertex whose material resolved to `m` (`bsdf` its BSDF material), if
+// any: opaque, not emitting, lit; Lambertian with some albedo, or the metallic-roughness case of
+// materials/metallic_roughness_lane.h. Normal and bump maps are the caller's (given_normal).
+RenderContext::LaneModel lane_model_of(const SurfaceMaterial& m, const BsdfMaterial& bsdf);
 
 }  // namespace radiant

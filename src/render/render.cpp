@@ -17,8 +17,8 @@
 #include "film/film_stats.h"
 #include "integrators/naive.h"
 #include "integrators/path.h"
+#include "integrators/surface_lanes.h"
 #include "integrators/whitted.h"
-#include "materials/metallic_roughness_lane.h"
 #include "materials/volume_absorption.h"
 #include "render/camera.h"
 #include "render/progress_meter.h"
@@ -48,20 +48,9 @@ RenderContext make_context(const PreparedScene& prepared, const ResolvedSettings
   for (const MaterialDesc& m : scene.materials) ctx.flat_materials.push_back(resolve_material(scene, m, {}));
   ctx.flat_bsdf_materials.reserve(scene.materials.size());
   for (const SurfaceMaterial& m : ctx.flat_materials) ctx.flat_bsdf_materials.emplace_back(m);
-  for (size_t i = 0; i < scene.materials.size(); ++i) {
-    const SurfaceMaterial& m = ctx.flat_materials[i];
-    const BsdfMaterial& bsdf = ctx.flat_bsdf_materials[i];
-    // Textures need not be asked about: the lanes run only where no texture is read (path.cpp).
-    bool plain = is_black(m.emission) && !m.unlit && m.opacity >= 1 && is_black(m.kt) && !(m.transmission > 0) &&
-                 !m.has_normal_map && !m.has_bump_map;
-    using LaneModel = RenderContext::LaneModel;
-    LaneModel model = LaneModel::none;
-    if (plain && bsdf.lambert() && max_component(bsdf.lambert()->albedo) > 0)
-      model = LaneModel::lambert;
-    else if (plain && bsdf.metallic_roughness() && is_metallic_roughness_lane_case(*bsdf.metallic_roughness()))
-      model = LaneModel::glossy;
-    ctx.lane_models.push_back(model);
-  }
+  // Untextured; a textured render asks again at each hit (path.cpp, shade_in_surface_lanes).
+  for (size_t i = 0; i < scene.materials.size(); ++i)
+    ctx.lane_models.push_back(lane_model_of(ctx.flat_materials[i], ctx.flat_bsdf_materials[i]));
   ctx.absorption.reserve(scene.materials.size());
   for (const MaterialDesc& m : scene.materials) ctx.absorption.push_back(volume_absorption(m));
   ctx.texture_lookup = {options.texture_filter, pyramids};

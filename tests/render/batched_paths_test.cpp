@@ -222,6 +222,75 @@ TEST_CASE("batched paths: vertices shaded in SIMD lanes render what one path ren
   }
 }
 
+// The same room textured, as most real files are: a checker base colour on the walls and the
+// matte box, vertex colours on the plastic box, a metallic-roughness texture whose black texels
+// make the plastic smooth (those hits must leave the lanes), normal maps on the plastic box and
+// the metal panel, a bump map on the walls (some with vertex normals), and an emission texture on
+// the panel (vertices that choose it go one path at a time). Every quad gets UVs and a tangent.
+SceneDesc textured_lanes_room() {
+  SceneDesc scene = surface_lanes_room(1);
+  auto add_texture = [&](std::string name, int width, int height, int channels, std::vector<uint8_t> texels) {
+    ImageDesc image;
+    image.name = std::move(name), image.width = width, image.height = height, image.channels = channels;
+    image.texels8 = std::move(texels);
+    scene.images.push_back(std::move(image));
+    TextureDesc texture;
+    texture.image = int(scene.images.size()) - 1;
+    scene.textures.push_back(texture);
+    TextureRef ref;
+    ref.texture = int(scene.textures.size()) - 1;
+    return ref;
+  };
+  std::vector<uint8_t> checker;
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < 4; ++x)
+      for (uint8_t c : {uint8_t((x + y) % 2 ? 230 : 40), uint8_t(60 * x), uint8_t(200 - 40 * y)}) checker.push_back(c);
+  TextureRef checker_texture = add_texture("checker", 4, 4, 3, checker);
+  TextureRef roughness_metal = add_texture("roughness-metal", 2, 2, 3, {0, 255, 0, 0, 128, 255, 0, 0, 0, 0, 60, 30});
+  TextureRef normal_map = add_texture("normals", 2, 2, 3, {128, 128, 255, 200, 128, 200, 90, 170, 220, 128, 40, 230});
+  TextureRef height = add_texture("height", 2, 2, 1, {0, 255, 60, 128});
+  MaterialDesc& wall = scene.materials[0];
+  wall.base_color_texture = checker_texture;
+  wall.bump_texture = height, wall.bump_scale = 0.05f;
+  scene.materials[1].base_color_texture = checker_texture;  // the matte box
+  MaterialDesc& plastic = scene.materials[2];
+  plastic.metallic_roughness_texture = roughness_metal, plastic.normal_texture = normal_map;
+  scene.materials[3].normal_texture = normal_map;  // the rough metal panel
+  for (MaterialDesc& m : scene.materials)
+    if (!is_black(m.emission)) m.emission_texture = checker_texture;
+  for (MeshDesc& mesh : scene.meshes) {
+    REQUIRE(mesh.positions.size() == 4);
+    mesh.texcoords0 = {{0, 0}, {0, 2}, {2, 2}, {2, 0}};
+    vec3 along = normalize(mesh.positions[3] - mesh.positions[0]);
+    mesh.tangents.assign(4, vec4{along.x, along.y, along.z, 1});
+    if (mesh.material == 2) mesh.colors = {{1, 1, 1, 1}, {0.2f, 1, 0.5f, 1}, {1, 0.3f, 0.3f, 1}, {0.5f, 0.5f, 1, 1}};
+  }
+  return scene;
+}
+
+TEST_CASE("batched paths: textured vertices shaded in SIMD lanes render what one path renders") {
+  SceneDesc scene = textured_lanes_room();
+  for (TextureFilterMode filter : {TextureFilterMode::bilinear, TextureFilterMode::trilinear}) {
+    for (LightSampler light_sampler : {LightSampler::power, LightSampler::bvh}) {
+      CAPTURE(int(filter));
+      CAPTURE(int(light_sampler));
+      RenderOptions o;
+      o.width = 30, o.height = 22, o.spp = 6, o.mode = RenderMode::path, o.max_depth = 8;
+      o.light_sampler = light_sampler, o.texture_filter = filter;
+      RenderResult result = render_scene(scene, o);
+      CHECK((result.settings.effects & effect_group_textures) == effect_group_textures);
+      CHECK((result.settings.effects & effect_group_transparency) == 0);
+      CHECK(result.stats.rays.shadow > 1000);
+      require_same_render(scene, o);
+    }
+  }
+  // Normal maps off (--effects): the lanes' own normals again, on the textured materials.
+  RenderOptions o;
+  o.width = 24, o.height = 18, o.spp = 4, o.mode = RenderMode::path;
+  o.effects = "-normal-maps";
+  require_same_render(scene, o);
+}
+
 TEST_CASE("batched paths: the glTF Cornell box renders the same in batches, path, naive and Whitted") {
   SceneDesc scene = load_scene(source_path("assets/cornell.gltf").string());
   for (RenderMode mode : {RenderMode::path, RenderMode::naive, RenderMode::whitted}) {

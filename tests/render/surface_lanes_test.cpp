@@ -31,6 +31,9 @@ struct LaneCase {
   vec2 barycentric;
   bool has_normals = false;
   vec3 n0, n1, n2;  // vertex normals, when it has them
+  // Or the normal a normal or bump map made (on the authored side, as HitShading has it).
+  bool has_given_normal = false;
+  vec3 given_normal;
   vec3 direction;
   color3 albedo;
   LightDesc light;         // a point light, unless `area`
@@ -74,8 +77,11 @@ void set_lane(SurfaceLanes& l, int i, const LaneCase& c) {
     l.radius[i] = c.shape.radius;
     l.axis_x[i] = c.shape.axis.x, l.axis_y[i] = c.shape.axis.y, l.axis_z[i] = c.shape.axis.z;
   }
-  l.has_normals[i] = c.has_normals;
-  l.n0x[i] = c.n0.x, l.n0y[i] = c.n0.y, l.n0z[i] = c.n0.z;
+  l.normals[i] = c.has_given_normal ? SurfaceLanes::given_normal
+                 : c.has_normals    ? SurfaceLanes::vertex_normals
+                                    : SurfaceLanes::no_normals;
+  vec3 n0 = c.has_given_normal ? c.given_normal : c.n0;
+  l.n0x[i] = n0.x, l.n0y[i] = n0.y, l.n0z[i] = n0.z;
   l.n1x[i] = c.n1.x, l.n1y[i] = c.n1.y, l.n1z[i] = c.n1.z;
   l.n2x[i] = c.n2.x, l.n2y[i] = c.n2.y, l.n2z[i] = c.n2.z;
   l.dx[i] = c.direction.x, l.dy[i] = c.direction.y, l.dz[i] = c.direction.z;
@@ -171,6 +177,7 @@ void check_lane(const SurfaceLanes& l, int i, const LaneCase& c, int& specular_b
     n = normalize(c.transformed ? transform_normal(inverse, n) : n);
     if (is_finite(n) && length_squared(n) > 0.5f) hit.shading_normal = dot(n, hit.geometric_normal) < 0 ? -n : n;
   }
+  if (c.has_given_normal) hit.shading_normal = c.given_normal;  // make_hit_shading's mapped normal
   REQUIRE(!l.fallback[i]);
   vec3 wo = -normalize(c.direction);
   vec3 normal = hit.front_face ? hit.shading_normal : -hit.shading_normal;
@@ -370,15 +377,34 @@ std::vector<LaneCase> transformed(std::vector<LaneCase> cases) {
   return cases;
 }
 
+// The same hits with normals that normal maps bent, given to the lanes: some tilted a little from
+// the geometric normal, some far, some behind the surface (a map can turn the normal away from
+// the ray; the lobes then flip it, as the one-path BSDF does).
+std::vector<LaneCase> given_normals(std::vector<LaneCase> cases) {
+  uint32_t state = 3;
+  auto next = [&] { return float((state = state * 1664525u + 1013904223u) >> 8) * 0x1p-24f; };
+  for (size_t k = 0; k < cases.size(); ++k) {
+    if (k % 4 == 1) continue;  // some lanes with their own normals beside them
+    LaneCase& c = cases[k];
+    vec3 tilt = {next() - 0.5f, next() - 0.5f, next() - 0.5f};
+    vec3 geometric = normalize(c.is_shape ? c.raw_normal : cross(c.p1 - c.p0, c.p2 - c.p0));
+    if (c.transformed) geometric = normalize(transform_vector(c.transform, geometric));  // near it: any normal does
+    c.has_given_normal = true;
+    c.given_normal = normalize(k % 3 == 0 ? tilt : geometric + tilt * 0.6f);
+  }
+  return cases;
+}
+
 }  // namespace
 
 TEST_CASE("Lambert lanes: each lane is the one-path vertex to the bit, on every instruction set") {
   // Point lights and emitting triangles mixed, as in a batch; and point lights alone, which
   // the kernel shades without its triangle loop.
   std::vector<LaneCase> mixed = lane_cases(), points, placed = transformed(mixed), shaped = shapes(mixed);
+  std::vector<LaneCase> mapped = given_normals(placed), mapped_shapes = given_normals(shaped);
   for (const LaneCase& c : mixed)
     if (!c.area) points.push_back(c);
-  for (const std::vector<LaneCase>* cases : {&mixed, &points, &placed, &shaped}) {
+  for (const std::vector<LaneCase>* cases : {&mixed, &points, &placed, &shaped, &mapped, &mapped_shapes}) {
     REQUIRE(int(cases->size()) <= SurfaceLanes::capacity);
     for (LaneIsa isa : {LaneIsa::best, LaneIsa::baseline, LaneIsa::avx2}) {
       if (!lane_isa_available(isa)) continue;
@@ -435,9 +461,10 @@ TEST_CASE("Lambert lanes: a normal whose squared length leaves float's range fal
 
 TEST_CASE("Glossy lanes: each lane is the one-path metallic-roughness vertex to the bit, on every instruction set") {
   std::vector<LaneCase> mixed = glossy_cases(), points, placed = transformed(mixed), shaped = shapes(mixed);
+  std::vector<LaneCase> mapped = given_normals(placed), mapped_shapes = given_normals(shaped);
   for (const LaneCase& c : mixed)
     if (!c.area) points.push_back(c);
-  for (const std::vector<LaneCase>* cases : {&mixed, &points, &placed, &shaped}) {
+  for (const std::vector<LaneCase>* cases : {&mixed, &points, &placed, &shaped, &mapped, &mapped_shapes}) {
     REQUIRE(int(cases->size()) <= SurfaceLanes::capacity);
     for (LaneIsa isa : {LaneIsa::best, LaneIsa::baseline, LaneIsa::avx2}) {
       if (!lane_isa_available(isa)) continue;
