@@ -7,16 +7,22 @@ roughness 1: the general model. With --lambertian each also gets KHR_materials_s
 specularFactor 0, which makes it exactly Lambertian (radiant then uses its Lambert BSDF, as for
 the .scene version's matte materials).
 
+With --textured the box is textured as exported models are: every face gets planar UVs, a normal
+and a tangent, and every material a checker base colour texture (times its Kd), a
+metallic-roughness texture (roughness 0.35-1, metallic 0) and a normal map of gentle ripples.
+The textures are small PNGs embedded in the file.
+
 Coordinates stay the OBJ's (millimetres); the point light's intensity, 100000, is the tutorial's
 (-pointlight 213 300 227 100000 ...), radiometric as radiant reads glTF lights.
 
-Usage: bench/cornell_obj_to_gltf.py OBJ MTL OUT.gltf [--lambertian]
+Usage: bench/cornell_obj_to_gltf.py OBJ MTL OUT.gltf [--lambertian | --textured]
 """
 import base64
 import json
 import math
 import struct
 import sys
+import zlib
 
 
 def read_mtl(path):
@@ -56,28 +62,92 @@ def read_obj(path):
     return faces
 
 
+def png(width, height, channels, texel):
+    """An 8-bit PNG (RGB or RGBA by `channels`) whose texel (x, y) is texel(x, y), as a data URI."""
+    rows = b"".join(b"\0" + bytes(c for x in range(width) for c in texel(x, y)) for y in range(height))
+    def chunk(kind, data):
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+    color_type = {3: 2, 4: 6}[channels]
+    data = (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, color_type, 0, 0, 0)) +
+            chunk(b"IDAT", zlib.compress(rows)) + chunk(b"IEND", b""))
+    return "data:image/png;base64," + base64.b64encode(data).decode()
+
+
+def textures():
+    """The --textured box's images: a checker, roughness from 0.35 to 1 (G; metallic B = 0), and
+    ripples as a tangent-space normal map."""
+    size = 64
+    def checker(x, y):
+        light = (x // 8 + y // 8) % 2
+        return (255, 255, 255) if light else (150, 150, 150)
+    def roughness(x, y):
+        return (0, int(90 + 165 * (0.5 + 0.5 * math.sin(x * 0.3) * math.cos(y * 0.2))), 0)
+    def ripples(x, y):
+        dx, dy = 0.25 * math.cos(x * 0.4), 0.25 * math.sin(y * 0.3)
+        n = [-dx, -dy, 1.0]
+        length = math.sqrt(sum(c * c for c in n))
+        return tuple(int(round((c / length * 0.5 + 0.5) * 255)) for c in n)
+    return [png(size, size, 3, f) for f in (checker, roughness, ripples)]
+
+
+def face_frame(t):
+    """A triangle's unit normal, and the two axes its planar UVs follow (a tangent along u)."""
+    e1 = [t[1][i] - t[0][i] for i in range(3)]
+    e2 = [t[2][i] - t[0][i] for i in range(3)]
+    n = [e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]]
+    length = math.sqrt(sum(c * c for c in n)) or 1.0
+    n = [c / length for c in n]
+    major = max(range(3), key=lambda i: abs(n[i]))
+    u_axis, v_axis = [a for a in range(3) if a != major]
+    return n, u_axis, v_axis
+
+
+def add_accessor(blob, views, accessors, values, kind, fmt):
+    offset = len(blob)
+    for v in values:
+        blob += struct.pack(fmt, *v)
+    views.append({"buffer": 0, "byteOffset": offset, "byteLength": len(blob) - offset})
+    accessor = {"bufferView": len(views) - 1, "componentType": 5126, "count": len(values), "type": kind}
+    if kind == "VEC3":
+        accessor["min"] = [min(v[i] for v in values) for i in range(3)]
+        accessor["max"] = [max(v[i] for v in values) for i in range(3)]
+    accessors.append(accessor)
+    return len(accessors) - 1
+
+
 def main():
-    if len(sys.argv) not in (4, 5) or (len(sys.argv) == 5 and sys.argv[4] != "--lambertian"):
+    options = sys.argv[4:]
+    if len(sys.argv) < 4 or len(options) > 1 or any(o not in ("--lambertian", "--textured") for o in options):
         sys.exit(__doc__.strip().splitlines()[-1])
     obj, mtl, out = sys.argv[1:4]
-    lambertian = len(sys.argv) == 5
+    lambertian, textured = "--lambertian" in options, "--textured" in options
     colors, faces = read_mtl(mtl), read_obj(obj)
     blob, views, accessors, primitives, materials = bytearray(), [], [], [], []
     for name, triangles in faces.items():
         vertices = [p for t in triangles for p in t]
-        offset = len(blob)
-        for p in vertices:
-            blob += struct.pack("<3f", *p)
-        views.append({"buffer": 0, "byteOffset": offset, "byteLength": len(blob) - offset})
-        accessors.append({"bufferView": len(views) - 1, "componentType": 5126, "count": len(vertices), "type": "VEC3",
-                          "min": [min(p[i] for p in vertices) for i in range(3)],
-                          "max": [max(p[i] for p in vertices) for i in range(3)]})
+        attributes = {"POSITION": add_accessor(blob, views, accessors, vertices, "VEC3", "<3f")}
         material = {"name": name, "pbrMetallicRoughness": {
             "baseColorFactor": colors.get(name, [1.0, 1.0, 1.0]) + [1.0], "metallicFactor": 0.0, "roughnessFactor": 1.0}}
         if lambertian:
             material["extensions"] = {"KHR_materials_specular": {"specularFactor": 0.0}}
+        if textured:
+            normals, tangents, uvs = [], [], []
+            for t in triangles:
+                n, u_axis, v_axis = face_frame(t)
+                tangent = [0.0, 0.0, 0.0, 1.0]
+                tangent[u_axis] = 1.0
+                for p in t:
+                    normals.append(n)
+                    tangents.append(tangent)
+                    uvs.append((p[u_axis] / 140.0, p[v_axis] / 140.0))  # a checker tile about 17 mm
+            attributes["NORMAL"] = add_accessor(blob, views, accessors, normals, "VEC3", "<3f")
+            attributes["TANGENT"] = add_accessor(blob, views, accessors, tangents, "VEC4", "<4f")
+            attributes["TEXCOORD_0"] = add_accessor(blob, views, accessors, uvs, "VEC2", "<2f")
+            material["pbrMetallicRoughness"]["baseColorTexture"] = {"index": 0}
+            material["pbrMetallicRoughness"]["metallicRoughnessTexture"] = {"index": 1}
+            material["normalTexture"] = {"index": 2}
         materials.append(material)
-        primitives.append({"attributes": {"POSITION": len(accessors) - 1}, "material": len(materials) - 1})
+        primitives.append({"attributes": attributes, "material": len(materials) - 1})
     # The tutorial's camera: at (278, 273, -800) looking along +z (a glTF camera looks along its
     # -z, so half a turn about y), 37 degrees vertical.
     gltf = {
@@ -93,6 +163,8 @@ def main():
                                                              "znear": 1.0}}],
         "meshes": [{"primitives": primitives}],
         "materials": materials,
+        **({"textures": [{"source": i} for i in range(3)], "images": [{"uri": u} for u in textures()]}
+           if textured else {}),
         "accessors": accessors,
         "bufferViews": views,
         "buffers": [{"byteLength": len(blob),
