@@ -54,6 +54,8 @@ float reduce_coordinate(float t, TextureWrap wrap) {
 }  // namespace
 
 int wrap_index(int i, int size, TextureWrap wrap) {
+  // Inside the image every mode keeps the index: the common case, without the divisions below.
+  if (unsigned(i) < unsigned(size)) return i;
   switch (wrap) {
     case TextureWrap::repeat: return ((i % size) + size) % size;
     case TextureWrap::clamp_to_edge: return std::clamp(i, 0, size - 1);
@@ -78,11 +80,21 @@ vec4 expand_channels(const float* values, int channels) {
   }
 }
 
-// One texel as linear RGBA; the alpha channel is always linear.
+// One texel as linear RGBA; the alpha channel is always linear. texel_value's numbers, with the
+// texel's address and the storage's kind found once for its channels.
 vec4 fetch_texel(const ImageDesc& image, int x, int y, bool srgb) {
   float values[4] = {0, 0, 0, 1};
-  for (int c = 0; c < image.channels; ++c) values[c] = texel_value(image, x, y, c, srgb);
-  return expand_channels(values, image.channels);
+  int channels = image.channels;
+  size_t first = (size_t(y) * size_t(image.width) + size_t(x)) * size_t(channels);
+  if (image.texels8.empty()) {
+    for (int c = 0; c < channels; ++c) values[c] = image.texels_float[first + c];
+  } else {
+    const uint8_t* bytes = &image.texels8[first];
+    const std::array<float, 256>& decode = srgb_to_linear_table();
+    int alpha = channels == 2 ? 1 : 3;
+    for (int c = 0; c < channels; ++c) values[c] = srgb && c != alpha ? decode[bytes[c]] : bytes[c] / 255.0f;
+  }
+  return expand_channels(values, channels);
 }
 
 vec4 mix(vec4 a, vec4 b, float t) {
