@@ -13,7 +13,7 @@
 # instructions (docs/performance.md, "How to measure an instruction count").
 #
 # Usage: bench/ab_pair.sh BINARY_A BINARY_B [--rounds 10] [--size 256] [--spp 32]
-#        [--scene cornell.scene|cornell.gltf|cornell-lambertian.gltf] [--file SCENE]
+#        [--scene cornell.scene|cornell.gltf|cornell-lambertian.gltf|cornell-textured.gltf] [--file SCENE]
 # (--file: any scene file instead of the tutorial's box, rendered at --size x --size, e.g.
 # assets/many-lights.scene for the light BVH's descent.)
 # Needs: embree-tools (the tutorial's scene).
