@@ -542,15 +542,16 @@ struct PathVariant {
 
   // Gathers the stage's vertices that the surface lanes can shade (surface_lanes.h) and shades
   // them: a live path at a hit of a mesh's triangle, a sphere or a plane, whose material is a lane material,
-  // which chooses a point light without range or an emitting triangle without an emission
-  // texture. Its light is chosen, a triangle's point drawn and a glossy material's lobe choice
+  // which chooses a point, glTF spot or directional light or an emitting triangle without an
+  // emission texture. Its light is chosen, a triangle's point drawn and a glossy material's lobe choice
   // drawn here, as the one-path code would.
   [[gnu::noinline]] static void shade_in_surface_lanes(const RenderContext& ctx, BatchWorkspace& w, int live_count) {
     using LaneModel = RenderContext::LaneModel;
     const SceneDesc& scene = *ctx.scene;
     const SceneAccel& accel = *ctx.accel;
     const LightTable& lights = *ctx.lights;
-    for (SurfaceLanes* set : {&w.lambert, &w.glossy}) set->count = 0, set->any_area = false, set->hit_kinds = 0;
+    for (SurfaceLanes* set : {&w.lambert, &w.glossy})
+      set->count = 0, set->any_area = false, set->any_shaped = false, set->hit_kinds = 0;
     w.glossy.glossy = true;
     for (int k = 0; k < live_count; ++k) {
       w.lane_of[k] = -1;
@@ -583,12 +584,15 @@ struct PathVariant {
                                                                 : sample_1d(sample, dimension(depth, light_choice))));
         select_pdf = lights.selection.pmf[slot];
       }
-      // A point light without range, or an emitting triangle (not a sphere, nor the environment).
+      // A point light, a glTF spot (a smooth cone, not a classic spot's power of the cosine), a
+      // directional light, or an emitting triangle (not a sphere, nor the environment).
       const LightDesc* point = nullptr;
       const AreaLight* triangle = nullptr;
       if (slot < lights.delta_lights.size()) {
         point = &scene.lights[lights.delta_lights[slot]];
-        if (point->kind != LightKind::point || point->range > 0 || !enabled<E>(ctx.effects, effect_direct_delta))
+        bool cone = point->kind == LightKind::spot && point->use_cone;
+        if (!(point->kind == LightKind::point || cone || point->kind == LightKind::directional) ||
+            !enabled<E>(ctx.effects, effect_direct_delta))
           continue;
       } else if (slot < lights.environment_slot()) {
         triangle = &lights.area_lights[slot - lights.delta_lights.size()];
@@ -635,9 +639,7 @@ struct PathVariant {
       }
       l.area[i] = triangle != nullptr;
       if (point) {
-        l.light_x[i] = point->position.x, l.light_y[i] = point->position.y, l.light_z[i] = point->position.z;
-        l.kc[i] = point->kc, l.kl[i] = point->kl, l.kq[i] = point->kq;
-        l.intensity_r[i] = point->intensity.x, l.intensity_g[i] = point->intensity.y, l.intensity_b[i] = point->intensity.z;
+        set_lane_delta_light(l, i, *point);
       } else {
         l.any_area = true;
         l.light_x[i] = triangle->p0.x, l.light_y[i] = triangle->p0.y, l.light_z[i] = triangle->p0.z;
@@ -652,6 +654,7 @@ struct PathVariant {
         l.u_point_x[i] = u.x, l.u_point_y[i] = u.y;
         // A point light's fields the kernel also reads (its results are discarded): finite values.
         l.kc[i] = 1, l.kl[i] = l.kq[i] = 0;
+        l.shaped[i] = 0;
       }
       l.select_pdf[i] = select_pdf;
       l.cosine_x[i] = drawn.cosine.x, l.cosine_y[i] = drawn.cosine.y, l.cosine_z[i] = drawn.cosine.z;
@@ -746,7 +749,7 @@ struct PathVariant {
       light.blocked = throughput * color3{};
       light.shadow_ray.origin = {l.shadow_ox[i], l.shadow_oy[i], l.shadow_oz[i]};
       light.shadow_ray.direction = {l.shadow_dx[i], l.shadow_dy[i], l.shadow_dz[i]};
-      light.shadow_ray.tmax = 1 - 1e-4f;
+      light.shadow_ray.tmax = l.shadow_infinite[i] ? std::numeric_limits<float>::infinity() : 1 - 1e-4f;
     } else {
       path.radiance += throughput * color3{};
     }

@@ -75,6 +75,35 @@ template <class Eval>
   return s;
 }
 
+// Any delta light the lanes take (delta_light.cpp, sample_any_delta_light): a point light with
+// the glTF spot's smooth cone and the glTF range's window where it has them, or a directional
+// light. The point light's own numbers where it has neither: falloff 1 divided by the
+// attenuation is 1 / attenuation to the bit.
+template <class Eval>
+[[gnu::always_inline]] inline LaneLight shaped_delta_light_lane(const SurfaceLanes& l, int i, vec3 point, Eval eval) {
+  LaneLight s;
+  vec3 to_light = vec3{l.light_x[i], l.light_y[i], l.light_z[i]} - point;
+  float d = length(to_light);
+  vec3 towards = to_light * (1 / d);
+  float attenuation = l.kc[i] + l.kl[i] * d + l.kq[i] * d * d;
+  vec3 axis = {l.spot_x[i], l.spot_y[i], l.spot_z[i]};
+  float t = std::clamp((dot(axis, -towards) - l.cos_outer[i]) * l.cone_scale[i], 0.0f, 1.0f);
+  float falloff = l.spot[i] != 0 ? t * t : 1.0f;
+  float r = d / l.range[i];
+  float window = std::clamp(1 - r * r * r * r, 0.0f, 1.0f);
+  falloff = l.range[i] > 0 ? falloff * window : falloff;
+  color3 intensity = {l.intensity_r[i], l.intensity_g[i], l.intensity_b[i]};
+  bool directional = l.directional[i] != 0;
+  s.direction = lane::select_bits(directional, -axis, towards);
+  s.distance = directional ? std::numeric_limits<float>::infinity() : d;
+  color3 irradiance = lane::select_bits(directional, intensity, intensity * (falloff / attenuation));
+  LaneBsdfValue bsdf = eval(s.direction);
+  s.lit = (directional | ((d > 0) & (attenuation > 0) & (falloff > 0))) & bsdf.nonzero;
+  s.in_range = bsdf.in_range;
+  s.contribution = bsdf.f_cos * irradiance * color3{1, 1, 1} / l.select_pdf[i];
+  return s;
+}
+
 // An emitting triangle (area_light.cpp, sample_area_light and area_light_emits; Heitz's
 // mapping of sample_uniform_triangle) and its contribution with MIS against the BSDF's sampling.
 template <class Eval>
@@ -155,31 +184,53 @@ struct GlossyValue {
 };
 
 // A light sample's outputs: whether it lights the point, its contribution through the
-// throughput, and its shadow ray (spawn_ray_to towards the light, as set_shadow_ray).
+// throughput, and its shadow ray (as set_shadow_ray: spawn_ray_to towards the light, or with
+// `MayBeInfinite` and an infinite distance, spawn_ray along the direction).
 struct LightOutputs {
   int32_t lit;
   color3 contribution;
   vec3 shadow_origin, shadow_direction;
+  int32_t infinite = 0;
 };
+template <bool MayBeInfinite = false>
 [[gnu::always_inline]] inline LightOutputs light_outputs(const SurfaceLanes& l, int i, const LaneLight& light,
                                                          vec3 point, vec3 error, vec3 geometric_normal) {
   LightOutputs o;
   o.lit = light.lit;
   o.contribution = color3{l.throughput_r[i], l.throughput_g[i], l.throughput_b[i]} * light.contribution;
   vec3 target = point + light.direction * light.distance;
-  o.shadow_origin = offset_lane(point, error, geometric_normal, target - point);
-  o.shadow_direction = target - o.shadow_origin;
+  if constexpr (MayBeInfinite) {
+    bool infinite = !(light.distance <= largest_float);
+    o.shadow_origin = offset_lane(point, error, geometric_normal, lane::select_bits(infinite, light.direction, target - point));
+    o.shadow_direction = lane::select_bits(infinite, light.direction, target - o.shadow_origin);
+    o.infinite = infinite;
+  } else {
+    o.shadow_origin = offset_lane(point, error, geometric_normal, target - point);
+    o.shadow_direction = target - o.shadow_origin;
+  }
   return o;
 }
 [[gnu::always_inline]] inline LightOutputs stored_light_outputs(const SurfaceLanes& l, int i) {
   return {l.lit[i], {l.light_r[i], l.light_g[i], l.light_b[i]}, {l.shadow_ox[i], l.shadow_oy[i], l.shadow_oz[i]},
-          {l.shadow_dx[i], l.shadow_dy[i], l.shadow_dz[i]}};
+          {l.shadow_dx[i], l.shadow_dy[i], l.shadow_dz[i]}, l.shadow_infinite[i]};
 }
 [[gnu::always_inline]] inline void store_light_outputs(SurfaceLanes& l, int i, const LightOutputs& o) {
   l.lit[i] = o.lit;
   l.light_r[i] = o.contribution.x, l.light_g[i] = o.contribution.y, l.light_b[i] = o.contribution.z;
   l.shadow_ox[i] = o.shadow_origin.x, l.shadow_oy[i] = o.shadow_origin.y, l.shadow_oz[i] = o.shadow_origin.z;
   l.shadow_dx[i] = o.shadow_direction.x, l.shadow_dy[i] = o.shadow_direction.y, l.shadow_dz[i] = o.shadow_direction.z;
+  l.shadow_infinite[i] = o.infinite;
+}
+// Where `replaces`, the outputs `o` of a later light loop; elsewhere what the lane had. Stored
+// in every lane: a conditional store is a branch without AVX2's masked stores.
+[[gnu::always_inline]] inline void store_light_outputs_where(SurfaceLanes& l, int i, bool replaces, LightOutputs o) {
+  LightOutputs kept = stored_light_outputs(l, i);
+  o.lit = replaces ? o.lit : kept.lit;
+  o.contribution = select(replaces, o.contribution, kept.contribution);
+  o.shadow_origin = select(replaces, o.shadow_origin, kept.shadow_origin);
+  o.shadow_direction = select(replaces, o.shadow_direction, kept.shadow_direction);
+  o.infinite = replaces ? o.infinite : kept.infinite;
+  store_light_outputs(l, i, o);
 }
 
 // The instance transforms of a lane (surface_hit.cpp, fill_triangle_hit): a point and an error
@@ -403,16 +454,30 @@ template <bool Glossy>
   }
   float largest = l.error[i];
   LightOutputs o = light_outputs(l, i, light, point, {largest, largest, largest}, {l.gnx[i], l.gny[i], l.gnz[i]});
-  // Stored in every lane, the point lights' lanes keeping what they had: a conditional store
-  // is a branch without AVX2's masked stores.
-  LightOutputs kept = stored_light_outputs(l, i);
   bool area = l.area[i] != 0;
-  o.lit = area ? o.lit : kept.lit;
-  o.contribution = select(area, o.contribution, kept.contribution);
-  o.shadow_origin = select(area, o.shadow_origin, kept.shadow_origin);
-  o.shadow_direction = select(area, o.shadow_direction, kept.shadow_direction);
-  store_light_outputs(l, i, o);
+  store_light_outputs_where(l, i, area, o);
   if constexpr (Glossy) l.fallback[i] |= (!light.in_range) & area;
+}
+
+// A lane whose light is a shaped delta light (a spot, a range or a directional light), after
+// the first loop, which took it for a plain point light: this sample replaces that one.
+template <bool Glossy>
+[[gnu::always_inline]] inline void shaped_delta_lane(SurfaceLanes& l, int i) {
+  vec3 point = {l.px[i], l.py[i], l.pz[i]};
+  vec3 lobe_normal = {l.lobe_nx[i], l.lobe_ny[i], l.lobe_nz[i]};
+  LaneLight light;
+  if constexpr (Glossy) {
+    light = shaped_delta_light_lane(l, i, point, GlossyValue<false>{glossy_material(l, i), stored_glossy_lobes(l, i)});
+  } else {
+    color3 albedo = {l.albedo_r[i], l.albedo_g[i], l.albedo_b[i]};
+    light = shaped_delta_light_lane(l, i, point, LambertValue{lobe_normal, albedo, l.valid[i] != 0});
+  }
+  float largest = l.error[i];
+  LightOutputs o =
+      light_outputs<true>(l, i, light, point, {largest, largest, largest}, {l.gnx[i], l.gny[i], l.gnz[i]});
+  bool shaped = l.shaped[i] != 0;
+  store_light_outputs_where(l, i, shaped, o);
+  if constexpr (Glossy) l.fallback[i] |= (!light.in_range) & shaped;
 }
 
 // The kernel's loops, compiled once per instruction set. Each is a loop of its own: GCC
@@ -426,6 +491,8 @@ template <bool Glossy, bool AnyArea, int Hits>
   } else {
     for (int i = 0; i < l.count; ++i) lambert_lane<Hits>(l, i);
   }
+  if (l.any_shaped)
+    for (int i = 0; i < l.count; ++i) shaped_delta_lane<Glossy>(l, i);
   if constexpr (AnyArea)
     for (int i = 0; i < l.count; ++i) triangle_lane<Glossy>(l, i);
 }
@@ -461,6 +528,24 @@ void shade_lanes_on(SurfaceLanes& l, bool avx2) {
 void shade_surface_lanes(SurfaceLanes& lanes, LaneIsa isa) {
   bool avx2 = resolve_lane_isa(isa) == LaneIsa::avx2;
   lanes.glossy ? shade_lanes_on<true>(lanes, avx2) : shade_lanes_on<false>(lanes, avx2);
+}
+
+void set_lane_delta_light(SurfaceLanes& l, int i, const LightDesc& light) {
+  l.light_x[i] = light.position.x, l.light_y[i] = light.position.y, l.light_z[i] = light.position.z;
+  l.kc[i] = light.kc, l.kl[i] = light.kl, l.kq[i] = light.kq;
+  l.intensity_r[i] = light.intensity.x, l.intensity_g[i] = light.intensity.y, l.intensity_b[i] = light.intensity.z;
+  bool spot = light.kind == LightKind::spot, directional = light.kind == LightKind::directional;
+  bool shaped = spot || directional || light.range > 0;
+  l.shaped[i] = shaped;
+  if (!shaped) return;
+  l.any_shaped = true;
+  l.spot[i] = spot, l.directional[i] = directional;
+  l.range[i] = directional ? 0.0f : light.range;  // a directional light has no range
+  l.spot_x[i] = light.direction.x, l.spot_y[i] = light.direction.y, l.spot_z[i] = light.direction.z;
+  // spot_falloff's cone, worked out as it does.
+  float cos_outer = std::cos(light.outer_cone), cos_inner = std::cos(light.inner_cone);
+  l.cos_outer[i] = cos_outer;
+  l.cone_scale[i] = 1.0f / std::max(0.001f, cos_inner - cos_outer);
 }
 
 RenderContext::LaneModel lane_model_of(const SurfaceMaterial& m, const BsdfMaterial& bsdf) {

@@ -1,6 +1,7 @@
 // A batch's commonest path vertices shaded across SIMD lanes: a hit of a mesh's triangle, a sphere
-// or a plane, lit through opaque shadows by one point light or one emitting triangle, with a Lambert
-// material, or (`glossy`) a metallic-roughness one in the case metallic_roughness_lane.h takes.
+// or a plane, lit through opaque shadows by one point, glTF spot or directional light or one
+// emitting triangle, with a Lambert material, or (`glossy`) a metallic-roughness one in the case
+// metallic_roughness_lane.h takes.
 // The batched path tracer (integrators/path.cpp) gathers such vertices of a stage into these
 // lanes, one set per model, shades them together and scatters the results back; every other
 // vertex, and every lane this kernel cannot finish (`fallback`), is shaded one path at a time.
@@ -67,6 +68,12 @@ struct SurfaceLanes {
   alignas(32) float light_area[stride];
   alignas(32) int32_t two_sided[stride];
   alignas(32) float u_point_x[stride], u_point_y[stride];
+  // Where `shaped`, the delta light is a glTF spot (`spot`: its axis in spot_*, the cosine of its
+  // outer cone and the smooth step's scale), has a range (`range` > 0), or is `directional`
+  // (its direction of travel in spot_*); the point light's fields then hold finite values.
+  alignas(32) int32_t shaped[stride], spot[stride], directional[stride];
+  alignas(32) float spot_x[stride], spot_y[stride], spot_z[stride], cos_outer[stride], cone_scale[stride];
+  alignas(32) float range[stride];
   alignas(32) float select_pdf[stride];
   alignas(32) float cosine_x[stride], cosine_y[stride], cosine_z[stride];
   alignas(32) float throughput_r[stride], throughput_g[stride], throughput_b[stride];
@@ -81,7 +88,8 @@ struct SurfaceLanes {
   // the vertex must be shaded one path at a time. Otherwise: the hit's position and the
   // shading normal facing the ray (the path's previous_*); `scatters`, and where it does the
   // next ray (origin, direction wi), its pdf and the throughput's weight; `lit`, and where it is the shadow ray
-  // (origin, direction; tmax 1 - 1e-4) and the light's contribution through the throughput.
+  // (origin, direction; tmax 1 - 1e-4, or infinite where `shadow_infinite`: a directional
+  // light) and the light's contribution through the throughput.
   alignas(32) int32_t fallback[stride], scatters[stride], lit[stride];
   alignas(32) float px[stride], py[stride], pz[stride];
   alignas(32) float nx[stride], ny[stride], nz[stride];
@@ -91,6 +99,7 @@ struct SurfaceLanes {
   alignas(32) float weight_r[stride], weight_g[stride], weight_b[stride];
   alignas(32) float shadow_ox[stride], shadow_oy[stride], shadow_oz[stride];
   alignas(32) float shadow_dx[stride], shadow_dy[stride], shadow_dz[stride];
+  alignas(32) int32_t shadow_infinite[stride];
   alignas(32) float light_r[stride], light_g[stride], light_b[stride];
   // Between the kernel's loops: each hit's geometric normal, error bound, lobe normal and
   // whether the lobes are valid; a glossy lane's local wo, lobe probabilities, the coating's
@@ -103,15 +112,20 @@ struct SurfaceLanes {
   alignas(32) float specular_x[stride], specular_y[stride], specular_z[stride];
   int count = 0;
   bool glossy = false;  // the lanes' model: metallic-roughness, or Lambert
-  // Set by whoever fills the lanes: whether any lane's light is a triangle, and which kinds of
-  // hit beside untransformed triangles the lanes hold. The kernel leaves out what none needs.
-  bool any_area = false;
+  // Set by whoever fills the lanes: whether any lane's light is a triangle or a shaped delta
+  // light, and which kinds of hit beside untransformed triangles the lanes hold. The kernel
+  // leaves out what none needs.
+  bool any_area = false, any_shaped = false;
   static constexpr int transformed_hits = 1, shape_hits = 2;
   int hit_kinds = 0;
 };
 
 // Shades lanes [0, count).
 void shade_surface_lanes(SurfaceLanes& lanes, LaneIsa isa = LaneIsa::best);
+
+// Lane i's light fields for a delta light the lanes take: a point light, a glTF spot (use_cone)
+// or a directional light. Sets any_shaped where it is not a plain point light.
+void set_lane_delta_light(SurfaceLanes& lanes, int i, const LightDesc& light);
 
 // Which lanes can shade a vertex whose material resolved to `m` (`bsdf` its BSDF material), if
 // any: opaque, not emitting, lit; Lambertian with some albedo, or the metallic-roughness case of

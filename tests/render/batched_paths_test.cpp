@@ -108,12 +108,13 @@ void require_same_render(const SceneDesc& scene, RenderOptions o, bool packets =
 
 }  // namespace
 
-// A room of matte walls, a glTF plastic box and a rough metal panel lit by point lights and an
-// emitting panel, whose vertices the batch shades in its surface lanes
-// (integrators/surface_lanes.h), one wall with vertex normals, a rotated and a mirrored
-// instance, and with `shapes` a matte and a plastic sphere and a plane for a ceiling, beside every vertex the lanes must leave to the one-path code: vertex normals that
-// are all zero, a smooth metal, the emitting panel itself, a spot light, a point light with a
-// range. Scaled down by `scale`, every triangle's
+// A room of matte walls, a glTF plastic box and a rough metal panel lit by point lights (one with
+// a range), a glTF spot, the sun and an emitting panel, whose vertices the batch shades in its
+// surface lanes (integrators/surface_lanes.h), one wall with vertex normals, a rotated and a
+// mirrored instance, and with `shapes` a matte and a plastic sphere and a plane for a ceiling,
+// beside every vertex the lanes must leave to the one-path code: vertex normals that are all
+// zero, a smooth metal, the emitting panel itself, a classic spot (a power of the cosine).
+// Scaled down by `scale`, every triangle's
 // normal gets a squared length below float's normal range, and every lane falls back. Nothing in
 // it is seen through or textured, so the render's variant compiles the lanes.
 SceneDesc surface_lanes_room(float scale, bool shapes = false) {
@@ -160,6 +161,12 @@ SceneDesc surface_lanes_room(float scale, bool shapes = false) {
   spot.direction = normalize(vec3{1, -2, -1.5f});
   spot.use_cone = true, spot.inner_cone = 0.3f, spot.outer_cone = 0.5f;
   scene.lights.push_back(spot);
+  spot.position = {1, 3.5f, 0}, spot.direction = normalize(vec3{-0.5f, -1, -1}), spot.use_cone = false;
+  spot.spot_exponent = 8;
+  scene.lights.push_back(spot);
+  LightDesc sun;
+  sun.kind = LightKind::directional, sun.direction = normalize(vec3{-0.3f, -1, -0.6f}), sun.intensity = {0.5f, 0.45f, 0.4f};
+  scene.lights.push_back(sun);
   ShapeDesc ball;  // shapes make Embree call radiant back for each ray: no packets
   ball.kind = ShapeKind::sphere, ball.center = {2.5f, 0.7f, 1}, ball.radius = 0.7f;
   ball.material = add_material(scene, plastic);
@@ -178,7 +185,8 @@ SceneDesc surface_lanes_room(float scale, bool shapes = false) {
     for (int row = 0; row < 3; ++row) instance.transform.m[row][3] *= scale;
   for (LightDesc& light : scene.lights) {
     light.position = light.position * scale, light.range *= scale;
-    light.intensity = light.intensity * (scale * scale);  // the same image, inverse square law
+    // The same image: the inverse square law (the sun's irradiance does not fall off).
+    if (light.kind != LightKind::directional) light.intensity = light.intensity * (scale * scale);
   }
   scene.cameras[0].position = scene.cameras[0].position * scale;
   return scene;

@@ -98,10 +98,9 @@ void set_lane(SurfaceLanes& l, int i, const LaneCase& c) {
     l.intensity_r[i] = c.emission.x, l.intensity_g[i] = c.emission.y, l.intensity_b[i] = c.emission.z;
     l.u_point_x[i] = c.u_point.x, l.u_point_y[i] = c.u_point.y;
     l.kc[i] = 1, l.kl[i] = l.kq[i] = 0;
+    l.shaped[i] = 0;
   } else {
-    l.light_x[i] = c.light.position.x, l.light_y[i] = c.light.position.y, l.light_z[i] = c.light.position.z;
-    l.kc[i] = c.light.kc, l.kl[i] = c.light.kl, l.kq[i] = c.light.kq;
-    l.intensity_r[i] = c.light.intensity.x, l.intensity_g[i] = c.light.intensity.y, l.intensity_b[i] = c.light.intensity.z;
+    set_lane_delta_light(l, i, c.light);
   }
   l.select_pdf[i] = c.select_pdf;
   l.cosine_x[i] = c.cosine.x, l.cosine_y[i] = c.cosine.y, l.cosine_z[i] = c.cosine.z;
@@ -230,10 +229,15 @@ void check_lane(const SurfaceLanes& l, int i, const LaneCase& c, int& specular_b
   REQUIRE(bool(l.lit[i]) == lit);
   if (lit) {
     CHECK(same_bits({l.light_r[i], l.light_g[i], l.light_b[i]}, contribution));
-    Ray shadow;
-    spawn_ray_to(shadow, hit, hit.position + direction * distance);
+    Ray shadow;  // set_shadow_ray's
+    bool infinite = !std::isfinite(distance);
+    if (infinite)
+      spawn_ray(shadow, hit, direction);
+    else
+      spawn_ray_to(shadow, hit, hit.position + direction * distance);
     CHECK(same_bits({l.shadow_ox[i], l.shadow_oy[i], l.shadow_oz[i]}, shadow.origin));
     CHECK(same_bits({l.shadow_dx[i], l.shadow_dy[i], l.shadow_dz[i]}, shadow.direction));
+    CHECK(bool(l.shadow_infinite[i]) == infinite);
   }
 }
 
@@ -256,6 +260,19 @@ std::vector<LaneCase> lane_cases() {
     c.light.position = corner + point(4);
     c.light.intensity = {5 * next(), 5 * next(), 5 * next()};
     c.light.kc = k % 3 == 0 ? 1.0f : 0.0f, c.light.kl = k % 3 == 1 ? 0.5f : 0.0f, c.light.kq = k % 3 == 2 ? 0.0f : 1.0f;
+    // Beside plain point lights: glTF spots aimed near the point (some with a range), point
+    // lights with a range that some points are beyond, and directional lights from any side.
+    if (k % 6 == 0) {
+      c.light.kind = LightKind::spot, c.light.use_cone = true;
+      c.light.direction = normalize(corner - c.light.position + point(2));
+      c.light.inner_cone = 0.2f * next(), c.light.outer_cone = c.light.inner_cone + (k % 12 == 0 ? 0.0f : 0.6f * next());
+      c.light.range = k % 18 == 6 ? 3.0f : 0.0f;
+    } else if (k % 6 == 2) {
+      c.light.kind = LightKind::directional;
+      c.light.direction = normalize(point(2));
+    } else if (k % 12 == 5) {
+      c.light.range = 1 + 3 * next();
+    }
     c.select_pdf = 0.25f + next();
     c.cosine = sample_cosine_hemisphere({next(), next()});
     c.throughput = {next(), next(), next()};
@@ -414,14 +431,19 @@ TEST_CASE("Lambert lanes: each lane is the one-path vertex to the bit, on every 
       for (size_t i = 0; i < cases->size(); ++i) set_lane(*lanes, int(i), (*cases)[i]);
       lanes->count = int(cases->size());
       shade_surface_lanes(*lanes, isa);
-      int lit = 0, scatters = 0, lit_by_triangles = 0;
+      int lit = 0, scatters = 0, lit_by_triangles = 0, shaped = 0, lit_by_shaped = 0;
       for (size_t i = 0; i < cases->size(); ++i) {
         CAPTURE(i);
         int unused = 0;
         check_lane(*lanes, int(i), (*cases)[i], unused);
         lit += lanes->lit[i], scatters += lanes->scatters[i];
         lit_by_triangles += lanes->lit[i] && (*cases)[i].area;
+        bool shaped_light = !(*cases)[i].area && lanes->shaped[i];
+        shaped += shaped_light, lit_by_shaped += shaped_light && lanes->lit[i];
       }
+      // Spots, ranges and directional lights light some lanes and not others.
+      CHECK(lit_by_shaped > 10);
+      CHECK(shaped - lit_by_shaped > 10);
       // Both outcomes of both tests occur, for both kinds of light.
       CHECK(lit > 20);
       CHECK(lit < int(cases->size()) - 20);
@@ -475,13 +497,17 @@ TEST_CASE("Glossy lanes: each lane is the one-path metallic-roughness vertex to 
       for (size_t i = 0; i < cases->size(); ++i) set_lane(*lanes, int(i), (*cases)[i]);
       lanes->count = int(cases->size());
       shade_surface_lanes(*lanes, isa);
-      int lit = 0, scatters = 0, lit_by_triangles = 0, specular_bounces = 0;
+      int lit = 0, scatters = 0, lit_by_triangles = 0, specular_bounces = 0, shaped = 0, lit_by_shaped = 0;
       for (size_t i = 0; i < cases->size(); ++i) {
         CAPTURE(i);
         check_lane(*lanes, int(i), (*cases)[i], specular_bounces);
         lit += lanes->lit[i], scatters += lanes->scatters[i];
         lit_by_triangles += lanes->lit[i] && (*cases)[i].area;
+        bool shaped_light = !(*cases)[i].area && lanes->shaped[i];
+        shaped += shaped_light, lit_by_shaped += shaped_light && lanes->lit[i];
       }
+      CHECK(lit_by_shaped > 10);
+      CHECK(shaped - lit_by_shaped > 10);
       // Both outcomes of both tests occur, for both kinds of light and both lobes.
       CHECK(lit > 20);
       CHECK(lit < int(cases->size()) - 20);
