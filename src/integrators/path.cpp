@@ -542,8 +542,8 @@ struct PathVariant {
 
   // Gathers the stage's vertices that the surface lanes can shade (surface_lanes.h) and shades
   // them: a live path at a hit of a mesh's triangle, a sphere or a plane, whose material is a lane material,
-  // which chooses a point, glTF spot or directional light or an emitting triangle without an
-  // emission texture. Its light is chosen, a triangle's point drawn and a glossy material's lobe choice
+  // which chooses a point, glTF spot or directional light, an emitting triangle without an
+  // emission texture, or the environment. Its light is chosen, a triangle's point drawn and a glossy material's lobe choice
   // drawn here, as the one-path code would.
   [[gnu::noinline]] static void shade_in_surface_lanes(const RenderContext& ctx, BatchWorkspace& w, int live_count) {
     using LaneModel = RenderContext::LaneModel;
@@ -551,7 +551,7 @@ struct PathVariant {
     const SceneAccel& accel = *ctx.accel;
     const LightTable& lights = *ctx.lights;
     for (SurfaceLanes* set : {&w.lambert, &w.glossy})
-      set->count = 0, set->any_area = false, set->any_shaped = false, set->hit_kinds = 0;
+      set->count = 0, set->any_area = set->any_shaped = set->any_environment = false, set->hit_kinds = 0;
     w.glossy.glossy = true;
     for (int k = 0; k < live_count; ++k) {
       w.lane_of[k] = -1;
@@ -601,7 +601,8 @@ struct PathVariant {
         if (enabled<E>(ctx.effects, effect_textures) && scene.materials[triangle->material].emission_texture.valid() &&
             triangle->instance >= 0)
           continue;
-      } else {
+      } else if (slot != lights.environment_slot() || !lights.has_environment() ||
+                 !enabled<E>(ctx.effects, effect_environment)) {
         continue;
       }
       // The material as the hit resolves it, and where a map bends the normal, that normal.
@@ -638,8 +639,20 @@ struct PathVariant {
         l.albedo_r[i] = albedo.x, l.albedo_g[i] = albedo.y, l.albedo_b[i] = albedo.z;
       }
       l.area[i] = triangle != nullptr;
+      l.environment[i] = !point && !triangle;
       if (point) {
         set_lane_delta_light(l, i, *point);
+      } else if (!triangle) {
+        l.any_environment = true;
+        l.lights = &lights;
+        l.u_environment[i] = sample_1d(sample, dimension(depth, environment_choice));
+        vec2 u = drawn.has(light_point) ? drawn.light_point : sample_2d(sample, dimension(depth, light_point));
+        l.u_point_x[i] = u.x, l.u_point_y[i] = u.y;
+        // A point light's fields the kernel also reads (its results are discarded): finite values.
+        l.light_x[i] = l.light_y[i] = l.light_z[i] = 0;
+        l.intensity_r[i] = l.intensity_g[i] = l.intensity_b[i] = 0;
+        l.kc[i] = 1, l.kl[i] = l.kq[i] = 0;
+        l.shaped[i] = 0;
       } else {
         l.any_area = true;
         l.light_x[i] = triangle->p0.x, l.light_y[i] = triangle->p0.y, l.light_z[i] = triangle->p0.z;

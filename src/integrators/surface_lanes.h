@@ -1,6 +1,6 @@
 // A batch's commonest path vertices shaded across SIMD lanes: a hit of a mesh's triangle, a sphere
-// or a plane, lit through opaque shadows by one point, glTF spot or directional light or one
-// emitting triangle, with a Lambert material, or (`glossy`) a metallic-roughness one in the case
+// or a plane, lit through opaque shadows by one point, glTF spot or directional light, one
+// emitting triangle or the environment, with a Lambert material, or (`glossy`) a metallic-roughness one in the case
 // metallic_roughness_lane.h takes.
 // The batched path tracer (integrators/path.cpp) gathers such vertices of a stage into these
 // lanes, one set per model, shades them together and scatters the results back; every other
@@ -74,6 +74,14 @@ struct SurfaceLanes {
   alignas(32) int32_t shaped[stride], spot[stride], directional[stride];
   alignas(32) float spot_x[stride], spot_y[stride], spot_z[stride], cos_outer[stride], cone_scale[stride];
   alignas(32) float range[stride];
+  // Where `environment`, the light is the environment (of `lights`, the render's table): its
+  // choice between map and cosine sampling (u_environment) with u_point. The kernel draws its
+  // direction, pdf and radiance (environment_*) one lane at a time, in the library's functions.
+  alignas(32) int32_t environment[stride];
+  alignas(32) float u_environment[stride];
+  alignas(32) float environment_x[stride], environment_y[stride], environment_z[stride], environment_pdf[stride];
+  alignas(32) float environment_r[stride], environment_g[stride], environment_b[stride];
+  const LightTable* lights = nullptr;
   alignas(32) float select_pdf[stride];
   alignas(32) float cosine_x[stride], cosine_y[stride], cosine_z[stride];
   alignas(32) float throughput_r[stride], throughput_g[stride], throughput_b[stride];
@@ -112,10 +120,10 @@ struct SurfaceLanes {
   alignas(32) float specular_x[stride], specular_y[stride], specular_z[stride];
   int count = 0;
   bool glossy = false;  // the lanes' model: metallic-roughness, or Lambert
-  // Set by whoever fills the lanes: whether any lane's light is a triangle or a shaped delta
-  // light, and which kinds of hit beside untransformed triangles the lanes hold. The kernel
-  // leaves out what none needs.
-  bool any_area = false, any_shaped = false;
+  // Set by whoever fills the lanes: whether any lane's light is a triangle, a shaped delta
+  // light or the environment, and which kinds of hit beside untransformed triangles the lanes
+  // hold. The kernel leaves out what none needs.
+  bool any_area = false, any_shaped = false, any_environment = false;
   static constexpr int transformed_hits = 1, shape_hits = 2;
   int hit_kinds = 0;
 };

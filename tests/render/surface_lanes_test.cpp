@@ -13,11 +13,14 @@
 #include "integrators/surface_lanes.h"
 #include "lights/area_light.h"
 #include "lights/delta_light.h"
+#include "lights/environment_light.h"
+#include "lights/light_table.h"
 #include "materials/bsdf.h"
 #include "materials/bsdf_models.h"
 #include "materials/metallic_roughness_lane.h"
 #include "math/transform.h"
 #include "sampling/warp.h"
+#include "support/test_support.h"
 
 using namespace radiant;
 
@@ -38,6 +41,8 @@ struct LaneCase {
   color3 albedo;
   LightDesc light;         // a point light, unless `area`
   bool area = false;       // an emitting triangle instead
+  const LightTable* environment = nullptr;  // or the environment of this table
+  float u_environment = 0;                  // its choice of map or cosine sampling, with u_point
   AreaLight triangle;
   color3 emission;
   vec2 u_point;
@@ -87,7 +92,16 @@ void set_lane(SurfaceLanes& l, int i, const LaneCase& c) {
   l.dx[i] = c.direction.x, l.dy[i] = c.direction.y, l.dz[i] = c.direction.z;
   l.albedo_r[i] = c.albedo.x, l.albedo_g[i] = c.albedo.y, l.albedo_b[i] = c.albedo.z;
   l.area[i] = c.area;
-  if (c.area) {
+  l.environment[i] = c.environment != nullptr;
+  if (c.environment) {
+    l.any_environment = true;
+    l.lights = c.environment;
+    l.u_environment[i] = c.u_environment;
+    l.u_point_x[i] = c.u_point.x, l.u_point_y[i] = c.u_point.y;
+    l.light_x[i] = l.light_y[i] = l.light_z[i] = 0, l.intensity_r[i] = l.intensity_g[i] = l.intensity_b[i] = 0;
+    l.kc[i] = 1, l.kl[i] = l.kq[i] = 0;
+    l.shaped[i] = 0;
+  } else if (c.area) {
     l.any_area = true;
     const AreaLight& t = c.triangle;
     l.light_x[i] = t.p0.x, l.light_y[i] = t.p0.y, l.light_z[i] = t.p0.z;
@@ -204,7 +218,19 @@ void check_lane(const SurfaceLanes& l, int i, const LaneCase& c, int& specular_b
   color3 contribution;
   vec3 direction;
   float distance = 0;
-  if (c.area) {
+  if (c.environment) {
+    vec3 wi;
+    float light_pdf = sample_environment(*c.environment, normal, c.u_environment, c.u_point, wi);
+    color3 emitted = light_pdf > 0 ? eval_environment(*c.environment, wi) : color3{};
+    float bsdf_pdf;
+    color3 f_cos = !is_black(emitted) ? bsdf.eval(wi, bsdf_pdf) : color3{};
+    lit = !is_black(f_cos);
+    if (lit) {
+      float pdf = c.select_pdf * light_pdf;
+      contribution = c.throughput * (f_cos * emitted * color3{1, 1, 1} * (power_heuristic(pdf, bsdf_pdf) / pdf));
+      direction = wi, distance = std::numeric_limits<float>::infinity();
+    }
+  } else if (c.area) {
     AreaLightSample sample;
     lit = sample_area_light(c.triangle, hit.position, c.u_point, sample) &&
           area_light_emits(c.triangle, sample.normal, -sample.direction) && !is_black(c.emission);
@@ -412,6 +438,20 @@ std::vector<LaneCase> given_normals(std::vector<LaneCase> cases) {
   return cases;
 }
 
+// The same hits lit by the environment of `lights` in two lanes of three.
+std::vector<LaneCase> environment_lit(std::vector<LaneCase> cases, const LightTable& lights) {
+  uint32_t state = 9;
+  auto next = [&] { return float((state = state * 1664525u + 1013904223u) >> 8) * 0x1p-24f; };
+  for (size_t k = 0; k < cases.size(); ++k) {
+    if (k % 3 == 2) continue;
+    LaneCase& c = cases[k];
+    c.area = false;
+    c.environment = &lights;
+    c.u_environment = next(), c.u_point = {next(), next()};
+  }
+  return cases;
+}
+
 }  // namespace
 
 TEST_CASE("Lambert lanes: each lane is the one-path vertex to the bit, on every instruction set") {
@@ -517,6 +557,45 @@ TEST_CASE("Glossy lanes: each lane is the one-path metallic-roughness vertex to 
       CHECK(scatters - specular_bounces > 10);
       CHECK(lit_by_triangles > (cases != &points ? 10 : -1));
       CHECK(lit - lit_by_triangles > 10);
+    }
+  }
+}
+
+TEST_CASE("Surface lanes: the environment's light sample is the one-path vertex's to the bit") {
+  // A uniform sky (cosine sampling about the normal) and a map (its distribution as well, chosen
+  // by u_environment), with a dark band whose texels a map sample can land on.
+  test::ScratchDir dir("lanes-environment");
+  std::vector<float> sky;
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 16; ++x)
+      for (int c = 0; c < 3; ++c) sky.push_back(y == 5 ? 0.0f : 0.2f + 0.1f * float((x * 7 + y * 3 + c) % 11));
+  test::write_test_image(dir.file("sky.exr"), 16, 8, {"R", "G", "B"}, sky);
+  SceneDesc empty;
+  LightTable uniform = make_light_table(empty, {0.4f, 0.5f, 0.7f}, "", true, nullptr, LightSampler::power);
+  LightTable mapped = make_light_table(empty, {}, dir.file("sky.exr").string(), true, nullptr, LightSampler::power);
+  for (const LightTable* table : {&uniform, &mapped}) {
+    for (bool glossy : {false, true}) {
+      std::vector<LaneCase> cases = environment_lit(glossy ? glossy_cases() : lane_cases(), *table);
+      for (LaneIsa isa : {LaneIsa::best, LaneIsa::baseline, LaneIsa::avx2}) {
+        if (!lane_isa_available(isa)) continue;
+        CAPTURE(table == &mapped);
+        CAPTURE(glossy);
+        CAPTURE(int(isa));
+        auto lanes = std::make_unique<SurfaceLanes>();
+        lanes->glossy = glossy;
+        for (size_t i = 0; i < cases.size(); ++i) set_lane(*lanes, int(i), cases[i]);
+        lanes->count = int(cases.size());
+        shade_surface_lanes(*lanes, isa);
+        int environment = 0, lit_by_environment = 0, unused = 0;
+        for (size_t i = 0; i < cases.size(); ++i) {
+          CAPTURE(i);
+          check_lane(*lanes, int(i), cases[i], unused);
+          environment += cases[i].environment != nullptr;
+          lit_by_environment += cases[i].environment && lanes->lit[i];
+        }
+        CHECK(lit_by_environment > 20);
+        CHECK(environment - lit_by_environment > 5);
+      }
     }
   }
 }
