@@ -542,8 +542,8 @@ struct PathVariant {
 
   // Gathers the stage's vertices that the surface lanes can shade (surface_lanes.h) and shades
   // them: a live path at a hit of a mesh's triangle, a sphere or a plane, whose material is a lane material,
-  // which chooses a point, glTF spot or directional light, an emitting triangle without an
-  // emission texture, or the environment. Its light is chosen, a triangle's point drawn and a glossy material's lobe choice
+  // which chooses a point, glTF spot or directional light, an emitting triangle, or the
+  // environment. Its light is chosen, a triangle's point drawn and a glossy material's lobe choice
   // drawn here, as the one-path code would.
   [[gnu::noinline]] static void shade_in_surface_lanes(const RenderContext& ctx, BatchWorkspace& w, int live_count) {
     using LaneModel = RenderContext::LaneModel;
@@ -597,10 +597,6 @@ struct PathVariant {
       } else if (slot < lights.environment_slot()) {
         triangle = &lights.area_lights[slot - lights.delta_lights.size()];
         if (triangle->shape != AreaLightShape::triangle || !enabled<E>(ctx.effects, effect_emission)) continue;
-        // area_light_emission would read the texture at the point the lane draws.
-        if (enabled<E>(ctx.effects, effect_textures) && scene.materials[triangle->material].emission_texture.valid() &&
-            triangle->instance >= 0)
-          continue;
       } else if (slot != lights.environment_slot() || !lights.has_environment() ||
                  !enabled<E>(ctx.effects, effect_environment)) {
         continue;
@@ -661,10 +657,12 @@ struct PathVariant {
         l.light_nx[i] = triangle->normal.x, l.light_ny[i] = triangle->normal.y, l.light_nz[i] = triangle->normal.z;
         l.light_area[i] = triangle->area;
         l.two_sided[i] = triangle->two_sided;
-        color3 emission = ctx.flat_materials[size_t(triangle->material)].emission;  // no texture is read
-        l.intensity_r[i] = emission.x, l.intensity_g[i] = emission.y, l.intensity_b[i] = emission.z;
         vec2 u = drawn.has(light_point) ? drawn.light_point : sample_2d(sample, dimension(depth, light_point));
         l.u_point_x[i] = u.x, l.u_point_y[i] = u.y;
+        // The emission at the point the lane draws (sample_area_light's barycentrics depend on u
+        // alone): an emission texture is read there, as sample_one_light reads it.
+        color3 emission = area_light_emission<E>(ctx, *triangle, sample_uniform_triangle(u));
+        l.intensity_r[i] = emission.x, l.intensity_g[i] = emission.y, l.intensity_b[i] = emission.z;
         // A point light's fields the kernel also reads (its results are discarded): finite values.
         l.kc[i] = 1, l.kl[i] = l.kq[i] = 0;
         l.shaped[i] = 0;
