@@ -582,14 +582,8 @@ void shade_surface_lanes(SurfaceLanes& lanes, LaneIsa isa) {
   lanes.glossy ? shade_lanes_on<true>(lanes, avx2) : shade_lanes_on<false>(lanes, avx2);
 }
 
-void set_lane_delta_light(SurfaceLanes& l, int i, const LightDesc& light) {
-  l.light_x[i] = light.position.x, l.light_y[i] = light.position.y, l.light_z[i] = light.position.z;
-  l.kc[i] = light.kc, l.kl[i] = light.kl, l.kq[i] = light.kq;
-  l.intensity_r[i] = light.intensity.x, l.intensity_g[i] = light.intensity.y, l.intensity_b[i] = light.intensity.z;
+void set_lane_shaped_light(SurfaceLanes& l, int i, const LightDesc& light) {
   bool spot = light.kind == LightKind::spot, directional = light.kind == LightKind::directional;
-  bool shaped = spot || directional || light.range > 0;
-  l.shaped[i] = shaped;
-  if (!shaped) return;
   l.any_shaped = true;
   l.spot[i] = spot, l.directional[i] = directional;
   l.range[i] = directional ? 0.0f : light.range;  // a directional light has no range

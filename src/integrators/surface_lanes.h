@@ -131,9 +131,19 @@ struct SurfaceLanes {
 // Shades lanes [0, count).
 void shade_surface_lanes(SurfaceLanes& lanes, LaneIsa isa = LaneIsa::best);
 
+// Lane i's fields for a shaped delta light (set_lane_delta_light), and sets any_shaped.
+void set_lane_shaped_light(SurfaceLanes& lanes, int i, const LightDesc& light);
+
 // Lane i's light fields for a delta light the lanes take: a point light, a glTF spot (use_cone)
-// or a directional light. Sets any_shaped where it is not a plain point light.
-void set_lane_delta_light(SurfaceLanes& lanes, int i, const LightDesc& light);
+// or a directional light. Inline: the plain point light is every lane's light on most boxes.
+[[gnu::always_inline]] inline void set_lane_delta_light(SurfaceLanes& l, int i, const LightDesc& light) {
+  l.light_x[i] = light.position.x, l.light_y[i] = light.position.y, l.light_z[i] = light.position.z;
+  l.kc[i] = light.kc, l.kl[i] = light.kl, l.kq[i] = light.kq;
+  l.intensity_r[i] = light.intensity.x, l.intensity_g[i] = light.intensity.y, l.intensity_b[i] = light.intensity.z;
+  bool shaped = light.kind != LightKind::point || light.range > 0;
+  l.shaped[i] = shaped;
+  if (shaped) set_lane_shaped_light(l, i, light);
+}
 
 // Which lanes can shade a vertex whose material resolved to `m` (`bsdf` its BSDF material), if
 // any: opaque, not emitting, lit; Lambertian with some albedo, or the metallic-roughness case of
