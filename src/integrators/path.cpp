@@ -585,7 +585,7 @@ struct PathVariant {
         select_pdf = lights.selection.pmf[slot];
       }
       // A point light, a glTF spot (a smooth cone, not a classic spot's power of the cosine), a
-      // directional light, or an emitting triangle (not a sphere, nor the environment).
+      // directional light, an emitting triangle (not a sphere), or the environment.
       const LightDesc* point = nullptr;
       const AreaLight* triangle = nullptr;
       if (slot < lights.delta_lights.size()) {

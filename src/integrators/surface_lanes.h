@@ -1,7 +1,7 @@
 // A batch's commonest path vertices shaded across SIMD lanes: a hit of a mesh's triangle, a sphere
 // or a plane, lit through opaque shadows by one point, glTF spot or directional light, one
-// emitting triangle or the environment, with a Lambert material, or (`glossy`) a metallic-roughness one in the case
-// metallic_roughness_lane.h takes.
+// emitting triangle or the environment, with a Lambert material, or (`glossy`) a
+// metallic-roughness one in the case metallic_roughness_lane.h takes.
 // The batched path tracer (integrators/path.cpp) gathers such vertices of a stage into these
 // lanes, one set per model, shades them together and scatters the results back; every other
 // vertex, and every lane this kernel cannot finish (`fallback`), is shaded one path at a time.
@@ -23,8 +23,8 @@ struct SurfaceLanes {
   // render's time once vertex normals added ten arrays).
   static constexpr int stride = capacity + 16;
   // Inputs: the triangle (its vertices, Embree's barycentrics and unnormalised normal, and its
-  // vertex normals where `normals` is vertex_normals), the ray's direction, the albedo, the chosen light and
-  // the probability it was chosen with, the bounce's cosine-warped local direction and the
+  // vertex normals where `normals` says so), the ray's direction, the albedo, the chosen light
+  // and the probability it was chosen with, the bounce's cosine-warped local direction and the
   // path's throughput. The light: a point light's position, attenuation and intensity; or,
   // where `area`, an emitting triangle's corners (light_* the first), front normal, area,
   // sidedness and emission (in intensity_*), and the point's random numbers.
@@ -96,8 +96,8 @@ struct SurfaceLanes {
   // the vertex must be shaded one path at a time. Otherwise: the hit's position and the
   // shading normal facing the ray (the path's previous_*); `scatters`, and where it does the
   // next ray (origin, direction wi), its pdf and the throughput's weight; `lit`, and where it is the shadow ray
-  // (origin, direction; tmax 1 - 1e-4, or infinite where `shadow_infinite`: a directional
-  // light) and the light's contribution through the throughput.
+  // (origin, direction; tmax 1 - 1e-4, or infinite where `shadow_infinite`: the sun or the
+  // environment) and the light's contribution through the throughput.
   alignas(32) int32_t fallback[stride], scatters[stride], lit[stride];
   alignas(32) float px[stride], py[stride], pz[stride];
   alignas(32) float nx[stride], ny[stride], nz[stride];
