@@ -13,7 +13,8 @@
 # instructions (docs/performance.md, "How to measure an instruction count").
 #
 # Usage: bench/ab_pair.sh BINARY_A BINARY_B [--rounds 10] [--size 256] [--spp 32]
-#        [--scene cornell.scene|cornell.gltf|cornell-lambertian.gltf|cornell-textured.gltf] [--file SCENE]
+#        [--scene cornell.scene|cornell.gltf|cornell-lambertian.gltf|cornell-textured.gltf|cornell-glass.gltf]
+#        [--file SCENE]
 #        [--flags "RADIANT FLAGS"]
 # (--file: any scene file instead of the tutorial's box, rendered at --size x --size, e.g.
 # assets/many-lights.scene for the light BVH's descent. --flags: more flags for both renders,

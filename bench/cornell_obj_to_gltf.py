@@ -12,10 +12,14 @@ and a tangent, and every material a checker base colour texture (times its Kd), 
 metallic-roughness texture (roughness 0.35-1, metallic 0) and a normal map of gentle ripples.
 The textures are small PNGs embedded in the file.
 
+With --glass the tall block is glass instead (KHR_materials_transmission 1, roughness 0, the
+default IOR 1.5), as a scene that is seen through: light reaches the floor past it by the
+shadow rays' walk and by refraction.
+
 Coordinates stay the OBJ's (millimetres); the point light's intensity, 100000, is the tutorial's
 (-pointlight 213 300 227 100000 ...), radiometric as radiant reads glTF lights.
 
-Usage: bench/cornell_obj_to_gltf.py OBJ MTL OUT.gltf [--lambertian | --textured]
+Usage: bench/cornell_obj_to_gltf.py OBJ MTL OUT.gltf [--lambertian | --textured | --glass]
 """
 import base64
 import json
@@ -40,9 +44,10 @@ def read_mtl(path):
     return colors
 
 
-def read_obj(path):
-    """Triangles per material, as lists of vertex positions (quads and polygons fanned)."""
-    positions, faces, material = [], {}, None
+def read_obj(path, glass_object=None):
+    """Triangles per material, as lists of vertex positions (quads and polygons fanned); those of
+    object `glass_object` under the material name "glass"."""
+    positions, faces, material, in_glass = [], {}, None, False
     with open(path) as f:
         for line in f:
             words = line.split()
@@ -50,6 +55,8 @@ def read_obj(path):
                 continue
             if words[0] == "v":
                 positions.append(tuple(float(w) for w in words[1:4]))
+            elif words[0] == "o":
+                in_glass = words[1:2] == [glass_object]
             elif words[0] == "usemtl":
                 material = words[1]
             elif words[0] == "f":
@@ -57,7 +64,7 @@ def read_obj(path):
                 corners = [int(w.split("/")[0]) for w in words[1:]]
                 corners = [c - 1 if c > 0 else len(positions) + c for c in corners]
                 for k in range(1, len(corners) - 1):
-                    faces.setdefault(material, []).append(
+                    faces.setdefault("glass" if in_glass else material, []).append(
                         [positions[corners[0]], positions[corners[k]], positions[corners[k + 1]]])
     return faces
 
@@ -117,11 +124,11 @@ def add_accessor(blob, views, accessors, values, kind, fmt):
 
 def main():
     options = sys.argv[4:]
-    if len(sys.argv) < 4 or len(options) > 1 or any(o not in ("--lambertian", "--textured") for o in options):
+    if len(sys.argv) < 4 or len(options) > 1 or any(o not in ("--lambertian", "--textured", "--glass") for o in options):
         sys.exit(__doc__.strip().splitlines()[-1])
     obj, mtl, out = sys.argv[1:4]
-    lambertian, textured = "--lambertian" in options, "--textured" in options
-    colors, faces = read_mtl(mtl), read_obj(obj)
+    lambertian, textured, glass = "--lambertian" in options, "--textured" in options, "--glass" in options
+    colors, faces = read_mtl(mtl), read_obj(obj, "tall_block" if glass else None)
     blob, views, accessors, primitives, materials = bytearray(), [], [], [], []
     for name, triangles in faces.items():
         vertices = [p for t in triangles for p in t]
@@ -130,6 +137,9 @@ def main():
             "baseColorFactor": colors.get(name, [1.0, 1.0, 1.0]) + [1.0], "metallicFactor": 0.0, "roughnessFactor": 1.0}}
         if lambertian:
             material["extensions"] = {"KHR_materials_specular": {"specularFactor": 0.0}}
+        if name == "glass":
+            material["pbrMetallicRoughness"]["roughnessFactor"] = 0.0
+            material["extensions"] = {"KHR_materials_transmission": {"transmissionFactor": 1.0}}
         if textured:
             normals, tangents, uvs = [], [], []
             for t in triangles:
@@ -152,7 +162,8 @@ def main():
     # -z, so half a turn about y), 37 degrees vertical.
     gltf = {
         "asset": {"version": "2.0", "generator": "radiant bench/cornell_obj_to_gltf.py"},
-        "extensionsUsed": ["KHR_lights_punctual"] + (["KHR_materials_specular"] if lambertian else []),
+        "extensionsUsed": ["KHR_lights_punctual"] + (["KHR_materials_specular"] if lambertian else [])
+                          + (["KHR_materials_transmission"] if glass else []),
         "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point", "intensity": 100000.0}]}},
         "scene": 0,
         "scenes": [{"nodes": [0, 1, 2]}],

@@ -24,13 +24,16 @@ attenuation 0 0 1
 file cornell_box.obj
 SCENE
 # The same box as glTF (bench/cornell_obj_to_gltf.py): the general metallic-roughness model
-# (metallic 0, roughness 1), the same made exactly Lambertian (specularFactor 0), and the general
-# model textured (base colour, roughness and normal map; not the tutorial's image any more).
+# (metallic 0, roughness 1), the same made exactly Lambertian (specularFactor 0), the general
+# model textured (base colour, roughness and normal map), and with a glass tall block (the last
+# two are not the tutorial's image any more).
 python3 bench/cornell_obj_to_gltf.py "$work/cornell_box.obj" "$work/cornell_box.mtl" "$work/cornell.gltf"
 python3 bench/cornell_obj_to_gltf.py "$work/cornell_box.obj" "$work/cornell_box.mtl" "$work/cornell-lambertian.gltf" --lambertian
 python3 bench/cornell_obj_to_gltf.py "$work/cornell_box.obj" "$work/cornell_box.mtl" "$work/cornell-textured.gltf" --textured
+python3 bench/cornell_obj_to_gltf.py "$work/cornell_box.obj" "$work/cornell_box.mtl" "$work/cornell-glass.gltf" --glass
 [[ -f $work/${radiant_scene:-cornell.scene} ]] ||
-  { echo "--scene: one of cornell.scene, cornell.gltf, cornell-lambertian.gltf, cornell-textured.gltf, not ${radiant_scene:-}" >&2
+  { echo "--scene: one of cornell.scene, cornell.gltf, cornell-lambertian.gltf, cornell-textured.gltf," \
+         "cornell-glass.gltf, not ${radiant_scene:-}" >&2
     exit 2; }
 
 # embree_render SIZE SPP OUT.ppm [environment for the process...]

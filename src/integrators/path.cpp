@@ -80,12 +80,18 @@ int hit_light_index(const LightTable& lights, const HitId& id) {
 }
 
 // One light sample's contribution (sample_one_light leaves it before the path's throughput,
-// advance scales it). With opaque shadows its shadow ray is left to the caller (`traces`), who
-// may trace it with others: the contribution is then `unblocked` or `blocked` by its answer.
-// Otherwise `unblocked` is final.
+// advance scales it). Its shadow ray is left to the caller (`traces`), who may trace it with
+// others (trace_shadow_rays). With opaque shadows the contribution is then `unblocked` or
+// `blocked` by the ray's answer; with see-through occluders it is `unblocked` times the light
+// let through past them (transmittance_past, walking on towards `target`). Without `traces`,
+// `unblocked` is final.
 struct LightSampleResult {
   color3 unblocked, blocked;
   Ray shadow_ray;
+  // See-through occluders only: where the shadow ray ends (shadow_target), and the vertex's
+  // texture footprint scale, for the occluders' textures.
+  vec3 target;
+  float footprint_scale;
   bool traces = false;
 };
 
@@ -141,21 +147,21 @@ template <uint32_t E>
   float select_pdf = choice.probability;
 
   // The contribution for the shadow ray's transmittance `t`; with opaque shadows both answers
-  // are formed now, so that the caller's choice is the value the transmittance would give.
+  // are formed now, so that the caller's choice is the value the transmittance would give. Past
+  // see-through occluders the caller multiplies the unblocked one by what they let through.
   // `direction` by reference: by value, it came in registers, and the call stored it and read
   // it back as an 8-byte block across two stores, which the CPU cannot forward (a third of the
   // call's time).
   auto finish = [&](const vec3& direction, float distance, auto contribution) {
-    if (shadows_are_opaque<E>(ctx)) {
-      counts.shadow++;
-      out.unblocked = contribution(color3{1, 1, 1});
+    out.unblocked = contribution(color3{1, 1, 1});
+    if (!enabled<E>(ctx.effects, effect_shadows)) return;
+    counts.shadow++;
+    if (shadows_are_opaque<E>(ctx))
       out.blocked = contribution(color3{0, 0, 0});
-      set_shadow_ray(out.shadow_ray, hit, direction, distance);
-      out.traces = true;
-      return;
-    }
-    out.unblocked = contribution(shadow_transmittance<E>(ctx, hit, direction, distance, false,
-                                                         texture_footprint_scale(sample.index), counts));
+    else
+      out.target = shadow_target(hit, direction, distance), out.footprint_scale = texture_footprint_scale(sample.index);
+    set_shadow_ray(out.shadow_ray, hit, direction, distance);
+    out.traces = true;
   };
 
   if (index < lights.delta_lights.size()) {
@@ -481,6 +487,14 @@ struct PathVariant {
     path.max_depth = ctx.max_depth;
   }
 
+  // A light sample's contribution past see-through occluders, its shadow ray's first segment
+  // traced to `first` (invalid: nothing in between).
+  static color3 light_past(const RenderContext& ctx, const LightSampleResult& light, const HitId& first,
+                           RayCounts& counts) {
+    return light.unblocked *
+           transmittance_past<E>(ctx, light.shadow_ray, first, light.target, false, light.footprint_scale, counts);
+  }
+
   // One path at a time (its sub-paths one after another, summed in order, each shading the first
   // vertex itself): the reference the batch must match.
   static color3 run(const RenderContext& ctx, const Ray& camera_ray, const SampleContext& sample, RayCounts& counts,
@@ -496,7 +510,10 @@ struct PathVariant {
       HitId id = first;
       for (;;) {
         bool goes_on = advance<false>(ctx, path, id, nullptr, scratch, nullptr, light, counts);
-        if (light.traces) path.radiance += is_occluded(*ctx.accel, light.shadow_ray) ? light.blocked : light.unblocked;
+        if (light.traces)
+          path.radiance += shadows_are_opaque<E>(ctx)
+                               ? (is_occluded(*ctx.accel, light.shadow_ray) ? light.blocked : light.unblocked)
+                               : light_past(ctx, light, intersect_nearest(*ctx.accel, light.shadow_ray), counts);
         if (!goes_on) break;
         ++(counts.*path.ray_kind);
         id = intersect_nearest(*ctx.accel, path.ray);
@@ -536,9 +553,11 @@ struct PathVariant {
     std::optional<BsdfMaterial> resolved_bsdf;  // a textured candidate's (resolve_lane_vertex)
   };
 
-  // Whether this variant can shade vertices in the surface lanes: no surface is seen through.
-  // Textured variants resolve each candidate's material at its hit first (resolve_lane_vertex).
-  static constexpr bool surface_lanes_compiled = LightSampling && !(E & effect_group_transparency);
+  // Whether this variant can shade vertices in the surface lanes. Textured variants resolve each
+  // candidate's material at its hit first (resolve_lane_vertex); where surfaces are seen
+  // through, the lanes take the opaque ones and the batch walks their shadow rays past
+  // see-through occluders (light_past).
+  static constexpr bool surface_lanes_compiled = LightSampling;
 
   // Gathers the stage's vertices that the surface lanes can shade (surface_lanes.h) and shades
   // them: a live path at a hit of a mesh's triangle, a sphere or a plane, whose material is a lane material,
@@ -562,6 +581,8 @@ struct PathVariant {
       if (!id.valid() || depth >= path.max_depth || (path.first_hit && depth == 0) ||
           !(depth > 0 || path.gathers_first_vertex) || !drawn.has(bsdf_direction))
         continue;
+      // Inside an absorbing volume the segment's absorption comes first (advance).
+      if (enabled<E>(ctx.effects, effect_absorption) && path.medium >= 0) continue;
       // A mesh's triangle, a sphere or a plane.
       const MeshDesc* mesh = id.instance >= 0 ? &scene.meshes[scene.instances[id.instance].mesh] : nullptr;
       const ShapeDesc* shape = mesh ? nullptr : &scene.shapes[id.shape];
@@ -761,6 +782,10 @@ struct PathVariant {
       light.shadow_ray.origin = {l.shadow_ox[i], l.shadow_oy[i], l.shadow_oz[i]};
       light.shadow_ray.direction = {l.shadow_dx[i], l.shadow_dy[i], l.shadow_dz[i]};
       light.shadow_ray.tmax = l.shadow_infinite[i] ? std::numeric_limits<float>::infinity() : 1 - 1e-4f;
+      if (!shadows_are_opaque<E>(ctx)) {
+        light.target = {l.shadow_tx[i], l.shadow_ty[i], l.shadow_tz[i]};
+        light.footprint_scale = texture_footprint_scale((path.depth == 0 ? *path.sample : path.own).index);
+      }
     } else {
       path.radiance += throughput * color3{};
     }
@@ -919,7 +944,7 @@ struct PathVariant {
       if (LightSampling && ctx.lights->sampler == LightSampler::bvh) choose_lights_ahead(ctx, workspace, live_count);
       bool in_lanes = false;
       if constexpr (surface_lanes_compiled && !SharesFirstVertex) {
-        in_lanes = shadows_are_opaque<E>(ctx);
+        in_lanes = enabled<E>(ctx.effects, effect_shadows);  // the lanes' light samples always trace
         if (in_lanes) shade_in_surface_lanes(ctx, workspace, live_count);
       }
       for (int k = 0; k < live_count; ++k) {
@@ -939,10 +964,18 @@ struct PathVariant {
       }
       lobe_choices = std::any_of(drawn, drawn + live_count, [](const VertexDraws& v) { return v.lobe_choice_used; });
       if (first_stage) first_lobe_choices = lobe_choices;
-      occluded_many(*ctx.accel, rays, shadow_count, occluded, RayCoherence::incoherent);
-      for (int k = 0; k < shadow_count; ++k) {
-        const LightSampleResult& light = lights[shadowed[k]];
-        paths[shadowed[k]].radiance += occluded[k] ? light.blocked : light.unblocked;
+      if (!(E & effect_group_transparency) || shadows_are_opaque<E>(ctx)) {
+        occluded_many(*ctx.accel, rays, shadow_count, occluded, RayCoherence::incoherent);
+        for (int k = 0; k < shadow_count; ++k) {
+          const LightSampleResult& light = lights[shadowed[k]];
+          paths[shadowed[k]].radiance += occluded[k] ? light.blocked : light.unblocked;
+        }
+      } else {
+        // The first segments together; the walks past see-through occluders one at a time.
+        // (The stage's hits have all been read.)
+        intersect_nearest_many(*ctx.accel, rays, shadow_count, hits, RayCoherence::incoherent);
+        for (int k = 0; k < shadow_count; ++k)
+          paths[shadowed[k]].radiance += light_past(ctx, lights[shadowed[k]], hits[k], counts);
       }
       for (int k = 0; k < next_count; ++k) {
         PathState& path = paths[live[k]];

@@ -187,11 +187,12 @@ struct GlossyValue {
 
 // A light sample's outputs: whether it lights the point, its contribution through the
 // throughput, and its shadow ray (as set_shadow_ray: spawn_ray_to towards the light, or with
-// `MayBeInfinite` and an infinite distance, spawn_ray along the direction).
+// `MayBeInfinite` and an infinite distance, spawn_ray along the direction) with the point it
+// ends at (shadow_target's, for a walk past see-through occluders; any value when infinite).
 struct LightOutputs {
   int32_t lit;
   color3 contribution;
-  vec3 shadow_origin, shadow_direction;
+  vec3 shadow_origin, shadow_direction, shadow_target;
   int32_t infinite = 0;
 };
 template <bool MayBeInfinite = false>
@@ -201,6 +202,7 @@ template <bool MayBeInfinite = false>
   o.lit = light.lit;
   o.contribution = color3{l.throughput_r[i], l.throughput_g[i], l.throughput_b[i]} * light.contribution;
   vec3 target = point + light.direction * light.distance;
+  o.shadow_target = target;
   if constexpr (MayBeInfinite) {
     bool infinite = !(light.distance <= largest_float);
     o.shadow_origin = offset_lane(point, error, geometric_normal, lane::select_bits(infinite, light.direction, target - point));
@@ -214,13 +216,15 @@ template <bool MayBeInfinite = false>
 }
 [[gnu::always_inline]] inline LightOutputs stored_light_outputs(const SurfaceLanes& l, int i) {
   return {l.lit[i], {l.light_r[i], l.light_g[i], l.light_b[i]}, {l.shadow_ox[i], l.shadow_oy[i], l.shadow_oz[i]},
-          {l.shadow_dx[i], l.shadow_dy[i], l.shadow_dz[i]}, l.shadow_infinite[i]};
+          {l.shadow_dx[i], l.shadow_dy[i], l.shadow_dz[i]}, {l.shadow_tx[i], l.shadow_ty[i], l.shadow_tz[i]},
+          l.shadow_infinite[i]};
 }
 [[gnu::always_inline]] inline void store_light_outputs(SurfaceLanes& l, int i, const LightOutputs& o) {
   l.lit[i] = o.lit;
   l.light_r[i] = o.contribution.x, l.light_g[i] = o.contribution.y, l.light_b[i] = o.contribution.z;
   l.shadow_ox[i] = o.shadow_origin.x, l.shadow_oy[i] = o.shadow_origin.y, l.shadow_oz[i] = o.shadow_origin.z;
   l.shadow_dx[i] = o.shadow_direction.x, l.shadow_dy[i] = o.shadow_direction.y, l.shadow_dz[i] = o.shadow_direction.z;
+  l.shadow_tx[i] = o.shadow_target.x, l.shadow_ty[i] = o.shadow_target.y, l.shadow_tz[i] = o.shadow_target.z;
   l.shadow_infinite[i] = o.infinite;
 }
 // Where `replaces`, the outputs `o` of a later light loop; elsewhere what the lane had. Stored
@@ -231,6 +235,7 @@ template <bool MayBeInfinite = false>
   o.contribution = select(replaces, o.contribution, kept.contribution);
   o.shadow_origin = select(replaces, o.shadow_origin, kept.shadow_origin);
   o.shadow_direction = select(replaces, o.shadow_direction, kept.shadow_direction);
+  o.shadow_target = select(replaces, o.shadow_target, kept.shadow_target);
   o.infinite = replaces ? o.infinite : kept.infinite;
   store_light_outputs(l, i, o);
 }

@@ -1,5 +1,5 @@
 // A batch's commonest path vertices shaded across SIMD lanes: a hit of a mesh's triangle, a sphere
-// or a plane, lit through opaque shadows by one point, glTF spot or directional light, one
+// or a plane, lit (through a shadow ray the caller traces) by one point, glTF spot or directional light, one
 // emitting triangle or the environment, with a Lambert material, or (`glossy`) a
 // metallic-roughness one in the case metallic_roughness_lane.h takes.
 // The batched path tracer (integrators/path.cpp) gathers such vertices of a stage into these
@@ -97,7 +97,8 @@ struct SurfaceLanes {
   // shading normal facing the ray (the path's previous_*); `scatters`, and where it does the
   // next ray (origin, direction wi), its pdf and the throughput's weight; `lit`, and where it is the shadow ray
   // (origin, direction; tmax 1 - 1e-4, or infinite where `shadow_infinite`: the sun or the
-  // environment) and the light's contribution through the throughput.
+  // environment), where it ends (shadow_target's; not set for an infinite one) and the light's
+  // contribution through the throughput.
   alignas(32) int32_t fallback[stride], scatters[stride], lit[stride];
   alignas(32) float px[stride], py[stride], pz[stride];
   alignas(32) float nx[stride], ny[stride], nz[stride];
@@ -107,6 +108,7 @@ struct SurfaceLanes {
   alignas(32) float weight_r[stride], weight_g[stride], weight_b[stride];
   alignas(32) float shadow_ox[stride], shadow_oy[stride], shadow_oz[stride];
   alignas(32) float shadow_dx[stride], shadow_dy[stride], shadow_dz[stride];
+  alignas(32) float shadow_tx[stride], shadow_ty[stride], shadow_tz[stride];
   alignas(32) int32_t shadow_infinite[stride];
   alignas(32) float light_r[stride], light_g[stride], light_b[stride];
   // Between the kernel's loops: each hit's geometric normal, error bound, lobe normal and

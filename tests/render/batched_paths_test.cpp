@@ -116,7 +116,7 @@ void require_same_render(const SceneDesc& scene, RenderOptions o, bool packets =
 // zero, a smooth metal, the emitting panel itself, a classic spot (a power of the cosine).
 // Scaled down by `scale`, every triangle's
 // normal gets a squared length below float's normal range, and every lane falls back. Nothing in
-// it is seen through or textured, so the render's variant compiles the lanes.
+// it is seen through or textured (see_through_occluders and textured_lanes_room add those).
 SceneDesc surface_lanes_room(float scale, bool shapes = false) {
   SceneDesc scene;
   int wall = add_diffuse(scene, {0.7f, 0.6f, 0.5f});
@@ -315,6 +315,61 @@ TEST_CASE("batched paths: textured vertices shaded in SIMD lanes render what one
   o.width = 24, o.height = 18, o.spp = 4, o.mode = RenderMode::path;
   o.effects = "-normal-maps";
   require_same_render(scene, o);
+}
+
+// What a lanes room gains to be seen through: a pane that lets 60% of the light through
+// unbent (kt, ior 1) under the first point light, a half-transparent card, and a glass box sunk
+// into the floor with an absorbing volume, so that paths inside it reach the floor. Shadow rays
+// then walk past occluders instead of asking one occlusion query, and the lanes must leave a
+// path inside the volume to advance() (its segment's absorption comes first). With `textured`,
+// the card's opacity comes from its base colour texture's alpha, a pattern fine enough that the
+// mip level a shadow ray's walk reads at it depends on the vertex's texture footprint.
+void add_see_through_occluders(SceneDesc& scene, bool textured) {
+  MaterialDesc pane;
+  pane.kd = {0.05f, 0.05f, 0.05f}, pane.kt = {0.6f, 0.5f, 0.4f}, pane.ior = 1;
+  add_quad(scene, {1, 1.8f, 1}, {1, 1.8f, 3}, {3, 1.8f, 3}, {3, 1.8f, 1}, add_material(scene, pane));  // facing up
+  MaterialDesc card;
+  card.model = MaterialModel::metallic_roughness;
+  card.base_color = {0.2f, 0.8f, 0.3f}, card.metallic = 0, card.alpha = 0.5f, card.alpha_mode = AlphaMode::blend;
+  if (textured) {
+    ImageDesc image;
+    image.name = "see-through", image.width = 8, image.height = 8, image.channels = 4;
+    for (int texel = 0; texel < 64; ++texel)
+      for (int c = 0; c < 4; ++c) image.texels8.push_back(uint8_t((texel * 37 + c * 91) % 256));
+    scene.images.push_back(image);
+    TextureDesc texture;
+    texture.image = int(scene.images.size()) - 1;
+    scene.textures.push_back(texture);
+    card.base_color_texture.texture = int(scene.textures.size()) - 1;
+    card.alpha = 0.9f;
+  }
+  add_quad(scene, {-0.5f, 0, 0.5f}, {1, 0, 0.5f}, {1, 2, 0.5f}, {-0.5f, 2, 0.5f}, add_material(scene, card));
+  if (textured) scene.meshes.back().texcoords0 = {{0, 0}, {0, 6}, {6, 6}, {6, 0}};
+  MaterialDesc glass;
+  glass.model = MaterialModel::metallic_roughness;
+  glass.metallic = 0, glass.roughness = 0, glass.transmission = 1;
+  glass.thickness = 1, glass.attenuation_distance = 1.5f, glass.attenuation_color = {0.9f, 0.6f, 0.3f};
+  add_box(scene, {1.5f, -0.5f, -0.5f}, {2.8f, 1, 0.5f}, add_material(scene, glass));
+}
+
+TEST_CASE("batched paths: the opaque vertices of a scene that is seen through are shaded in SIMD lanes too") {
+  for (bool textured : {false, true}) {
+    SceneDesc scene = textured ? textured_lanes_room() : surface_lanes_room(1);
+    add_see_through_occluders(scene, textured);
+    for (LightSampler light_sampler : {LightSampler::power, LightSampler::bvh}) {
+      CAPTURE(textured);
+      CAPTURE(int(light_sampler));
+      RenderOptions o;
+      o.width = 30, o.height = 22, o.spp = 6, o.mode = RenderMode::path, o.max_depth = 8;
+      o.light_sampler = light_sampler, o.texture_filter = TextureFilterMode::trilinear;
+      RenderResult result = render_scene(scene, o);
+      uint32_t see_through = effect_transparent_shadows | effect_refraction | effect_alpha | effect_absorption;
+      CHECK((result.settings.effects & see_through) == see_through);
+      CHECK(result.stats.rays.shadow > 1000);
+      CHECK(result.stats.rays.refraction > 100);
+      require_same_render(scene, o);
+    }
+  }
 }
 
 TEST_CASE("batched paths: the glTF Cornell box renders the same in batches, path, naive and Whitted") {
