@@ -578,8 +578,10 @@ struct PathVariant {
       const HitId& id = w.hits[k];
       VertexDraws& drawn = w.drawn[k];
       int depth = path.depth;
-      if (!id.valid() || depth >= path.max_depth || (path.first_hit && depth == 0) ||
-          !(depth > 0 || path.gathers_first_vertex) || !drawn.has(bsdf_direction))
+      // With sub-paths (ctx.split > 1) a camera sample's first vertex is shaded once for all of
+      // them (SharedFirstVertex), one path at a time.
+      if (!id.valid() || depth >= path.max_depth || (depth == 0 && (path.first_hit || ctx.split > 1)) ||
+          !drawn.has(bsdf_direction))
         continue;
       // Inside an absorbing volume the segment's absorption comes first (advance).
       if (enabled<E>(ctx.effects, effect_absorption) && path.medium >= 0) continue;
@@ -943,8 +945,9 @@ struct PathVariant {
       draw_ahead(ctx, workspace, live_count);
       if (LightSampling && ctx.lights->sampler == LightSampler::bvh) choose_lights_ahead(ctx, workspace, live_count);
       bool in_lanes = false;
-      if constexpr (surface_lanes_compiled && !SharesFirstVertex) {
-        in_lanes = enabled<E>(ctx.effects, effect_shadows);  // the lanes' light samples always trace
+      if constexpr (surface_lanes_compiled) {
+        // The lanes' light samples always trace. A first stage of sub-paths is all first vertices.
+        in_lanes = enabled<E>(ctx.effects, effect_shadows) && !(SharesFirstVertex && first_stage);
         if (in_lanes) shade_in_surface_lanes(ctx, workspace, live_count);
       }
       for (int k = 0; k < live_count; ++k) {
