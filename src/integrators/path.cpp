@@ -561,16 +561,16 @@ struct PathVariant {
 
   // Gathers the stage's vertices that the surface lanes can shade (surface_lanes.h) and shades
   // them: a live path at a hit of a mesh's triangle, a sphere or a plane, whose material is a lane material,
-  // which chooses a point, glTF spot or directional light, an emitting triangle, or the
-  // environment. Its light is chosen, a triangle's point drawn and a glossy material's lobe choice
-  // drawn here, as the one-path code would.
+  // which chooses a point, glTF spot or directional light, an emitting triangle or sphere, or
+  // the environment. Its light is chosen, a triangle's point drawn and a glossy material's lobe
+  // choice drawn here, as the one-path code would.
   [[gnu::noinline]] static void shade_in_surface_lanes(const RenderContext& ctx, BatchWorkspace& w, int live_count) {
     using LaneModel = RenderContext::LaneModel;
     const SceneDesc& scene = *ctx.scene;
     const SceneAccel& accel = *ctx.accel;
     const LightTable& lights = *ctx.lights;
     for (SurfaceLanes* set : {&w.lambert, &w.glossy})
-      set->count = 0, set->any_area = set->any_shaped = set->any_environment = false, set->hit_kinds = 0;
+      set->count = 0, set->any_area = set->any_shaped = set->any_drawn = false, set->hit_kinds = 0;
     w.glossy.glossy = true;
     for (int k = 0; k < live_count; ++k) {
       w.lane_of[k] = -1;
@@ -608,9 +608,9 @@ struct PathVariant {
         select_pdf = lights.selection.pmf[slot];
       }
       // A point light, a glTF spot (a smooth cone, not a classic spot's power of the cosine), a
-      // directional light, an emitting triangle (not a sphere), or the environment.
+      // directional light, an emitting triangle or sphere, or the environment.
       const LightDesc* point = nullptr;
-      const AreaLight* triangle = nullptr;
+      const AreaLight* area = nullptr;
       if (slot < lights.delta_lights.size()) {
         point = &scene.lights[lights.delta_lights[slot]];
         bool cone = point->kind == LightKind::spot && point->use_cone;
@@ -618,8 +618,8 @@ struct PathVariant {
             !enabled<E>(ctx.effects, effect_direct_delta))
           continue;
       } else if (slot < lights.environment_slot()) {
-        triangle = &lights.area_lights[slot - lights.delta_lights.size()];
-        if (triangle->shape != AreaLightShape::triangle || !enabled<E>(ctx.effects, effect_emission)) continue;
+        area = &lights.area_lights[slot - lights.delta_lights.size()];
+        if (!enabled<E>(ctx.effects, effect_emission)) continue;
       } else if (slot != lights.environment_slot() || !lights.has_environment() ||
                  !enabled<E>(ctx.effects, effect_environment)) {
         continue;
@@ -657,14 +657,22 @@ struct PathVariant {
         color3 albedo = material.lambert()->albedo;
         l.albedo_r[i] = albedo.x, l.albedo_g[i] = albedo.y, l.albedo_b[i] = albedo.z;
       }
-      l.area[i] = triangle != nullptr;
-      l.environment[i] = !point && !triangle;
+      bool triangle = area && area->shape == AreaLightShape::triangle;
+      l.area[i] = triangle;
+      l.drawn[i] = !point && !triangle;
       if (point) {
         set_lane_delta_light(l, i, *point);
       } else if (!triangle) {
-        l.any_environment = true;
-        l.lights = &lights;
-        l.u_environment[i] = sample_1d(sample, dimension(depth, environment_choice));
+        // The environment or a sphere: drawn one lane at a time by the kernel.
+        l.any_drawn = true;
+        l.sphere[i] = area;
+        if (area) {
+          color3 emission = area_light_emission<E>(ctx, *area, {});  // a sphere's is not textured
+          l.drawn_r[i] = emission.x, l.drawn_g[i] = emission.y, l.drawn_b[i] = emission.z;
+        } else {
+          l.lights = &lights;
+          l.u_environment[i] = sample_1d(sample, dimension(depth, environment_choice));
+        }
         vec2 u = drawn.has(light_point) ? drawn.light_point : sample_2d(sample, dimension(depth, light_point));
         l.u_point_x[i] = u.x, l.u_point_y[i] = u.y;
         // A point light's fields the kernel also reads (its results are discarded): finite values.
@@ -674,17 +682,17 @@ struct PathVariant {
         l.shaped[i] = 0;
       } else {
         l.any_area = true;
-        l.light_x[i] = triangle->p0.x, l.light_y[i] = triangle->p0.y, l.light_z[i] = triangle->p0.z;
-        l.light1_x[i] = triangle->p1.x, l.light1_y[i] = triangle->p1.y, l.light1_z[i] = triangle->p1.z;
-        l.light2_x[i] = triangle->p2.x, l.light2_y[i] = triangle->p2.y, l.light2_z[i] = triangle->p2.z;
-        l.light_nx[i] = triangle->normal.x, l.light_ny[i] = triangle->normal.y, l.light_nz[i] = triangle->normal.z;
-        l.light_area[i] = triangle->area;
-        l.two_sided[i] = triangle->two_sided;
+        l.light_x[i] = area->p0.x, l.light_y[i] = area->p0.y, l.light_z[i] = area->p0.z;
+        l.light1_x[i] = area->p1.x, l.light1_y[i] = area->p1.y, l.light1_z[i] = area->p1.z;
+        l.light2_x[i] = area->p2.x, l.light2_y[i] = area->p2.y, l.light2_z[i] = area->p2.z;
+        l.light_nx[i] = area->normal.x, l.light_ny[i] = area->normal.y, l.light_nz[i] = area->normal.z;
+        l.light_area[i] = area->area;
+        l.two_sided[i] = area->two_sided;
         vec2 u = drawn.has(light_point) ? drawn.light_point : sample_2d(sample, dimension(depth, light_point));
         l.u_point_x[i] = u.x, l.u_point_y[i] = u.y;
         // The emission at the point the lane draws (sample_area_light's barycentrics depend on u
         // alone): an emission texture is read there, as sample_one_light reads it.
-        color3 emission = area_light_emission<E>(ctx, *triangle, sample_uniform_triangle(u));
+        color3 emission = area_light_emission<E>(ctx, *area, sample_uniform_triangle(u));
         l.intensity_r[i] = emission.x, l.intensity_g[i] = emission.y, l.intensity_b[i] = emission.z;
         // A point light's fields the kernel also reads (its results are discarded): finite values.
         l.kc[i] = 1, l.kl[i] = l.kq[i] = 0;

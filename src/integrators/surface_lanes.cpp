@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "accel/ray.h"
+#include "lights/area_light.h"
 #include "lights/environment_light.h"
 #include "materials/bsdf_models.h"
 #include "materials/metallic_roughness_lane.h"
@@ -466,27 +467,40 @@ template <bool Glossy>
   if constexpr (Glossy) l.fallback[i] |= (!light.in_range) & area;
 }
 
-// The environment's direction, pdf and radiance where a lane samples it (sample_one_light):
-// one lane at a time, in the library's functions (a search of the map's distribution, the
-// sphere's trigonometry, the map's texels).
-void sample_environment_lanes(SurfaceLanes& l) {
+// The direction, pdf, distance and radiance of the lights the lanes draw one lane at a time
+// (sample_one_light): the environment (a search of the map's distribution, the sphere's
+// trigonometry, the map's texels) and emitting spheres (sample_area_light's cone), in the
+// library's own functions.
+void draw_lane_lights(SurfaceLanes& l) {
   for (int i = 0; i < l.count; ++i) {
-    if (!l.environment[i]) continue;
+    if (!l.drawn[i]) continue;
+    vec3 point = {l.px[i], l.py[i], l.pz[i]};
+    vec2 u = {l.u_point_x[i], l.u_point_y[i]};
+    if (const AreaLight* sphere = l.sphere[i]) {
+      AreaLightSample s;
+      bool ok = sample_area_light(*sphere, point, u, s) && area_light_emits(*sphere, s.normal, -s.direction);
+      l.drawn_ok[i] = ok;
+      s.direction = ok ? s.direction : vec3{0, 0, 1}, s.pdf = ok ? s.pdf : 1, s.distance = ok ? s.distance : 1;
+      l.drawn_x[i] = s.direction.x, l.drawn_y[i] = s.direction.y, l.drawn_z[i] = s.direction.z;
+      l.drawn_pdf[i] = s.pdf, l.drawn_distance[i] = s.distance * (1 - 1e-4f);
+      continue;
+    }
     vec3 wi;
-    float pdf = sample_environment(*l.lights, {l.nx[i], l.ny[i], l.nz[i]}, l.u_environment[i],
-                                   {l.u_point_x[i], l.u_point_y[i]}, wi);
+    float pdf = sample_environment(*l.lights, {l.nx[i], l.ny[i], l.nz[i]}, l.u_environment[i], u, wi);
     color3 radiance = pdf > 0 ? eval_environment(*l.lights, wi) : color3{};
-    l.environment_x[i] = wi.x, l.environment_y[i] = wi.y, l.environment_z[i] = wi.z, l.environment_pdf[i] = pdf;
-    l.environment_r[i] = radiance.x, l.environment_g[i] = radiance.y, l.environment_b[i] = radiance.z;
+    l.drawn_ok[i] = pdf > 0;
+    l.drawn_x[i] = wi.x, l.drawn_y[i] = wi.y, l.drawn_z[i] = wi.z, l.drawn_pdf[i] = pdf;
+    l.drawn_distance[i] = std::numeric_limits<float>::infinity();
+    l.drawn_r[i] = radiance.x, l.drawn_g[i] = radiance.y, l.drawn_b[i] = radiance.z;
   }
 }
 
-// A lane whose light is the environment, once sample_environment_lanes drew it: the BSDF there
-// and MIS against its sampling, replacing the first loop's sample.
+// A lane whose light draw_lane_lights drew: the BSDF there and MIS against its sampling,
+// replacing the first loop's sample.
 template <bool Glossy>
-[[gnu::always_inline]] inline void environment_lane(SurfaceLanes& l, int i) {
+[[gnu::always_inline]] inline void drawn_light_lane(SurfaceLanes& l, int i) {
   vec3 point = {l.px[i], l.py[i], l.pz[i]};
-  vec3 wi = {l.environment_x[i], l.environment_y[i], l.environment_z[i]};
+  vec3 wi = {l.drawn_x[i], l.drawn_y[i], l.drawn_z[i]};
   LaneBsdfValue bsdf;
   if constexpr (Glossy) {
     bsdf = GlossyValue<true>{glossy_material(l, i), stored_glossy_lobes(l, i)}(wi);
@@ -494,22 +508,22 @@ template <bool Glossy>
     color3 albedo = {l.albedo_r[i], l.albedo_g[i], l.albedo_b[i]};
     bsdf = LambertValue{{l.lobe_nx[i], l.lobe_ny[i], l.lobe_nz[i]}, albedo, l.valid[i] != 0}(wi);
   }
-  float light_pdf = l.environment_pdf[i];
-  color3 emitted = {l.environment_r[i], l.environment_g[i], l.environment_b[i]};
+  float light_pdf = l.drawn_pdf[i];
+  color3 emitted = {l.drawn_r[i], l.drawn_g[i], l.drawn_b[i]};
   float pdf = l.select_pdf[i] * light_pdf;
   float weight = power_heuristic(pdf, bsdf.pdf);
   LaneLight light;
   light.direction = wi;
-  light.distance = std::numeric_limits<float>::infinity();
-  light.lit = (light_pdf > 0) & !lane::black(emitted) & bsdf.nonzero;
+  light.distance = l.drawn_distance[i];
+  light.lit = (l.drawn_ok[i] != 0) & !lane::black(emitted) & bsdf.nonzero;
   light.contribution = bsdf.f_cos * emitted * color3{1, 1, 1} * (weight / pdf);
   light.in_range = bsdf.in_range;
   float largest = l.error[i];
   LightOutputs o =
       light_outputs<true>(l, i, light, point, {largest, largest, largest}, {l.gnx[i], l.gny[i], l.gnz[i]});
-  bool environment = l.environment[i] != 0;
-  store_light_outputs_where(l, i, environment, o);
-  if constexpr (Glossy) l.fallback[i] |= (!light.in_range) & environment;
+  bool drawn = l.drawn[i] != 0;
+  store_light_outputs_where(l, i, drawn, o);
+  if constexpr (Glossy) l.fallback[i] |= (!light.in_range) & drawn;
 }
 
 // A lane whose light is a shaped delta light (a spot, a range or a directional light), after
@@ -546,9 +560,9 @@ template <bool Glossy, bool AnyArea, int Hits>
   }
   if (l.any_shaped)
     for (int i = 0; i < l.count; ++i) shaped_delta_lane<Glossy>(l, i);
-  if (l.any_environment) {
-    sample_environment_lanes(l);
-    for (int i = 0; i < l.count; ++i) environment_lane<Glossy>(l, i);
+  if (l.any_drawn) {
+    draw_lane_lights(l);
+    for (int i = 0; i < l.count; ++i) drawn_light_lane<Glossy>(l, i);
   }
   if constexpr (AnyArea)
     for (int i = 0; i < l.count; ++i) triangle_lane<Glossy>(l, i);

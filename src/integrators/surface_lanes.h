@@ -1,6 +1,6 @@
 // A batch's commonest path vertices shaded across SIMD lanes: a hit of a mesh's triangle, a sphere
 // or a plane, lit (through a shadow ray the caller traces) by one point, glTF spot or directional light, one
-// emitting triangle or the environment, with a Lambert material, or (`glossy`) a
+// emitting triangle or sphere, or the environment, with a Lambert material, or (`glossy`) a
 // metallic-roughness one in the case metallic_roughness_lane.h takes.
 // The batched path tracer (integrators/path.cpp) gathers such vertices of a stage into these
 // lanes, one set per model, shades them together and scatters the results back; every other
@@ -74,13 +74,18 @@ struct SurfaceLanes {
   alignas(32) int32_t shaped[stride], spot[stride], directional[stride];
   alignas(32) float spot_x[stride], spot_y[stride], spot_z[stride], cos_outer[stride], cone_scale[stride];
   alignas(32) float range[stride];
-  // Where `environment`, the light is the environment (of `lights`, the render's table): its
-  // choice between map and cosine sampling (u_environment) with u_point. The kernel draws its
-  // direction, pdf and radiance (environment_*) one lane at a time, in the library's functions.
-  alignas(32) int32_t environment[stride];
+  // Where `drawn`, the light is sampled one lane at a time, in the library's functions, whose
+  // trigonometry no vector loop reproduces to the bit: the environment (of `lights`, the
+  // render's table; its choice between map and cosine sampling in u_environment, with u_point)
+  // where `sphere` is null, otherwise that emitting sphere (with u_point; its emission in
+  // drawn_r..b). The kernel draws the direction, pdf, distance (infinite for the environment)
+  // and radiance into drawn_*, and `drawn_ok` where sample_one_light would go on.
+  alignas(32) int32_t drawn[stride];
+  const AreaLight* sphere[stride];
   alignas(32) float u_environment[stride];
-  alignas(32) float environment_x[stride], environment_y[stride], environment_z[stride], environment_pdf[stride];
-  alignas(32) float environment_r[stride], environment_g[stride], environment_b[stride];
+  alignas(32) float drawn_x[stride], drawn_y[stride], drawn_z[stride], drawn_pdf[stride], drawn_distance[stride];
+  alignas(32) float drawn_r[stride], drawn_g[stride], drawn_b[stride];
+  alignas(32) int32_t drawn_ok[stride];
   const LightTable* lights = nullptr;
   alignas(32) float select_pdf[stride];
   alignas(32) float cosine_x[stride], cosine_y[stride], cosine_z[stride];
@@ -123,9 +128,9 @@ struct SurfaceLanes {
   int count = 0;
   bool glossy = false;  // the lanes' model: metallic-roughness, or Lambert
   // Set by whoever fills the lanes: whether any lane's light is a triangle, a shaped delta
-  // light or the environment, and which kinds of hit beside untransformed triangles the lanes
+  // light, or drawn (the environment or a sphere), and which kinds of hit beside untransformed triangles the lanes
   // hold. The kernel leaves out what none needs.
-  bool any_area = false, any_shaped = false, any_environment = false;
+  bool any_area = false, any_shaped = false, any_drawn = false;
   static constexpr int transformed_hits = 1, shape_hits = 2;
   int hit_kinds = 0;
 };

@@ -111,7 +111,7 @@ void require_same_render(const SceneDesc& scene, RenderOptions o, bool packets =
 // A room of matte walls, a glTF plastic box and a rough metal panel lit by point lights (one with
 // a range), a glTF spot, the sun, the sky (at full size) and an emitting panel, whose vertices the batch shades in its
 // surface lanes (integrators/surface_lanes.h), one wall with vertex normals, a rotated and a
-// mirrored instance, and with `shapes` a matte and a plastic sphere and a plane for a ceiling,
+// mirrored instance, and with `shapes` a matte, a plastic and an emitting sphere and a plane for a ceiling,
 // beside every vertex the lanes must leave to the one-path code: vertex normals that are all
 // zero, a smooth metal, the emitting panel itself, a classic spot (a power of the cosine).
 // Scaled down by `scale`, every triangle's
@@ -180,6 +180,10 @@ SceneDesc surface_lanes_room(float scale, bool shapes = false) {
   ShapeDesc ceiling;
   ceiling.kind = ShapeKind::plane, ceiling.center = {0, 5, 0}, ceiling.axis = {0, -1, 0}, ceiling.material = wall;
   scene.shapes.push_back(ceiling);
+  MaterialDesc glowing;  // an emitting sphere: a light the lanes draw one lane at a time
+  glowing.kd = {0, 0, 0}, glowing.emission = {4, 3, 2};
+  ball.center = {1.5f, 3.8f, -1}, ball.radius = 0.3f, ball.material = add_material(scene, glowing);
+  scene.shapes.push_back(ball);
   if (!shapes) scene.shapes.clear();
   scene.cameras.push_back(perspective_camera({0, 2, 6}, normalize(vec3{0, -0.25f, -1}), {0, 1, 0}, 70));
   for (ShapeDesc& shape : scene.shapes) shape.center = shape.center * scale, shape.radius *= scale;

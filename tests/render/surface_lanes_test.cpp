@@ -40,7 +40,7 @@ struct LaneCase {
   vec3 direction;
   color3 albedo;
   LightDesc light;         // a point light, unless `area`
-  bool area = false;       // an emitting triangle instead
+  bool area = false;       // an emitting triangle or sphere (by triangle.shape) instead
   const LightTable* environment = nullptr;  // or the environment of this table
   float u_environment = 0;                  // its choice of map or cosine sampling, with u_point
   AreaLight triangle;
@@ -91,12 +91,18 @@ void set_lane(SurfaceLanes& l, int i, const LaneCase& c) {
   l.n2x[i] = c.n2.x, l.n2y[i] = c.n2.y, l.n2z[i] = c.n2.z;
   l.dx[i] = c.direction.x, l.dy[i] = c.direction.y, l.dz[i] = c.direction.z;
   l.albedo_r[i] = c.albedo.x, l.albedo_g[i] = c.albedo.y, l.albedo_b[i] = c.albedo.z;
-  l.area[i] = c.area;
-  l.environment[i] = c.environment != nullptr;
-  if (c.environment) {
-    l.any_environment = true;
-    l.lights = c.environment;
-    l.u_environment[i] = c.u_environment;
+  bool sphere = c.area && c.triangle.shape == AreaLightShape::sphere;
+  l.area[i] = c.area && !sphere;
+  l.drawn[i] = c.environment != nullptr || sphere;
+  l.sphere[i] = sphere ? &c.triangle : nullptr;
+  if (c.environment || sphere) {
+    l.any_drawn = true;
+    if (sphere) {
+      l.drawn_r[i] = c.emission.x, l.drawn_g[i] = c.emission.y, l.drawn_b[i] = c.emission.z;
+    } else {
+      l.lights = c.environment;
+      l.u_environment[i] = c.u_environment;
+    }
     l.u_point_x[i] = c.u_point.x, l.u_point_y[i] = c.u_point.y;
     l.light_x[i] = l.light_y[i] = l.light_z[i] = 0, l.intensity_r[i] = l.intensity_g[i] = l.intensity_b[i] = 0;
     l.kc[i] = 1, l.kl[i] = l.kq[i] = 0;
@@ -311,6 +317,12 @@ std::vector<LaneCase> lane_cases() {
       c.triangle.two_sided = k % 4 == 1;
       c.emission = {4 * next(), 4 * next(), k % 11 == 1 ? 0.0f : 4 * next()};
       c.u_point = {next(), next()};
+      if (k % 9 == 7) {  // an emitting sphere instead: small and seen from outside, or around the point
+        c.triangle.shape = AreaLightShape::sphere;
+        c.triangle.center = c.triangle.p0;
+        c.triangle.radius = k % 18 == 7 ? 0.3f : 10.0f;
+        c.triangle.area = 4 * pi * c.triangle.radius * c.triangle.radius;
+      }
     }
     if (k % 2 == 1) {  // vertex normals, some of them turned against the triangle's
       c.has_normals = true;
@@ -415,7 +427,7 @@ std::vector<LaneCase> transformed(std::vector<LaneCase> cases) {
     // The world-space ray and lights as the untransformed case had them, moved along.
     vec3 moved = transform_point(c.transform, c.p0) - c.p0;
     c.light.position = c.light.position + moved;
-    for (vec3* p : {&c.triangle.p0, &c.triangle.p1, &c.triangle.p2}) *p = *p + moved;
+    for (vec3* p : {&c.triangle.p0, &c.triangle.p1, &c.triangle.p2, &c.triangle.center}) *p = *p + moved;
   }
   return cases;
 }
@@ -455,8 +467,8 @@ std::vector<LaneCase> environment_lit(std::vector<LaneCase> cases, const LightTa
 }  // namespace
 
 TEST_CASE("Lambert lanes: each lane is the one-path vertex to the bit, on every instruction set") {
-  // Point lights and emitting triangles mixed, as in a batch; and point lights alone, which
-  // the kernel shades without its triangle loop.
+  // Point lights, emitting triangles and spheres mixed, as in a batch; and point lights alone,
+  // which the kernel shades without its triangle and drawn lights' loops.
   std::vector<LaneCase> mixed = lane_cases(), points, placed = transformed(mixed), shaped = shapes(mixed);
   std::vector<LaneCase> mapped = given_normals(placed), mapped_shapes = given_normals(shaped);
   for (const LaneCase& c : mixed)
@@ -471,13 +483,15 @@ TEST_CASE("Lambert lanes: each lane is the one-path vertex to the bit, on every 
       for (size_t i = 0; i < cases->size(); ++i) set_lane(*lanes, int(i), (*cases)[i]);
       lanes->count = int(cases->size());
       shade_surface_lanes(*lanes, isa);
-      int lit = 0, scatters = 0, lit_by_triangles = 0, shaped = 0, lit_by_shaped = 0;
+      int lit = 0, scatters = 0, lit_by_triangles = 0, shaped = 0, lit_by_shaped = 0, spheres = 0, lit_by_spheres = 0;
       for (size_t i = 0; i < cases->size(); ++i) {
         CAPTURE(i);
         int unused = 0;
         check_lane(*lanes, int(i), (*cases)[i], unused);
         lit += lanes->lit[i], scatters += lanes->scatters[i];
         lit_by_triangles += lanes->lit[i] && (*cases)[i].area;
+        bool sphere = (*cases)[i].area && (*cases)[i].triangle.shape == AreaLightShape::sphere;
+        spheres += sphere, lit_by_spheres += sphere && lanes->lit[i];
         bool shaped_light = !(*cases)[i].area && lanes->shaped[i];
         shaped += shaped_light, lit_by_shaped += shaped_light && lanes->lit[i];
       }
@@ -491,6 +505,9 @@ TEST_CASE("Lambert lanes: each lane is the one-path vertex to the bit, on every 
       CHECK(scatters < int(cases->size()));
       CHECK(lit_by_triangles > (cases != &points ? 10 : -1));
       CHECK(lit - lit_by_triangles > 10);
+      // Spheres, seen from outside and from within, light some lanes and not others.
+      CHECK(lit_by_spheres > (cases != &points ? 3 : -1));
+      CHECK(spheres - lit_by_spheres > (cases != &points ? 3 : -1));
     }
   }
 }
