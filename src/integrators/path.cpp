@@ -546,9 +546,10 @@ struct PathVariant {
     // A stage's light choices by the BVH (choose_lights_ahead): the points, normals and numbers
     // of the paths that take a light sample, which live path each is, and the choices.
     LightChoiceQueue choices;
-    // A stage's vertices shaded in the surface lanes (shade_in_surface_lanes), a set per model,
-    // and each live path's lane: -1, a Lambert lane, or max_batch_paths + a glossy lane.
-    SurfaceLanes lambert{}, glossy{};  // zeroed: a lane's unused fields are read, never chosen
+    // A stage's vertices shaded in the surface lanes (shade_in_surface_lanes), a set per model
+    // (Lambert, glossy, Phong: the LaneModel less one), and each live path's lane: -1, or its
+    // set times max_batch_paths plus its lane in the set.
+    SurfaceLanes surface[3]{};  // zeroed: a lane's unused fields are read, never chosen
     int lane_of[max_batch_paths];
     std::optional<BsdfMaterial> resolved_bsdf;  // a textured candidate's (resolve_lane_vertex)
   };
@@ -569,9 +570,11 @@ struct PathVariant {
     const SceneDesc& scene = *ctx.scene;
     const SceneAccel& accel = *ctx.accel;
     const LightTable& lights = *ctx.lights;
-    for (SurfaceLanes* set : {&w.lambert, &w.glossy})
-      set->count = 0, set->any_area = set->any_shaped = set->any_drawn = false, set->hit_kinds = 0;
-    w.glossy.glossy = true;
+    for (int set = 0; set < 3; ++set) {
+      SurfaceLanes& l = w.surface[set];
+      l.count = 0, l.any_area = l.any_shaped = l.any_drawn = false, l.hit_kinds = 0;
+      l.model = LaneModel(set + 1);
+    }
     for (int k = 0; k < live_count; ++k) {
       w.lane_of[k] = -1;
       const PathState& path = w.paths[w.live[k]];
@@ -634,10 +637,10 @@ struct PathVariant {
           bsdf_material = &*w.resolved_bsdf;
         }
       }
-      bool glossy = model == LaneModel::glossy;
-      SurfaceLanes& l = glossy ? w.glossy : w.lambert;
+      int set = int(model) - 1;
+      SurfaceLanes& l = w.surface[set];
       int i = l.count++;
-      w.lane_of[k] = glossy ? max_batch_paths + i : i;
+      w.lane_of[k] = set * max_batch_paths + i;
       l.ngx[i] = id.geometric_normal_raw.x, l.ngy[i] = id.geometric_normal_raw.y, l.ngz[i] = id.geometric_normal_raw.z;
       if (mesh)
         set_triangle_hit(l, i, *mesh, accel, id);
@@ -649,9 +652,13 @@ struct PathVariant {
       }
       l.dx[i] = path.ray.direction.x, l.dy[i] = path.ray.direction.y, l.dz[i] = path.ray.direction.z;
       const BsdfMaterial& material = *bsdf_material;
-      if (glossy) {
+      if (model == LaneModel::glossy) {
         set_glossy_material(l, i, *material.metallic_roughness());
         l.u_lobe[i] = glossy_lobe_choice(*material.metallic_roughness(), path, drawn);
+        l.u_x[i] = drawn.direction.x, l.u_y[i] = drawn.direction.y;
+      } else if (model == LaneModel::phong) {
+        set_phong_material(l, i, *material.phong());
+        l.u_lobe[i] = phong_lobe_choice(*material.phong(), path, drawn);
         l.u_x[i] = drawn.direction.x, l.u_y[i] = drawn.direction.y;
       } else {
         color3 albedo = material.lambert()->albedo;
@@ -702,8 +709,8 @@ struct PathVariant {
       l.cosine_x[i] = drawn.cosine.x, l.cosine_y[i] = drawn.cosine.y, l.cosine_z[i] = drawn.cosine.z;
       l.throughput_r[i] = path.throughput.x, l.throughput_g[i] = path.throughput.y, l.throughput_b[i] = path.throughput.z;
     }
-    for (SurfaceLanes* set : {&w.lambert, &w.glossy})
-      if (set->count > 0) shade_surface_lanes(*set);
+    for (SurfaceLanes& set : w.surface)
+      if (set.count > 0) shade_surface_lanes(set);
   }
 
   // A textured render's candidate for the lanes (shade_in_surface_lanes): its material resolved
@@ -773,6 +780,19 @@ struct PathVariant {
   static float glossy_lobe_choice(const MetallicRoughnessParams& p, const PathState& path, VertexDraws& drawn) {
     bool specular = p.metal > 0 || p.plastic * p.specular > 0, diffuse = p.plastic > 0 && max_component(p.base) > 0;
     if (!(specular && diffuse)) return 0.5f;
+    drawn.lobe_choice_used = true;
+    return drawn.has(lobe_choice) ? drawn.lobe_choice : sample_1d(path.own, dimension(path.depth, lobe_choice));
+  }
+
+  static void set_phong_material(SurfaceLanes& l, int i, const PhongWeights& w) {
+    l.albedo_r[i] = w.kd.x, l.albedo_g[i] = w.kd.y, l.albedo_b[i] = w.kd.z;
+    l.ks_r[i] = w.ks.x, l.ks_g[i] = w.ks.y, l.ks_b[i] = w.ks.z;
+    l.exponent[i] = w.exponent, l.p_diffuse[i] = w.p_diffuse, l.p_specular[i] = w.p_glossy;
+  }
+  // The lobe choice a Phong vertex draws (scatter): where its BSDF mixes lobes, which a lane
+  // material's (a glossy lobe, no delta lobe) does when it has a diffuse one too.
+  static float phong_lobe_choice(const PhongWeights& w, const PathState& path, VertexDraws& drawn) {
+    if (!(w.p_diffuse > 0)) return 0.5f;
     drawn.lobe_choice_used = true;
     return drawn.has(lobe_choice) ? drawn.lobe_choice : sample_1d(path.own, dimension(path.depth, lobe_choice));
   }
@@ -932,7 +952,7 @@ struct PathVariant {
     static tbb::enumerable_thread_specific<BatchWorkspace> per_thread;
     BatchWorkspace& workspace = per_thread.local();
     auto& [paths, lights, rays, hits, occluded, live, shadowed, scratch, first_vertex, lanes, cosine_x, cosine_y, cosine_z, drawn,
-           lobe_choices, first_lobe_choices, light_choices, lambert, glossy, lane_of, resolved_bsdf] = workspace;
+           lobe_choices, first_lobe_choices, light_choices, surface, lane_of, resolved_bsdf] = workspace;
     // Without sharing there is one sub-path per camera sample (run_batch): a constant, the
     // loop below is one start per sample. Read from ctx, GCC vectorised it for any split, with
     // run-time alias checks that cost more per camera sample than the start itself.
@@ -961,8 +981,8 @@ struct PathVariant {
       for (int k = 0; k < live_count; ++k) {
         int i = live[k];
         int lane = in_lanes ? lane_of[k] : -1;
-        const SurfaceLanes& set = lane >= max_batch_paths ? glossy : lambert;
-        lane -= lane >= max_batch_paths ? max_batch_paths : 0;
+        const SurfaceLanes& set = surface[lane >= 0 ? lane / max_batch_paths : 0];
+        lane = lane >= 0 ? lane % max_batch_paths : -1;
         bool goes_on = lane >= 0 && !set.fallback[lane]
                            ? finish_surface_lane(ctx, paths[i], set, lane, hits[k], drawn[k], lights[i], counts)
                            : advance<SharesFirstVertex>(ctx, paths[i], hits[k], &drawn[k], scratch, &first_vertex,

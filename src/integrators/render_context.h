@@ -58,7 +58,7 @@ struct RenderContext {
   // Per material: which of the path tracer's surface lanes can shade a vertex on it as it is
   // without textures (integrators/surface_lanes.h, lane_model_of), if any. A textured render
   // asks again at each hit on the materials this lets in.
-  enum class LaneModel : uint8_t { none, lambert, glossy };
+  enum class LaneModel : uint8_t { none, lambert, glossy, phong };
   std::vector<LaneModel> lane_models;
   TextureLookup texture_lookup;  // --texture-filter and its pyramids
   PixelSpread pixel_spread;      // the camera's, for texture footprints (trilinear only)

@@ -186,6 +186,80 @@ struct GlossyValue {
   }
 };
 
+// A Phong lane's lobes (phong_bsdf.cpp, make_phong_lobes: facing_frame without a tangent).
+struct PhongLaneLobes {
+  vec3 normal;  // the frame's z: the shading normal on wo's side
+  vec3 wo;      // local
+  bool valid;
+};
+[[gnu::always_inline]] inline PhongLaneLobes make_phong_lane_lobes(vec3 n, vec3 wo) {
+  PhongLaneLobes lobes;
+  lobes.normal = select(dot(n, wo) < 0, -n, n);
+  lobes.wo = to_local(make_shading_frame(lobes.normal), wo);
+  lobes.valid = (lobes.wo.z > 1e-7f) & lane::finite(lobes.wo);  // a lane material always scatters
+  return lobes;
+}
+[[gnu::always_inline]] inline PhongLaneLobes stored_phong_lobes(const SurfaceLanes& l, int i) {
+  return {{l.lobe_nx[i], l.lobe_ny[i], l.lobe_nz[i]}, {l.wo_x[i], l.wo_y[i], l.wo_z[i]}, l.valid[i] != 0};
+}
+// The cosine phong_lobe raises to the exponent: between local `wi` and the mirror of wo.
+[[gnu::always_inline]] inline float phong_cosine(const PhongLaneLobes& lobes, vec3 wi) {
+  return dot(wi, reflect_local(lobes.wo));
+}
+// A Phong lane's eval_local and pdf_local at a local direction whose lobe power (cos^n,
+// phong_lobe_power) is `power`.
+[[gnu::always_inline]] inline color3 eval_phong_lane(const SurfaceLanes& l, int i, const PhongLaneLobes& lobes,
+                                                     vec3 wi, float power, float& pdf) {
+  bool in = lobes.valid & !(wi.z < 1e-7f);
+  color3 kd = {l.albedo_r[i], l.albedo_g[i], l.albedo_b[i]}, ks = {l.ks_r[i], l.ks_g[i], l.ks_b[i]};
+  float exponent = l.exponent[i], p_diffuse = l.p_diffuse[i], p_glossy = l.p_specular[i];
+  color3 f = kd * inv_pi;
+  f = select(p_glossy > 0, f + ks * ((exponent + 2) / (2 * pi) * power), f);
+  f = f * wi.z;
+  float diffuse_pdf = p_diffuse * wi.z * inv_pi;
+  pdf = p_glossy > 0 ? diffuse_pdf + p_glossy * (exponent + 1) / (2 * pi) * power : diffuse_pdf;
+  pdf = lane::zero_unless(in, pdf);
+  return {lane::zero_unless(in, f.x), lane::zero_unless(in, f.y), lane::zero_unless(in, f.z)};
+}
+// The Phong lobes' value towards the world direction `wi` (Bsdf::eval_framed), the lobe power
+// there worked out ahead (phong_power).
+struct PhongValue {
+  const SurfaceLanes& l;
+  int i;
+  PhongLaneLobes lobes;
+  float power;
+  [[gnu::always_inline]] LaneBsdfValue operator()(vec3 wi) const {
+    float pdf;
+    color3 f = eval_phong_lane(l, i, lobes, to_local(make_shading_frame(lobes.normal), wi), power, pdf);
+    return {f, pdf, !lane::black(f)};
+  }
+};
+// In a light loop's first pass over Phong lanes: records the cosine of the light's direction
+// into `cosine`, for phong_powers to raise; the pass's light sample is discarded.
+struct PhongRecord {
+  PhongLaneLobes lobes;
+  float* cosine;
+  [[gnu::always_inline]] LaneBsdfValue operator()(vec3 wi) const {
+    *cosine = phong_cosine(lobes, to_local(make_shading_frame(lobes.normal), wi));
+    return {{0, 0, 0}, 0, false};
+  }
+};
+
+// The BSDF a lane of model `Model` evaluates towards a light (a Phong lane's power at the light
+// worked out ahead); `WithPdf` where the light's MIS needs the glossy lobes' pdf.
+template <RenderContext::LaneModel Model, bool WithPdf>
+[[gnu::always_inline]] inline auto lane_bsdf(const SurfaceLanes& l, int i) {
+  using LaneModel = RenderContext::LaneModel;
+  if constexpr (Model == LaneModel::glossy) {
+    return GlossyValue<WithPdf>{glossy_material(l, i), stored_glossy_lobes(l, i)};
+  } else if constexpr (Model == LaneModel::phong) {
+    return PhongValue{l, i, stored_phong_lobes(l, i), l.phong_power[i]};
+  } else {
+    return LambertValue{{l.lobe_nx[i], l.lobe_ny[i], l.lobe_nz[i]}, {l.albedo_r[i], l.albedo_g[i], l.albedo_b[i]},
+                        l.valid[i] != 0};
+  }
+}
+
 // A light sample's outputs: whether it lights the point, its contribution through the
 // throughput, and its shadow ray (as set_shadow_ray: spawn_ray_to towards the light, or with
 // `MayBeInfinite` and an infinite distance, spawn_ray along the direction) with the point it
@@ -444,27 +518,63 @@ void sample_glossy_specular(SurfaceLanes& l) {
   store_bounce(l, i, scatters, origin, wi, pdf, weight);
 }
 
+// A Phong lane's first loop: its hit and lobes, and its point light's direction recorded for
+// phong_powers (the light sample itself is taken by phong_light_and_bounce_lane).
+template <int Hits>
+[[gnu::always_inline]] inline void phong_lane(SurfaceLanes& l, int i) {
+  LaneHit hit = decode_lane<Hits>(l, i);
+  PhongLaneLobes lobes = make_phong_lane_lobes(hit.normal, hit.wo);
+  store_hit(l, i, hit, lobes.normal, lobes.valid);
+  l.wo_x[i] = lobes.wo.x, l.wo_y[i] = lobes.wo.y, l.wo_z[i] = lobes.wo.z;
+  point_light_lane(l, i, hit.point, PhongRecord{lobes, &l.phong_cos[i]});
+}
+
+// A Phong lane's bounce direction (sample_local): the glossy lobe's where it is chosen, drawn
+// one lane at a time in the library's function (std::pow, the sine and cosine), otherwise the
+// diffuse lobe's cosine-warped one; and the lobe power towards it.
+void sample_phong_bounces(SurfaceLanes& l) {
+  for (int i = 0; i < l.count; ++i) {
+    PhongLaneLobes lobes = stored_phong_lobes(l, i);
+    float u_lobe = l.u_lobe[i], p_diffuse = l.p_diffuse[i];
+    bool glossy = lobes.valid && !(u_lobe < p_diffuse) && u_lobe < p_diffuse + l.p_specular[i];
+    vec3 local = glossy ? sample_phong_lobe(lobes.wo, l.exponent[i], {l.u_x[i], l.u_y[i]})
+                        : vec3{l.cosine_x[i], l.cosine_y[i], l.cosine_z[i]};
+    l.specular_x[i] = local.x, l.specular_y[i] = local.y, l.specular_z[i] = local.z;
+    l.bounce_power[i] = lobes.valid ? phong_lobe_power(phong_cosine(lobes, local), l.exponent[i]) : 0.0f;
+  }
+}
+
+// A Phong lane's point light sample (sample_one_light) and bounce (mixture_sample), their lobe
+// powers worked out.
+[[gnu::always_inline]] inline void phong_light_and_bounce_lane(SurfaceLanes& l, int i) {
+  PhongLaneLobes lobes = stored_phong_lobes(l, i);
+  vec3 point = {l.px[i], l.py[i], l.pz[i]}, geometric = {l.gnx[i], l.gny[i], l.gnz[i]};
+  float error = l.error[i];
+  LaneLight light = point_light_lane(l, i, point, PhongValue{l, i, lobes, l.phong_power[i]});
+  store_light_outputs(l, i, light_outputs(l, i, light, point, {error, error, error}, geometric));
+  float u_lobe = l.u_lobe[i], p_diffuse = l.p_diffuse[i];
+  bool diffuse = lobes.valid & (u_lobe < p_diffuse);
+  bool glossy = lobes.valid & !diffuse & (u_lobe < p_diffuse + l.p_specular[i]);
+  vec3 local = {l.specular_x[i], l.specular_y[i], l.specular_z[i]};
+  float pdf;
+  color3 f = eval_phong_lane(l, i, lobes, local, l.bounce_power[i], pdf);
+  color3 weight = f / pdf;
+  bool scatters = (diffuse | glossy) & (pdf > 0) & !lane::black(f) & lane::finite(weight) & !lane::black(weight);
+  vec3 wi = to_world(make_shading_frame(lobes.normal), local);
+  store_bounce(l, i, scatters, offset_lane(point, {error, error, error}, geometric, wi), wi, pdf, weight);
+}
+
 // A lane whose light is an emitting triangle, after the first loop: its light sample replaces
 // the point light's. A loop of its own: in one loop with the rest, GCC would not vectorise it.
-template <bool Glossy>
+template <RenderContext::LaneModel Model>
 [[gnu::always_inline]] inline void triangle_lane(SurfaceLanes& l, int i) {
   vec3 point = {l.px[i], l.py[i], l.pz[i]};
-  vec3 lobe_normal = {l.lobe_nx[i], l.lobe_ny[i], l.lobe_nz[i]};
-  LaneLight light;
-  if constexpr (Glossy) {
-    GlossyLaneMaterial m = glossy_material(l, i);
-    GlossyLaneLobes lobes = stored_glossy_lobes(l, i);
-    light = triangle_light_lane(l, i, point, GlossyValue<true>{m, lobes});
-  } else {
-    color3 albedo = {l.albedo_r[i], l.albedo_g[i], l.albedo_b[i]};
-    bool valid = l.valid[i] != 0;
-    light = triangle_light_lane(l, i, point, LambertValue{lobe_normal, albedo, valid});
-  }
+  LaneLight light = triangle_light_lane(l, i, point, lane_bsdf<Model, true>(l, i));
   float largest = l.error[i];
   LightOutputs o = light_outputs(l, i, light, point, {largest, largest, largest}, {l.gnx[i], l.gny[i], l.gnz[i]});
   bool area = l.area[i] != 0;
   store_light_outputs_where(l, i, area, o);
-  if constexpr (Glossy) l.fallback[i] |= (!light.in_range) & area;
+  if constexpr (Model == RenderContext::LaneModel::glossy) l.fallback[i] |= (!light.in_range) & area;
 }
 
 // The direction, pdf, distance and radiance of the lights the lanes draw one lane at a time
@@ -493,21 +603,22 @@ void draw_lane_lights(SurfaceLanes& l) {
     l.drawn_distance[i] = std::numeric_limits<float>::infinity();
     l.drawn_r[i] = radiance.x, l.drawn_g[i] = radiance.y, l.drawn_b[i] = radiance.z;
   }
+  if (l.model != RenderContext::LaneModel::phong) return;
+  for (int i = 0; i < l.count; ++i) {  // a Phong lane's lobe power towards the light drawn
+    if (!l.drawn[i]) continue;
+    PhongLaneLobes lobes = stored_phong_lobes(l, i);
+    vec3 wi = to_local(make_shading_frame(lobes.normal), {l.drawn_x[i], l.drawn_y[i], l.drawn_z[i]});
+    l.phong_power[i] = phong_lobe_power(phong_cosine(lobes, wi), l.exponent[i]);
+  }
 }
 
 // A lane whose light draw_lane_lights drew: the BSDF there and MIS against its sampling,
 // replacing the first loop's sample.
-template <bool Glossy>
+template <RenderContext::LaneModel Model>
 [[gnu::always_inline]] inline void drawn_light_lane(SurfaceLanes& l, int i) {
   vec3 point = {l.px[i], l.py[i], l.pz[i]};
   vec3 wi = {l.drawn_x[i], l.drawn_y[i], l.drawn_z[i]};
-  LaneBsdfValue bsdf;
-  if constexpr (Glossy) {
-    bsdf = GlossyValue<true>{glossy_material(l, i), stored_glossy_lobes(l, i)}(wi);
-  } else {
-    color3 albedo = {l.albedo_r[i], l.albedo_g[i], l.albedo_b[i]};
-    bsdf = LambertValue{{l.lobe_nx[i], l.lobe_ny[i], l.lobe_nz[i]}, albedo, l.valid[i] != 0}(wi);
-  }
+  LaneBsdfValue bsdf = lane_bsdf<Model, true>(l, i)(wi);
   float light_pdf = l.drawn_pdf[i];
   color3 emitted = {l.drawn_r[i], l.drawn_g[i], l.drawn_b[i]};
   float pdf = l.select_pdf[i] * light_pdf;
@@ -523,82 +634,111 @@ template <bool Glossy>
       light_outputs<true>(l, i, light, point, {largest, largest, largest}, {l.gnx[i], l.gny[i], l.gnz[i]});
   bool drawn = l.drawn[i] != 0;
   store_light_outputs_where(l, i, drawn, o);
-  if constexpr (Glossy) l.fallback[i] |= (!light.in_range) & drawn;
+  if constexpr (Model == RenderContext::LaneModel::glossy) l.fallback[i] |= (!light.in_range) & drawn;
 }
 
 // A lane whose light is a shaped delta light (a spot, a range or a directional light), after
 // the first loop, which took it for a plain point light: this sample replaces that one.
-template <bool Glossy>
+template <RenderContext::LaneModel Model>
 [[gnu::always_inline]] inline void shaped_delta_lane(SurfaceLanes& l, int i) {
   vec3 point = {l.px[i], l.py[i], l.pz[i]};
-  vec3 lobe_normal = {l.lobe_nx[i], l.lobe_ny[i], l.lobe_nz[i]};
-  LaneLight light;
-  if constexpr (Glossy) {
-    light = shaped_delta_light_lane(l, i, point, GlossyValue<false>{glossy_material(l, i), stored_glossy_lobes(l, i)});
-  } else {
-    color3 albedo = {l.albedo_r[i], l.albedo_g[i], l.albedo_b[i]};
-    light = shaped_delta_light_lane(l, i, point, LambertValue{lobe_normal, albedo, l.valid[i] != 0});
-  }
+  LaneLight light = shaped_delta_light_lane(l, i, point, lane_bsdf<Model, false>(l, i));
   float largest = l.error[i];
   LightOutputs o =
       light_outputs<true>(l, i, light, point, {largest, largest, largest}, {l.gnx[i], l.gny[i], l.gnz[i]});
   bool shaped = l.shaped[i] != 0;
   store_light_outputs_where(l, i, shaped, o);
-  if constexpr (Glossy) l.fallback[i] |= (!light.in_range) & shaped;
+  if constexpr (Model == RenderContext::LaneModel::glossy) l.fallback[i] |= (!light.in_range) & shaped;
+}
+
+// Phong lanes' light loops take two passes: the first records each light direction's cosine
+// (PhongRecord), phong_powers raises it where `which` (every lane when null), and the loop
+// proper reads the power (PhongValue).
+[[gnu::always_inline]] inline void record_shaped_phong(SurfaceLanes& l, int i) {
+  shaped_delta_light_lane(l, i, {l.px[i], l.py[i], l.pz[i]}, PhongRecord{stored_phong_lobes(l, i), &l.phong_cos[i]});
+}
+[[gnu::always_inline]] inline void record_triangle_phong(SurfaceLanes& l, int i) {
+  triangle_light_lane(l, i, {l.px[i], l.py[i], l.pz[i]}, PhongRecord{stored_phong_lobes(l, i), &l.phong_cos[i]});
+}
+void phong_powers(SurfaceLanes& l, const int32_t* which) {
+  for (int i = 0; i < l.count; ++i)
+    if (!which || which[i]) l.phong_power[i] = phong_lobe_power(l.phong_cos[i], l.exponent[i]);
 }
 
 // The kernel's loops, compiled once per instruction set. Each is a loop of its own: GCC
 // vectorises these one at a time, not together.
-template <bool Glossy, bool AnyArea, int Hits>
+template <RenderContext::LaneModel Model, bool AnyArea, int Hits>
 [[gnu::always_inline]] inline void shade_lanes(SurfaceLanes& l) {
-  if constexpr (Glossy) {
+  using LaneModel = RenderContext::LaneModel;
+  constexpr bool phong = Model == LaneModel::phong;
+  if constexpr (Model == LaneModel::glossy) {
     for (int i = 0; i < l.count; ++i) glossy_lane<Hits>(l, i);
     sample_glossy_specular(l);
     for (int i = 0; i < l.count; ++i) glossy_bounce_lane(l, i);
+  } else if constexpr (phong) {
+    for (int i = 0; i < l.count; ++i) phong_lane<Hits>(l, i);
+    phong_powers(l, nullptr);
+    sample_phong_bounces(l);
+    for (int i = 0; i < l.count; ++i) phong_light_and_bounce_lane(l, i);
   } else {
     for (int i = 0; i < l.count; ++i) lambert_lane<Hits>(l, i);
   }
-  if (l.any_shaped)
-    for (int i = 0; i < l.count; ++i) shaped_delta_lane<Glossy>(l, i);
+  if (l.any_shaped) {
+    if constexpr (phong) {
+      for (int i = 0; i < l.count; ++i) record_shaped_phong(l, i);
+      phong_powers(l, l.shaped);
+    }
+    for (int i = 0; i < l.count; ++i) shaped_delta_lane<Model>(l, i);
+  }
   if (l.any_drawn) {
     draw_lane_lights(l);
-    for (int i = 0; i < l.count; ++i) drawn_light_lane<Glossy>(l, i);
+    for (int i = 0; i < l.count; ++i) drawn_light_lane<Model>(l, i);
   }
-  if constexpr (AnyArea)
-    for (int i = 0; i < l.count; ++i) triangle_lane<Glossy>(l, i);
+  if constexpr (AnyArea) {
+    if constexpr (phong) {
+      for (int i = 0; i < l.count; ++i) record_triangle_phong(l, i);
+      phong_powers(l, l.area);
+    }
+    for (int i = 0; i < l.count; ++i) triangle_lane<Model>(l, i);
+  }
 }
-template <bool Glossy, bool AnyArea, int Hits>
+template <RenderContext::LaneModel Model, bool AnyArea, int Hits>
 [[gnu::target("avx2")]] void shade_lanes_avx2(SurfaceLanes& l) {
-  shade_lanes<Glossy, AnyArea, Hits>(l);
+  shade_lanes<Model, AnyArea, Hits>(l);
 }
-template <bool Glossy, bool AnyArea, int Hits>
+template <RenderContext::LaneModel Model, bool AnyArea, int Hits>
 void shade_lanes_baseline(SurfaceLanes& l) {
-  shade_lanes<Glossy, AnyArea, Hits>(l);
+  shade_lanes<Model, AnyArea, Hits>(l);
 }
-template <bool Glossy, bool AnyArea, int Hits>
+template <RenderContext::LaneModel Model, bool AnyArea, int Hits>
 void shade_lanes_on(SurfaceLanes& l, bool avx2) {
-  avx2 ? shade_lanes_avx2<Glossy, AnyArea, Hits>(l) : shade_lanes_baseline<Glossy, AnyArea, Hits>(l);
+  avx2 ? shade_lanes_avx2<Model, AnyArea, Hits>(l) : shade_lanes_baseline<Model, AnyArea, Hits>(l);
 }
-template <bool Glossy, bool AnyArea>
+template <RenderContext::LaneModel Model, bool AnyArea>
 void shade_lanes_on(SurfaceLanes& l, bool avx2) {
   constexpr int transformed = SurfaceLanes::transformed_hits, shapes = SurfaceLanes::shape_hits;
   switch (l.hit_kinds) {
-    case 0: return shade_lanes_on<Glossy, AnyArea, 0>(l, avx2);
-    case transformed: return shade_lanes_on<Glossy, AnyArea, transformed>(l, avx2);
-    case shapes: return shade_lanes_on<Glossy, AnyArea, shapes>(l, avx2);
-    default: return shade_lanes_on<Glossy, AnyArea, transformed | shapes>(l, avx2);
+    case 0: return shade_lanes_on<Model, AnyArea, 0>(l, avx2);
+    case transformed: return shade_lanes_on<Model, AnyArea, transformed>(l, avx2);
+    case shapes: return shade_lanes_on<Model, AnyArea, shapes>(l, avx2);
+    default: return shade_lanes_on<Model, AnyArea, transformed | shapes>(l, avx2);
   }
 }
-template <bool Glossy>
+template <RenderContext::LaneModel Model>
 void shade_lanes_on(SurfaceLanes& l, bool avx2) {
-  l.any_area ? shade_lanes_on<Glossy, true>(l, avx2) : shade_lanes_on<Glossy, false>(l, avx2);
+  l.any_area ? shade_lanes_on<Model, true>(l, avx2) : shade_lanes_on<Model, false>(l, avx2);
 }
 
 }  // namespace
 
 void shade_surface_lanes(SurfaceLanes& lanes, LaneIsa isa) {
   bool avx2 = resolve_lane_isa(isa) == LaneIsa::avx2;
-  lanes.glossy ? shade_lanes_on<true>(lanes, avx2) : shade_lanes_on<false>(lanes, avx2);
+  using LaneModel = RenderContext::LaneModel;
+  switch (lanes.model) {
+    case LaneModel::glossy: return shade_lanes_on<LaneModel::glossy>(lanes, avx2);
+    case LaneModel::phong: return shade_lanes_on<LaneModel::phong>(lanes, avx2);
+    default: return shade_lanes_on<LaneModel::lambert>(lanes, avx2);
+  }
 }
 
 void set_lane_shaped_light(SurfaceLanes& l, int i, const LightDesc& light) {
@@ -619,6 +759,10 @@ RenderContext::LaneModel lane_model_of(const SurfaceMaterial& m, const BsdfMater
   if (plain && bsdf.lambert() && max_component(bsdf.lambert()->albedo) > 0) return LaneModel::lambert;
   if (plain && bsdf.metallic_roughness() && is_metallic_roughness_lane_case(*bsdf.metallic_roughness()))
     return LaneModel::glossy;
+  // Phong with its glossy lobe and no delta lobe (a Phong material without one is a Lambert).
+  if (const PhongWeights* w = bsdf.phong();
+      plain && w && w->scatters && w->p_glossy > 0 && w->p_mirror == 0 && w->p_transmission == 0)
+    return LaneModel::phong;
   return LaneModel::none;
 }
 

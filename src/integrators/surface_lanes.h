@@ -1,7 +1,7 @@
 // A batch's commonest path vertices shaded across SIMD lanes: a hit of a mesh's triangle, a sphere
 // or a plane, lit (through a shadow ray the caller traces) by one point, glTF spot or directional light, one
-// emitting triangle or sphere, or the environment, with a Lambert material, or (`glossy`) a
-// metallic-roughness one in the case metallic_roughness_lane.h takes.
+// emitting triangle or sphere, or the environment, with a Lambert material, a metallic-roughness
+// one in the case metallic_roughness_lane.h takes, or a Phong one with a glossy lobe (`model`).
 // The batched path tracer (integrators/path.cpp) gathers such vertices of a stage into these
 // lanes, one set per model, shades them together and scatters the results back; every other
 // vertex, and every lane this kernel cannot finish (`fallback`), is shaded one path at a time.
@@ -96,6 +96,12 @@ struct SurfaceLanes {
   alignas(32) float specular[stride], specular_f0_r[stride], specular_f0_g[stride], specular_f0_b[stride];
   alignas(32) float specular_f0_max[stride];
   alignas(32) float u_lobe[stride], u_x[stride], u_y[stride];
+  // A Phong lane's material (PhongWeights: kd in albedo_*, its lobe probabilities in p_diffuse
+  // and p_specular) and, between the kernel's loops, the cosine of the angle between a light's
+  // direction and wo's mirror direction, and its power (phong_lobe_power: std::pow, one lane at a
+  // time), and the same power for the bounce's direction.
+  alignas(32) float ks_r[stride], ks_g[stride], ks_b[stride], exponent[stride];
+  alignas(32) float phong_cos[stride], phong_power[stride], bounce_power[stride];
 
   // Outputs. `fallback`: a value left float's normal range where the one-path code rescales it;
   // the vertex must be shaded one path at a time. Otherwise: the hit's position and the
@@ -118,7 +124,8 @@ struct SurfaceLanes {
   alignas(32) float light_r[stride], light_g[stride], light_b[stride];
   // Between the kernel's loops: each hit's geometric normal, error bound, lobe normal and
   // whether the lobes are valid; a glossy lane's local wo, lobe probabilities, the coating's
-  // transmittance and GGX Lambda along wo, and its GGX lobe's direction (local) where chosen.
+  // transmittance and GGX Lambda along wo, and its GGX lobe's direction (local) where chosen;
+  // a Phong lane's local wo and its bounce's local direction.
   alignas(32) float gnx[stride], gny[stride], gnz[stride], error[stride];
   alignas(32) float lobe_nx[stride], lobe_ny[stride], lobe_nz[stride];
   alignas(32) int32_t valid[stride];
@@ -126,7 +133,7 @@ struct SurfaceLanes {
   alignas(32) float p_specular[stride], p_diffuse[stride], coating_o[stride], lambda_o[stride];
   alignas(32) float specular_x[stride], specular_y[stride], specular_z[stride];
   int count = 0;
-  bool glossy = false;  // the lanes' model: metallic-roughness, or Lambert
+  RenderContext::LaneModel model = RenderContext::LaneModel::lambert;  // the lanes' model (not none)
   // Set by whoever fills the lanes: whether any lane's light is a triangle, a shaped delta
   // light, or drawn (the environment or a sphere), and which kinds of hit beside untransformed triangles the lanes
   // hold. The kernel leaves out what none needs.
@@ -153,8 +160,9 @@ void set_lane_shaped_light(SurfaceLanes& lanes, int i, const LightDesc& light);
 }
 
 // Which lanes can shade a vertex whose material resolved to `m` (`bsdf` its BSDF material), if
-// any: opaque, not emitting, lit; Lambertian with some albedo, or the metallic-roughness case of
-// materials/metallic_roughness_lane.h. Normal and bump maps are the caller's (given_normal).
+// any: opaque, not emitting, lit; Lambertian with some albedo, the metallic-roughness case of
+// materials/metallic_roughness_lane.h, or Phong with a glossy lobe and no mirror or
+// transmission. Normal and bump maps are the caller's (given_normal).
 RenderContext::LaneModel lane_model_of(const SurfaceMaterial& m, const BsdfMaterial& bsdf);
 
 }  // namespace radiant

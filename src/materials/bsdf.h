@@ -27,6 +27,8 @@ class BsdfMaterial {
   const LambertParams* lambert() const { return std::get_if<LambertParams>(&params_); }
   // The metallic-roughness parameters when the material has that model without layers, else null.
   const MetallicRoughnessParams* metallic_roughness() const { return std::get_if<MetallicRoughnessParams>(&params_); }
+  // The Phong weights when the material has the Phong model and is not exactly Lambertian, else null.
+  const PhongWeights* phong() const { return std::get_if<PhongWeights>(&params_); }
 
  private:
   friend class Bsdf;

@@ -56,6 +56,11 @@ struct PhongWeights {
   float p_diffuse = 0, p_glossy = 0, p_mirror = 0, p_transmission = 0;
 };
 PhongWeights make_phong_weights(const SurfaceMaterial& m);
+// The modified Phong lobe's cos^n, from the cosine of the angle between wi and wo's mirror
+// direction (0 beyond 90 degrees).
+float phong_lobe_power(float cos_alpha, float exponent);
+// A local direction with density (n+1)/(2 pi) cos^n around the mirror direction of local `wo`.
+vec3 sample_phong_lobe(vec3 wo, float exponent, vec2 u);
 struct PhongLobes : PhongWeights {
   bool valid = false;
   ShadingFrame frame;  // z = the normal on wo's side

@@ -9,21 +9,7 @@ namespace radiant {
 
 namespace {
 
-// cos^n of the angle between wi and the mirror direction of wo (0 beyond 90 degrees).
-float phong_lobe(const PhongLobes& l, vec3 wi) {
-  float cos_alpha = dot(wi, reflect_local(l.wo));
-  return cos_alpha > 0 ? std::pow(std::min(cos_alpha, 1.0f), l.exponent) : 0;
-}
-
-// A direction with density (n+1)/(2 pi) cos^n around the mirror direction.
-vec3 sample_phong_lobe(const PhongLobes& l, vec2 u) {
-  float cos_alpha = std::pow(u.x, 1 / (l.exponent + 1));
-  float sin_alpha = std::sqrt(std::max(0.0f, 1 - cos_alpha * cos_alpha));
-  float phi = 2 * pi * u.y;
-  vec3 axis = reflect_local(l.wo), t, b;
-  orthonormal_basis(axis, t, b);
-  return normalize(t * (sin_alpha * std::cos(phi)) + b * (sin_alpha * std::sin(phi)) + axis * cos_alpha);
-}
+float phong_lobe(const PhongLobes& l, vec3 wi) { return phong_lobe_power(dot(wi, reflect_local(l.wo)), l.exponent); }
 
 // Refraction through the smooth interface; total internal reflection turns it into a mirror.
 BsdfSample sample_delta_transmission(const PhongLobes& l) {
@@ -34,6 +20,19 @@ BsdfSample sample_delta_transmission(const PhongLobes& l) {
 }
 
 }  // namespace
+
+float phong_lobe_power(float cos_alpha, float exponent) {
+  return cos_alpha > 0 ? std::pow(std::min(cos_alpha, 1.0f), exponent) : 0;
+}
+
+vec3 sample_phong_lobe(vec3 wo, float exponent, vec2 u) {
+  float cos_alpha = std::pow(u.x, 1 / (exponent + 1));
+  float sin_alpha = std::sqrt(std::max(0.0f, 1 - cos_alpha * cos_alpha));
+  float phi = 2 * pi * u.y;
+  vec3 axis = reflect_local(wo), t, b;
+  orthonormal_basis(axis, t, b);
+  return normalize(t * (sin_alpha * std::cos(phi)) + b * (sin_alpha * std::sin(phi)) + axis * cos_alpha);
+}
 
 PhongWeights make_phong_weights(const SurfaceMaterial& m) {
   PhongWeights w;
@@ -82,7 +81,7 @@ std::optional<BsdfSample> sample_local(const PhongLobes& l, float u_lobe, vec2 u
   if (!l.valid) return std::nullopt;
   float threshold = l.p_diffuse;
   if (u_lobe < threshold) return mixture_sample(l, cosine ? *cosine : sample_cosine_hemisphere(u));
-  if (u_lobe < (threshold += l.p_glossy)) return mixture_sample(l, sample_phong_lobe(l, u));
+  if (u_lobe < (threshold += l.p_glossy)) return mixture_sample(l, sample_phong_lobe(l.wo, l.exponent, u));
   if (u_lobe < (threshold += l.p_mirror)) return delta_sample(l, reflect_local(l.wo), l.kr, l.p_mirror);
   if (l.p_transmission > 0) return sample_delta_transmission(l);
   return std::nullopt;

@@ -108,7 +108,8 @@ void require_same_render(const SceneDesc& scene, RenderOptions o, bool packets =
 
 }  // namespace
 
-// A room of matte walls, a glTF plastic box and a rough metal panel lit by point lights (one with
+// A room of matte walls, a glTF plastic box, a rough metal panel and Phong's glossy lobe (a box
+// and a panel) lit by point lights (one with
 // a range), a glTF spot, the sun, the sky (at full size) and an emitting panel, whose vertices the batch shades in its
 // surface lanes (integrators/surface_lanes.h), one wall with vertex normals, a rotated and a
 // mirrored instance, and with `shapes` a matte, a plastic and an emitting sphere and a plane for a ceiling,
@@ -151,6 +152,13 @@ SceneDesc surface_lanes_room(float scale, bool shapes = false) {
   MaterialDesc panel;
   panel.kd = {0, 0, 0}, panel.emission = {3, 3, 2}, panel.double_sided = false;
   add_quad(scene, {-1, 4, 1}, {1, 4, 1}, {1, 4, 3}, {-1, 4, 3}, add_material(scene, panel));  // facing down
+  MaterialDesc shiny;  // the .scene format's Phong with a glossy lobe, weights summing past one
+  shiny.kd = {0.6f, 0.3f, 0.2f}, shiny.ks = {0.5f, 0.5f, 0.45f}, shiny.shininess = 40;
+  add_box(scene, {2.2f, 0, -3.5f}, {3.5f, 1.2f, -2.5f}, add_material(scene, shiny));
+  MaterialDesc lacquer;  // a glossy lobe alone, sharp
+  lacquer.kd = {0, 0, 0}, lacquer.ks = {0.7f, 0.6f, 0.5f}, lacquer.shininess = 300;
+  add_quad(scene, {-3.5f, 2.2f, -3.9f}, {-1, 2.2f, -3.9f}, {-1, 3.5f, -3.9f}, {-3.5f, 3.5f, -3.9f},
+           add_material(scene, lacquer));
   scene.lights.push_back(point_light({2, 3, 2}, {8, 8, 8}));
   scene.lights.push_back(point_light({-2, 2, 1}, {3, 4, 5}, 1, 0.5f, 0));  // .scene-style attenuation
   LightDesc ranged = point_light({0, 1, 3}, {2, 2, 2});

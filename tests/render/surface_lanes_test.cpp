@@ -1,4 +1,4 @@
-// The surface lanes (integrators/surface_lanes.h), Lambert and glossy, against the one-path
+// The surface lanes (integrators/surface_lanes.h), Lambert, glossy and Phong, against the one-path
 // functions they stand in for, to the bit, on every instruction set this CPU runs. The
 // render-level check, the batch against one path at a time, is in batched_paths_test.cpp.
 #include <doctest/doctest.h>
@@ -136,7 +136,7 @@ void set_lane(SurfaceLanes& l, int i, const LaneCase& c) {
     }
     l.orientation[i] = determinant3(c.transform) < 0 ? -1.0f : 1.0f;
   }
-  if (l.glossy) {
+  if (l.model == RenderContext::LaneModel::glossy) {
     BsdfMaterial material(c.material);
     const MetallicRoughnessParams* p = material.metallic_roughness();
     REQUIRE(p);
@@ -146,6 +146,14 @@ void set_lane(SurfaceLanes& l, int i, const LaneCase& c) {
     l.metal[i] = p->metal, l.plastic[i] = p->plastic, l.specular[i] = p->specular;
     l.specular_f0_r[i] = p->specular_f0.x, l.specular_f0_g[i] = p->specular_f0.y, l.specular_f0_b[i] = p->specular_f0.z;
     l.specular_f0_max[i] = p->specular_f0_max;
+    l.u_lobe[i] = c.u_lobe, l.u_x[i] = c.u.x, l.u_y[i] = c.u.y;
+  } else if (l.model == RenderContext::LaneModel::phong) {
+    BsdfMaterial material(c.material);
+    REQUIRE(lane_model_of(c.material, material) == RenderContext::LaneModel::phong);
+    const PhongWeights& w = *material.phong();
+    l.albedo_r[i] = w.kd.x, l.albedo_g[i] = w.kd.y, l.albedo_b[i] = w.kd.z;
+    l.ks_r[i] = w.ks.x, l.ks_g[i] = w.ks.y, l.ks_b[i] = w.ks.z;
+    l.exponent[i] = w.exponent, l.p_diffuse[i] = w.p_diffuse, l.p_specular[i] = w.p_glossy;
     l.u_lobe[i] = c.u_lobe, l.u_x[i] = c.u.x, l.u_y[i] = c.u.y;
   }
 }
@@ -203,7 +211,7 @@ void check_lane(const SurfaceLanes& l, int i, const LaneCase& c, int& specular_b
   CHECK(same_bits({l.px[i], l.py[i], l.pz[i]}, hit.position));
   CHECK(same_bits({l.nx[i], l.ny[i], l.nz[i]}, normal));
   ReferenceBsdf bsdf;
-  if (l.glossy)
+  if (l.model != RenderContext::LaneModel::lambert)
     bsdf.glossy.emplace(BsdfMaterial(c.material), normal, wo);
   else
     bsdf.lambert = make_lambert_lobes({c.albedo}, normal, wo);
@@ -214,7 +222,9 @@ void check_lane(const SurfaceLanes& l, int i, const LaneCase& c, int& specular_b
     CHECK(same_bits({l.wix[i], l.wiy[i], l.wiz[i]}, bounce->wi));
     CHECK(same_bits(l.pdf[i], bounce->pdf));
     CHECK(same_bits({l.weight_r[i], l.weight_g[i], l.weight_b[i]}, bounce->weight));
-    specular_bounces += l.glossy && c.u_lobe < l.p_specular[i];
+    specular_bounces += l.model == RenderContext::LaneModel::glossy ? c.u_lobe < l.p_specular[i]
+                        : l.model == RenderContext::LaneModel::phong  ? !(c.u_lobe < l.p_diffuse[i])
+                                                                      : false;
     Ray next;
     spawn_ray(next, hit, bounce->wi);
     CHECK(same_bits({l.ox[i], l.oy[i], l.oz[i]}, next.origin));
@@ -382,6 +392,26 @@ std::vector<LaneCase> glossy_cases() {
   return cases;
 }
 
+// The same hits on Phong materials with a glossy lobe (the .scene format's kd, ks and
+// shininess): broad and sharp lobes, a glossy lobe alone, and weights that sum past one (scaled).
+std::vector<LaneCase> phong_cases() {
+  uint32_t state = 13;
+  auto next = [&] { return float((state = state * 1664525u + 1013904223u) >> 8) * 0x1p-24f; };
+  std::vector<LaneCase> cases = lane_cases();
+  for (size_t k = 0; k < cases.size(); ++k) {
+    LaneCase& c = cases[k];
+    SurfaceMaterial& m = c.material;
+    m.model = MaterialModel::phong;
+    m.kd = k % 9 == 4 ? color3{} : k % 7 == 3 ? color3{0.9f, 0.8f, 0.95f} : c.albedo;
+    m.ks = k % 7 == 3 ? color3{0.8f, 0.6f, 0.7f} : color3{0.05f + 0.5f * next(), 0.05f + 0.5f * next(), 0.3f};
+    m.shininess = k % 5 == 0 ? 1.0f : k % 5 == 1 ? 500.0f : 10 + 200 * next();
+    c.u_lobe = next();
+    c.u = {next(), next()};
+    c.cosine = sample_cosine_hemisphere(c.u);  // the batch warps the same numbers
+  }
+  return cases;
+}
+
 // Spheres and planes in place of the triangles: hit points on them, far from the origin too, and
 // rays that reach them from either side, as the analytic intersector leaves them (its distance
 // rounded, so that the refinement moves the point).
@@ -538,42 +568,46 @@ TEST_CASE("Lambert lanes: a normal whose squared length leaves float's range fal
   CHECK(!lanes->fallback[4]);
 }
 
-TEST_CASE("Glossy lanes: each lane is the one-path metallic-roughness vertex to the bit, on every instruction set") {
-  std::vector<LaneCase> mixed = glossy_cases(), points, placed = transformed(mixed), shaped = shapes(mixed);
-  std::vector<LaneCase> mapped = given_normals(placed), mapped_shapes = given_normals(shaped);
-  for (const LaneCase& c : mixed)
-    if (!c.area) points.push_back(c);
-  for (const std::vector<LaneCase>* cases : {&mixed, &points, &placed, &shaped, &mapped, &mapped_shapes}) {
-    REQUIRE(int(cases->size()) <= SurfaceLanes::capacity);
-    for (LaneIsa isa : {LaneIsa::best, LaneIsa::baseline, LaneIsa::avx2}) {
-      if (!lane_isa_available(isa)) continue;
-      CAPTURE(cases->size());
-      CAPTURE(int(isa));
-      auto lanes = std::make_unique<SurfaceLanes>();
-      lanes->glossy = true;
-      for (size_t i = 0; i < cases->size(); ++i) set_lane(*lanes, int(i), (*cases)[i]);
-      lanes->count = int(cases->size());
-      shade_surface_lanes(*lanes, isa);
-      int lit = 0, scatters = 0, lit_by_triangles = 0, specular_bounces = 0, shaped = 0, lit_by_shaped = 0;
-      for (size_t i = 0; i < cases->size(); ++i) {
-        CAPTURE(i);
-        check_lane(*lanes, int(i), (*cases)[i], specular_bounces);
-        lit += lanes->lit[i], scatters += lanes->scatters[i];
-        lit_by_triangles += lanes->lit[i] && (*cases)[i].area;
-        bool shaped_light = !(*cases)[i].area && lanes->shaped[i];
-        shaped += shaped_light, lit_by_shaped += shaped_light && lanes->lit[i];
+TEST_CASE("Glossy and Phong lanes: each lane is the one-path vertex to the bit, on every instruction set") {
+  for (RenderContext::LaneModel model : {RenderContext::LaneModel::glossy, RenderContext::LaneModel::phong}) {
+    CAPTURE(int(model));
+    std::vector<LaneCase> mixed = model == RenderContext::LaneModel::glossy ? glossy_cases() : phong_cases();
+    std::vector<LaneCase> points, placed = transformed(mixed), shaped = shapes(mixed);
+    std::vector<LaneCase> mapped = given_normals(placed), mapped_shapes = given_normals(shaped);
+    for (const LaneCase& c : mixed)
+      if (!c.area) points.push_back(c);
+    for (const std::vector<LaneCase>* cases : {&mixed, &points, &placed, &shaped, &mapped, &mapped_shapes}) {
+      REQUIRE(int(cases->size()) <= SurfaceLanes::capacity);
+      for (LaneIsa isa : {LaneIsa::best, LaneIsa::baseline, LaneIsa::avx2}) {
+        if (!lane_isa_available(isa)) continue;
+        CAPTURE(cases->size());
+        CAPTURE(int(isa));
+        auto lanes = std::make_unique<SurfaceLanes>();
+        lanes->model = model;
+        for (size_t i = 0; i < cases->size(); ++i) set_lane(*lanes, int(i), (*cases)[i]);
+        lanes->count = int(cases->size());
+        shade_surface_lanes(*lanes, isa);
+        int lit = 0, scatters = 0, lit_by_triangles = 0, specular_bounces = 0, shaped = 0, lit_by_shaped = 0;
+        for (size_t i = 0; i < cases->size(); ++i) {
+          CAPTURE(i);
+          check_lane(*lanes, int(i), (*cases)[i], specular_bounces);
+          lit += lanes->lit[i], scatters += lanes->scatters[i];
+          lit_by_triangles += lanes->lit[i] && (*cases)[i].area;
+          bool shaped_light = !(*cases)[i].area && lanes->shaped[i];
+          shaped += shaped_light, lit_by_shaped += shaped_light && lanes->lit[i];
+        }
+        CHECK(lit_by_shaped > 10);
+        CHECK(shaped - lit_by_shaped > 10);
+        // Both outcomes of both tests occur, for both kinds of light and both lobes.
+        CHECK(lit > 20);
+        CHECK(lit < int(cases->size()) - 20);
+        CHECK(scatters > 20);
+        CHECK(scatters < int(cases->size()));
+        CHECK(specular_bounces > 10);
+        CHECK(scatters - specular_bounces > 10);
+        CHECK(lit_by_triangles > (cases != &points ? 10 : -1));
+        CHECK(lit - lit_by_triangles > 10);
       }
-      CHECK(lit_by_shaped > 10);
-      CHECK(shaped - lit_by_shaped > 10);
-      // Both outcomes of both tests occur, for both kinds of light and both lobes.
-      CHECK(lit > 20);
-      CHECK(lit < int(cases->size()) - 20);
-      CHECK(scatters > 20);
-      CHECK(scatters < int(cases->size()));
-      CHECK(specular_bounces > 10);
-      CHECK(scatters - specular_bounces > 10);
-      CHECK(lit_by_triangles > (cases != &points ? 10 : -1));
-      CHECK(lit - lit_by_triangles > 10);
     }
   }
 }
@@ -591,15 +625,19 @@ TEST_CASE("Surface lanes: the environment's light sample is the one-path vertex'
   LightTable uniform = make_light_table(empty, {0.4f, 0.5f, 0.7f}, "", true, nullptr, LightSampler::power);
   LightTable mapped = make_light_table(empty, {}, dir.file("sky.exr").string(), true, nullptr, LightSampler::power);
   for (const LightTable* table : {&uniform, &mapped}) {
-    for (bool glossy : {false, true}) {
-      std::vector<LaneCase> cases = environment_lit(glossy ? glossy_cases() : lane_cases(), *table);
+    for (RenderContext::LaneModel model :
+         {RenderContext::LaneModel::lambert, RenderContext::LaneModel::glossy, RenderContext::LaneModel::phong}) {
+      std::vector<LaneCase> cases = environment_lit(model == RenderContext::LaneModel::glossy ? glossy_cases()
+                                                    : model == RenderContext::LaneModel::phong ? phong_cases()
+                                                                                                : lane_cases(),
+                                                    *table);
       for (LaneIsa isa : {LaneIsa::best, LaneIsa::baseline, LaneIsa::avx2}) {
         if (!lane_isa_available(isa)) continue;
         CAPTURE(table == &mapped);
-        CAPTURE(glossy);
+        CAPTURE(int(model));
         CAPTURE(int(isa));
         auto lanes = std::make_unique<SurfaceLanes>();
-        lanes->glossy = glossy;
+        lanes->model = model;
         for (size_t i = 0; i < cases.size(); ++i) set_lane(*lanes, int(i), cases[i]);
         lanes->count = int(cases.size());
         shade_surface_lanes(*lanes, isa);
