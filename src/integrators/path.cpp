@@ -652,17 +652,15 @@ struct PathVariant {
       }
       l.dx[i] = path.ray.direction.x, l.dy[i] = path.ray.direction.y, l.dz[i] = path.ray.direction.z;
       const BsdfMaterial& material = *bsdf_material;
-      if (model == LaneModel::glossy) {
+      if (model == LaneModel::lambert) {
+        color3 albedo = material.lambert()->albedo;
+        l.albedo_r[i] = albedo.x, l.albedo_g[i] = albedo.y, l.albedo_b[i] = albedo.z;
+      } else if (model == LaneModel::glossy) {
         set_glossy_material(l, i, *material.metallic_roughness());
         l.u_lobe[i] = glossy_lobe_choice(*material.metallic_roughness(), path, drawn);
         l.u_x[i] = drawn.direction.x, l.u_y[i] = drawn.direction.y;
-      } else if (model == LaneModel::phong) {
-        set_phong_material(l, i, *material.phong());
-        l.u_lobe[i] = phong_lobe_choice(*material.phong(), path, drawn);
-        l.u_x[i] = drawn.direction.x, l.u_y[i] = drawn.direction.y;
       } else {
-        color3 albedo = material.lambert()->albedo;
-        l.albedo_r[i] = albedo.x, l.albedo_g[i] = albedo.y, l.albedo_b[i] = albedo.z;
+        set_phong_lane(l, i, *material.phong(), path, drawn);
       }
       bool triangle = area && area->shape == AreaLightShape::triangle;
       l.area[i] = triangle;
@@ -784,17 +782,22 @@ struct PathVariant {
     return drawn.has(lobe_choice) ? drawn.lobe_choice : sample_1d(path.own, dimension(path.depth, lobe_choice));
   }
 
-  static void set_phong_material(SurfaceLanes& l, int i, const PhongWeights& w) {
+  // A Phong lane's material, lobe choice and bounce numbers. Out of line: inlined, it cost every
+  // vertex of the Lambert box's gather about 20 instructions (callgrind).
+  [[gnu::noinline]] static void set_phong_lane(SurfaceLanes& l, int i, const PhongWeights& w, const PathState& path,
+                                               VertexDraws& drawn) {
     l.albedo_r[i] = w.kd.x, l.albedo_g[i] = w.kd.y, l.albedo_b[i] = w.kd.z;
     l.ks_r[i] = w.ks.x, l.ks_g[i] = w.ks.y, l.ks_b[i] = w.ks.z;
     l.exponent[i] = w.exponent, l.p_diffuse[i] = w.p_diffuse, l.p_specular[i] = w.p_glossy;
-  }
-  // The lobe choice a Phong vertex draws (scatter): where its BSDF mixes lobes, which a lane
-  // material's (a glossy lobe, no delta lobe) does when it has a diffuse one too.
-  static float phong_lobe_choice(const PhongWeights& w, const PathState& path, VertexDraws& drawn) {
-    if (!(w.p_diffuse > 0)) return 0.5f;
-    drawn.lobe_choice_used = true;
-    return drawn.has(lobe_choice) ? drawn.lobe_choice : sample_1d(path.own, dimension(path.depth, lobe_choice));
+    // The lobe choice scatter draws where the BSDF mixes lobes, which a lane material's (a
+    // glossy lobe, no delta lobe) does when it has a diffuse one too.
+    float u_lobe = 0.5f;
+    if (w.p_diffuse > 0) {
+      drawn.lobe_choice_used = true;
+      u_lobe = drawn.has(lobe_choice) ? drawn.lobe_choice : sample_1d(path.own, dimension(path.depth, lobe_choice));
+    }
+    l.u_lobe[i] = u_lobe;
+    l.u_x[i] = drawn.direction.x, l.u_y[i] = drawn.direction.y;
   }
 
   // The rest of advance() for a vertex shaded in lane `i`: the light sample's result, the path's
