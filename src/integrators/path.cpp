@@ -565,12 +565,16 @@ struct PathVariant {
   // which chooses a point, glTF spot or directional light, an emitting triangle or sphere, or
   // the environment. Its light is chosen, a triangle's point drawn and a glossy material's lobe
   // choice drawn here, as the one-path code would.
+  // `PhongLanes` (ctx.phong_lanes): compiled without the Phong lanes, the gather of a scene that
+  // has none costs what it did before they existed (about 1% of the Lambert box's instructions).
+  template <bool PhongLanes>
   [[gnu::noinline]] static void shade_in_surface_lanes(const RenderContext& ctx, BatchWorkspace& w, int live_count) {
     using LaneModel = RenderContext::LaneModel;
     const SceneDesc& scene = *ctx.scene;
     const SceneAccel& accel = *ctx.accel;
     const LightTable& lights = *ctx.lights;
-    for (int set = 0; set < 3; ++set) {
+    constexpr int sets = PhongLanes ? 3 : 2;
+    for (int set = 0; set < sets; ++set) {
       SurfaceLanes& l = w.surface[set];
       l.count = 0, l.any_area = l.any_shaped = l.any_drawn = false, l.hit_kinds = 0;
       l.model = LaneModel(set + 1);
@@ -637,10 +641,12 @@ struct PathVariant {
           bsdf_material = &*w.resolved_bsdf;
         }
       }
-      int set = int(model) - 1;
-      SurfaceLanes& l = w.surface[set];
+      if constexpr (!PhongLanes)
+        if (model == LaneModel::phong) continue;  // never: ctx.phong_lanes is set where one can be
+      int set = PhongLanes ? int(model) - 1 : model == LaneModel::glossy;
+      SurfaceLanes& l = PhongLanes ? w.surface[set] : model == LaneModel::glossy ? w.surface[1] : w.surface[0];
       int i = l.count++;
-      w.lane_of[k] = set * max_batch_paths + i;
+      w.lane_of[k] = PhongLanes ? set * max_batch_paths + i : model == LaneModel::glossy ? max_batch_paths + i : i;
       l.ngx[i] = id.geometric_normal_raw.x, l.ngy[i] = id.geometric_normal_raw.y, l.ngz[i] = id.geometric_normal_raw.z;
       if (mesh)
         set_triangle_hit(l, i, *mesh, accel, id);
@@ -707,8 +713,8 @@ struct PathVariant {
       l.cosine_x[i] = drawn.cosine.x, l.cosine_y[i] = drawn.cosine.y, l.cosine_z[i] = drawn.cosine.z;
       l.throughput_r[i] = path.throughput.x, l.throughput_g[i] = path.throughput.y, l.throughput_b[i] = path.throughput.z;
     }
-    for (SurfaceLanes& set : w.surface)
-      if (set.count > 0) shade_surface_lanes(set);
+    for (int set = 0; set < sets; ++set)
+      if (w.surface[set].count > 0) shade_surface_lanes(w.surface[set]);
   }
 
   // A textured render's candidate for the lanes (shade_in_surface_lanes): its material resolved
@@ -979,7 +985,9 @@ struct PathVariant {
       if constexpr (surface_lanes_compiled) {
         // The lanes' light samples always trace. A first stage of sub-paths is all first vertices.
         in_lanes = enabled<E>(ctx.effects, effect_shadows) && !(SharesFirstVertex && first_stage);
-        if (in_lanes) shade_in_surface_lanes(ctx, workspace, live_count);
+        if (in_lanes)
+          ctx.phong_lanes ? shade_in_surface_lanes<true>(ctx, workspace, live_count)
+                          : shade_in_surface_lanes<false>(ctx, workspace, live_count);
       }
       for (int k = 0; k < live_count; ++k) {
         int i = live[k];

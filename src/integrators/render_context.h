@@ -60,6 +60,9 @@ struct RenderContext {
   // asks again at each hit on the materials this lets in.
   enum class LaneModel : uint8_t { none, lambert, glossy, phong };
   std::vector<LaneModel> lane_models;
+  // Whether any material can resolve to the Phong lanes (a Phong model with ks): only then is the
+  // batch's gather compiled with them (path.cpp).
+  bool phong_lanes = false;
   TextureLookup texture_lookup;  // --texture-filter and its pyramids
   PixelSpread pixel_spread;      // the camera's, for texture footprints (trilinear only)
   uint32_t effects = effect_all;
