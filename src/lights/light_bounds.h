@@ -56,9 +56,9 @@ inline float sin_of_difference_clamped(float sin_a, float cos_a, float sin_b, fl
 // Estimated light from the group at point `p` of a surface with unit normal `n` (zero vector for a
 // point in a medium): intensity x the largest emitter cosine any light of the group can have
 // towards p x the largest receiver cosine / squared distance; 0 only when no light of the group
-// can reach p. Conservative: never 0 for a group that lights p. The light BVH rates four groups
-// at once with importance4() (importance4.h), which gives exactly this per lane; this is the
-// formula's reference and importance4's fallback where SSE2 is missing.
+// can reach p. Conservative: never 0 for a group that lights p. The light BVH rates eight groups
+// at once with importance8() (importance8.h), which gives exactly this per lane; this is the
+// formula's reference.
 inline float importance(const ImportanceBounds& bounds, vec3 p, vec3 n) {
   using namespace importance_detail;
   if (!(bounds.intensity > 0)) return 0;

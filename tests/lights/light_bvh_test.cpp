@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <memory>
 #include <random>
 
@@ -103,7 +104,7 @@ TEST_CASE("light BVH: one leaf per light with a position, the sun and the sky at
   REQUIRE(lights.sampler == LightSampler::bvh);
   // 32 lamp triangles, 2 panel triangles, 2 spheres, 4 point and spot lights.
   size_t in_tree = 32 + 2 + 2 + 4;
-  CHECK(lights.bvh.nodes.size() < in_tree);  // four-wide: fewer nodes than lights
+  CHECK(lights.bvh.nodes.size() < in_tree);  // eight-wide: fewer nodes than lights
   size_t leaves = 0;
   for (LightBvhLeaf leaf : lights.bvh.leaf_of_light) leaves += leaf.node >= 0;
   CHECK(leaves == in_tree);
@@ -185,6 +186,73 @@ TEST_CASE("light BVH: choices made together (interleaved descents) are the singl
     }
     CHECK(chosen_in_tree > int(points.size()) / 2);  // most choices descend the tree
     CHECK(chosen_at_infinity > 0);  // the sun (and the sky where there is one)
+  }
+}
+
+TEST_CASE("light BVH: every instruction set chooses the same lights with the same probabilities, to the bit") {
+  if (!lane_isa_available(LaneIsa::avx2)) return;  // nothing to compare on this CPU
+  LightTable lights = bvh_table(mixed_light_scene(), {0, 0, 0});
+  std::vector<ShadingPoint> points = random_points(1001, 33);
+  std::mt19937 engine(8);
+  std::vector<vec3> p, n;
+  std::vector<float> u;
+  for (const ShadingPoint& s : points) {
+    p.push_back(s.p), n.push_back(s.n);
+    u.push_back(float(engine() >> 8) * 0x1p-24f);
+  }
+  const int count = int(points.size());
+  std::vector<int> slot[2] = {std::vector<int>(points.size()), std::vector<int>(points.size())};
+  std::vector<float> probability[2] = {std::vector<float>(points.size()), std::vector<float>(points.size())};
+  const LaneIsa isas[2] = {LaneIsa::baseline, LaneIsa::avx2};
+  for (int i = 0; i < 2; ++i)
+    sample_light_bvh_many(lights.bvh, p.data(), n.data(), u.data(), count, slot[i].data(), probability[i].data(), isas[i]);
+  int chosen = 0;
+  for (size_t k = 0; k < points.size(); ++k) {
+    INFO("point ", k);
+    REQUIRE(std::bit_cast<uint32_t>(probability[0][k]) == std::bit_cast<uint32_t>(probability[1][k]));
+    if (!(probability[0][k] > 0)) continue;
+    ++chosen;
+    CHECK(slot[0][k] == slot[1][k]);
+    int single_slot = -1;
+    float single_probability = 0;
+    REQUIRE(sample_light_bvh(lights.bvh, p[k], n[k], u[k], single_slot, single_probability, LaneIsa::avx2));
+    CHECK(single_slot == slot[0][k]);
+    CHECK(std::bit_cast<uint32_t>(single_probability) == std::bit_cast<uint32_t>(probability[0][k]));
+    float walked[2] = {light_bvh_probability(lights.bvh, p[k], n[k], slot[0][k], LaneIsa::baseline),
+                       light_bvh_probability(lights.bvh, p[k], n[k], slot[0][k], LaneIsa::avx2)};
+    CHECK(std::bit_cast<uint32_t>(walked[0]) == std::bit_cast<uint32_t>(walked[1]));
+    CHECK(walked[0] == doctest::Approx(probability[0][k]).epsilon(1e-6));
+  }
+  CHECK(chosen > count * 9 / 10);
+}
+
+TEST_CASE("light BVH: eight-wide nodes, as few as the build reserves, and a shallow tree") {
+  std::mt19937 engine(12);
+  std::uniform_real_distribution<float> coordinate(-10, 10);
+  for (int lights : {1, 2, 3, 7, 8, 9, 15, 16, 17, 63, 64, 65, 100, 513, 800, 2000}) {
+    CAPTURE(lights);
+    std::vector<BoundedLight> bounded;
+    for (int i = 0; i < lights; ++i)
+      bounded.push_back({i, point_light_bounds({coordinate(engine), 2, coordinate(engine)}, {0, -1, 0}, 1, 0, 1)});
+    LightBvh bvh = build_light_bvh(bounded, size_t(lights));
+    REQUIRE(bvh.nodes.size() <= light_bvh_nodes_at_most(uint64_t(lights)));
+    CHECK(bvh.nodes.capacity() == light_bvh_nodes_at_most(uint64_t(lights)));  // reserved once, never grown
+    // Every light in one leaf; the depth of each, in steps from the root.
+    double depth_sum = 0;
+    int deepest = 0;
+    for (int i = 0; i < lights; ++i) {
+      LightBvhLeaf leaf = bvh.leaf_of_light[size_t(i)];
+      REQUIRE(leaf.node >= 0);
+      CHECK(bvh.nodes[size_t(leaf.node)].child[size_t(leaf.lane)] == ~i);
+      int depth = 1;
+      for (int node = leaf.node; bvh.nodes[size_t(node)].parent >= 0; node = bvh.nodes[size_t(node)].parent) ++depth;
+      depth_sum += depth, deepest = std::max(deepest, depth);
+    }
+    // A full eight-wide tree needs log8(lights) steps; the build's splits are by cost, not by
+    // count, so allow some slack, but far less than a four-wide tree's log4.
+    double full = std::max(1.0, std::ceil(std::log(double(lights)) / std::log(8.0)));
+    CHECK(depth_sum / lights <= full + 0.5);
+    CHECK(deepest <= full + 2);
   }
 }
 
