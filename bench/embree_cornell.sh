@@ -3,7 +3,10 @@
 # geometry and albedos (the tutorial's OBJ/MTL, included by a .scene), same camera, same point
 # light, same resolution, samples and path length. Runs them alternately in one session (the
 # machine is shared and noisy), prints the median wall-time ratio and each one's rays per
-# second (rays counted exactly by an LD_PRELOAD shim around rtcIntersect1/rtcIntersect1M/rtcOccluded1), and
+# second (rays counted exactly by an LD_PRELOAD shim around rtcIntersect1/rtcIntersect1M/rtcOccluded1,
+# in one untimed run each after the timed ones: the shim's shared counter costs the tutorial, which
+# calls Embree once a ray, a contended atomic a ray across threads, 13.4 s instead of 8.2 s at
+# 512², 2 threads on an AMD EPYC, while radiant pays it once a stream), and
 # the traversal rate of random rays in the render's own mix of closest-hit and occlusion rays
 # through radiant's accelerator, for reference. A third run puts the tutorial on the watertight
 # Embree kernel radiant uses (RTC_SCENE_FLAG_ROBUST; embree_cornell_common.sh), which separates
@@ -39,11 +42,11 @@ source bench/embree_cornell_common.sh
 source bench/quiet_machine.sh
 
 counter=$(pwd)/build/bench/libray_counter.so
-run_embree() { embree_render "$size" "$spp" "$work/embree.ppm" RAY_COUNTER_OUT="$work/embree.rays" LD_PRELOAD="$counter"; }
-run_embree_robust() {
-  embree_render_robust "$size" "$spp" "$work/embree_robust.ppm" RAY_COUNTER_OUT="$work/embree_robust.rays" LD_PRELOAD="$counter"
-}
-run_radiant() { radiant_render "$size" "$spp" "$work/radiant.png" RAY_COUNTER_OUT="$work/radiant.rays" LD_PRELOAD="$counter"; }
+# run_X [environment...]: the timed runs pass none; the counting runs pass the shim's.
+run_embree() { embree_render "$size" "$spp" "$work/embree.ppm" "$@"; }
+run_embree_robust() { embree_render_robust "$size" "$spp" "$work/embree_robust.ppm" "$@"; }
+run_radiant() { radiant_render "$size" "$spp" "$work/radiant.png" "$@"; }
+count_rays() { "$1" RAY_COUNTER_OUT="$work/$2.rays" LD_PRELOAD="$counter"; }
 total_rays() { awk '{s += $2} END {print s}' "$1"; }
 
 require_quiet_machine "$max_load"
@@ -56,6 +59,9 @@ for ((i = 0; i < repeats; i++)); do
   ratios+=("$(echo "$r / $e" | bc -l)") robust_ratios+=("$(echo "$r / $b" | bc -l)")
   log+="| $((i + 1)) | $e ($e_note) | $b ($b_note) | $r ($r_note) |"$'\n'
 done
+count_rays run_embree embree
+count_rays run_embree_robust embree_robust
+count_rays run_radiant radiant
 embree_s=$(median "${embree_times[@]}") robust_s=$(median "${robust_times[@]}") radiant_s=$(median "${radiant_times[@]}")
 embree_rays=$(total_rays "$work/embree.rays") robust_rays=$(total_rays "$work/embree_robust.rays")
 radiant_rays=$(total_rays "$work/radiant.rays")
