@@ -562,7 +562,7 @@ struct PathVariant {
 
   // Gathers the stage's vertices that the surface lanes can shade (surface_lanes.h) and shades
   // them: a live path at a hit of a mesh's triangle, a sphere or a plane, whose material is a lane material,
-  // which chooses a point, glTF spot or directional light, an emitting triangle or sphere, or
+  // which chooses a point, spot or directional light, an emitting triangle or sphere, or
   // the environment. Its light is chosen, a triangle's point drawn and a glossy material's lobe
   // choice drawn here, as the one-path code would.
   // `PhongLanes` (ctx.phong_lanes): compiled without the Phong lanes, the gather of a scene that
@@ -576,7 +576,7 @@ struct PathVariant {
     constexpr int sets = PhongLanes ? 3 : 2;
     for (int set = 0; set < sets; ++set) {
       SurfaceLanes& l = w.surface[set];
-      l.count = 0, l.any_area = l.any_shaped = l.any_drawn = false, l.hit_kinds = 0;
+      l.count = 0, l.any_area = l.any_shaped = l.any_classic_spot = l.any_drawn = false, l.hit_kinds = 0;
       l.model = LaneModel(set + 1);
     }
     for (int k = 0; k < live_count; ++k) {
@@ -614,16 +614,12 @@ struct PathVariant {
                                                                 : sample_1d(sample, dimension(depth, light_choice))));
         select_pdf = lights.selection.pmf[slot];
       }
-      // A point light, a glTF spot (a smooth cone, not a classic spot's power of the cosine), a
-      // directional light, an emitting triangle or sphere, or the environment.
+      // A point, spot or directional light, an emitting triangle or sphere, or the environment.
       const LightDesc* point = nullptr;
       const AreaLight* area = nullptr;
       if (slot < lights.delta_lights.size()) {
         point = &scene.lights[lights.delta_lights[slot]];
-        bool cone = point->kind == LightKind::spot && point->use_cone;
-        if (!(point->kind == LightKind::point || cone || point->kind == LightKind::directional) ||
-            !enabled<E>(ctx.effects, effect_direct_delta))
-          continue;
+        if (point->kind == LightKind::ambient || !enabled<E>(ctx.effects, effect_direct_delta)) continue;
       } else if (slot < lights.environment_slot()) {
         area = &lights.area_lights[slot - lights.delta_lights.size()];
         if (!enabled<E>(ctx.effects, effect_emission)) continue;
@@ -795,10 +791,11 @@ struct PathVariant {
     l.albedo_r[i] = w.kd.x, l.albedo_g[i] = w.kd.y, l.albedo_b[i] = w.kd.z;
     l.ks_r[i] = w.ks.x, l.ks_g[i] = w.ks.y, l.ks_b[i] = w.ks.z;
     l.exponent[i] = w.exponent, l.p_diffuse[i] = w.p_diffuse, l.p_specular[i] = w.p_glossy;
-    // The lobe choice scatter draws where the BSDF mixes lobes, which a lane material's (a
-    // glossy lobe, no delta lobe) does when it has a diffuse one too.
+    l.mirror_r[i] = w.kr.x, l.mirror_g[i] = w.kr.y, l.mirror_b[i] = w.kr.z, l.p_mirror[i] = w.p_mirror;
+    // The lobe choice scatter draws where the BSDF mixes lobes (Bsdf::chooses_lobe: more than
+    // one of a lane material's diffuse, glossy and mirror lobes).
     float u_lobe = 0.5f;
-    if (w.p_diffuse > 0) {
+    if (int(w.p_diffuse > 0) + int(w.p_glossy > 0) + int(w.p_mirror > 0) > 1) {
       drawn.lobe_choice_used = true;
       u_lobe = drawn.has(lobe_choice) ? drawn.lobe_choice : sample_1d(path.own, dimension(path.depth, lobe_choice));
     }
@@ -830,11 +827,17 @@ struct PathVariant {
     }
     if (!l.scatters[i]) return false;
     int depth = path.depth;
-    if (!enabled<E>(ctx.effects, effect_indirect)) path.max_depth = std::min(path.max_depth, depth + 1);
-    path.ray_kind = &RayCounts::indirect;
+    bool delta = l.delta[i];  // a Phong mirror's, which is never transmissive in the lanes
+    if (delta) {
+      if (!enabled<E>(ctx.effects, effect_reflection)) return false;
+      path.ray_kind = &RayCounts::reflection;
+    } else {
+      if (!enabled<E>(ctx.effects, effect_indirect)) path.max_depth = std::min(path.max_depth, depth + 1);
+      path.ray_kind = &RayCounts::indirect;
+    }
     color3 weight = {l.weight_r[i], l.weight_g[i], l.weight_b[i]};
     throughput *= depth == 0 ? weight * path.split_weight : weight;
-    path.specular_bounce = false;
+    path.specular_bounce = delta;
     path.previous_pdf = l.pdf[i];
     path.previous_position = {l.px[i], l.py[i], l.pz[i]};
     path.previous_normal = {l.nx[i], l.ny[i], l.nz[i]};

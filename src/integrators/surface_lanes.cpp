@@ -78,10 +78,10 @@ template <class Eval>
   return s;
 }
 
-// Any delta light the lanes take (delta_light.cpp, sample_any_delta_light): a point light with
-// the glTF spot's smooth cone and the glTF range's window where it has them, or a directional
-// light. The point light's own numbers where it has neither: falloff 1 divided by the
-// attenuation is 1 / attenuation to the bit.
+// Any delta light (delta_light.cpp, sample_any_delta_light): a point light with the glTF spot's
+// smooth cone or a classic spot's power of the cosine (spot_powers) and the glTF range's window
+// where it has them, or a directional light. The point light's own numbers where it has
+// neither: falloff 1 divided by the attenuation is 1 / attenuation to the bit.
 template <class Eval>
 [[gnu::always_inline]] inline LaneLight shaped_delta_light_lane(const SurfaceLanes& l, int i, vec3 point, Eval eval) {
   LaneLight s;
@@ -92,6 +92,7 @@ template <class Eval>
   vec3 axis = {l.spot_x[i], l.spot_y[i], l.spot_z[i]};
   float t = std::clamp((dot(axis, -towards) - l.cos_outer[i]) * l.cone_scale[i], 0.0f, 1.0f);
   float falloff = l.spot[i] != 0 ? t * t : 1.0f;
+  falloff = l.classic_spot[i] != 0 ? l.spot_power[i] : falloff;
   float r = d / l.range[i];
   float window = std::clamp(1 - r * r * r * r, 0.0f, 1.0f);
   falloff = l.range[i] > 0 ? falloff * window : falloff;
@@ -439,8 +440,9 @@ template <int Hits>
   l.valid[i] = valid;
 }
 [[gnu::always_inline]] inline void store_bounce(SurfaceLanes& l, int i, bool scatters, vec3 origin, vec3 wi,
-                                                float pdf, color3 weight) {
+                                                float pdf, color3 weight, bool delta = false) {
   l.scatters[i] = scatters;
+  l.delta[i] = delta;
   l.ox[i] = origin.x, l.oy[i] = origin.y, l.oz[i] = origin.z;
   l.wix[i] = wi.x, l.wiy[i] = wi.y, l.wiz[i] = wi.z;
   l.pdf[i] = pdf;
@@ -529,39 +531,56 @@ template <int Hits>
   point_light_lane(l, i, hit.point, PhongRecord{lobes, &l.phong_cos[i]});
 }
 
+// The lobe a Phong lane's u_lobe chooses (sample_local: the same sums in the same order).
+struct PhongLobeChoice {
+  bool diffuse, glossy, mirror;
+};
+[[gnu::always_inline]] inline PhongLobeChoice choose_phong_lobe(const SurfaceLanes& l, int i, bool valid) {
+  float u_lobe = l.u_lobe[i], threshold = l.p_diffuse[i];
+  bool diffuse = valid & (u_lobe < threshold);
+  bool glossy = valid & !diffuse & (u_lobe < (threshold += l.p_specular[i]));
+  bool mirror = valid & !diffuse & !glossy & (u_lobe < threshold + l.p_mirror[i]);
+  return {diffuse, glossy, mirror};
+}
+
 // A Phong lane's bounce direction (sample_local): the glossy lobe's where it is chosen, drawn
-// one lane at a time in the library's function (std::pow, the sine and cosine), otherwise the
-// diffuse lobe's cosine-warped one; and the lobe power towards it.
+// one lane at a time in the library's function (std::pow, the sine and cosine), the mirror
+// direction where the mirror is, otherwise the diffuse lobe's cosine-warped one; and the lobe
+// power towards it.
 void sample_phong_bounces(SurfaceLanes& l) {
   for (int i = 0; i < l.count; ++i) {
     PhongLaneLobes lobes = stored_phong_lobes(l, i);
-    float u_lobe = l.u_lobe[i], p_diffuse = l.p_diffuse[i];
-    bool glossy = lobes.valid && !(u_lobe < p_diffuse) && u_lobe < p_diffuse + l.p_specular[i];
-    vec3 local = glossy ? sample_phong_lobe(lobes.wo, l.exponent[i], {l.u_x[i], l.u_y[i]})
-                        : vec3{l.cosine_x[i], l.cosine_y[i], l.cosine_z[i]};
+    PhongLobeChoice lobe = choose_phong_lobe(l, i, lobes.valid);
+    vec3 local = lobe.glossy   ? sample_phong_lobe(lobes.wo, l.exponent[i], {l.u_x[i], l.u_y[i]})
+                 : lobe.mirror ? reflect_local(lobes.wo)
+                               : vec3{l.cosine_x[i], l.cosine_y[i], l.cosine_z[i]};
     l.specular_x[i] = local.x, l.specular_y[i] = local.y, l.specular_z[i] = local.z;
     l.bounce_power[i] = lobes.valid ? phong_lobe_power(phong_cosine(lobes, local), l.exponent[i]) : 0.0f;
   }
 }
 
-// A Phong lane's point light sample (sample_one_light) and bounce (mixture_sample), their lobe
-// powers worked out.
+// A Phong lane's point light sample (sample_one_light) and bounce (mixture_sample, or the
+// mirror's delta_sample: kr over its probability), their lobe powers worked out.
 [[gnu::always_inline]] inline void phong_light_and_bounce_lane(SurfaceLanes& l, int i) {
   PhongLaneLobes lobes = stored_phong_lobes(l, i);
   vec3 point = {l.px[i], l.py[i], l.pz[i]}, geometric = {l.gnx[i], l.gny[i], l.gnz[i]};
   float error = l.error[i];
   LaneLight light = point_light_lane(l, i, point, PhongValue{l, i, lobes, l.phong_power[i]});
   store_light_outputs(l, i, light_outputs(l, i, light, point, {error, error, error}, geometric));
-  float u_lobe = l.u_lobe[i], p_diffuse = l.p_diffuse[i];
-  bool diffuse = lobes.valid & (u_lobe < p_diffuse);
-  bool glossy = lobes.valid & !diffuse & (u_lobe < p_diffuse + l.p_specular[i]);
+  PhongLobeChoice lobe = choose_phong_lobe(l, i, lobes.valid);
   vec3 local = {l.specular_x[i], l.specular_y[i], l.specular_z[i]};
   float pdf;
   color3 f = eval_phong_lane(l, i, lobes, local, l.bounce_power[i], pdf);
   color3 weight = f / pdf;
-  bool scatters = (diffuse | glossy) & (pdf > 0) & !lane::black(f) & lane::finite(weight) & !lane::black(weight);
+  bool scatters =
+      (lobe.diffuse | lobe.glossy) & (pdf > 0) & !lane::black(f) & lane::finite(weight) & !lane::black(weight);
+  float p_mirror = l.p_mirror[i];
+  color3 mirror_weight = color3{l.mirror_r[i], l.mirror_g[i], l.mirror_b[i]} / p_mirror;
+  scatters = lobe.mirror ? !lane::black(mirror_weight) : scatters;
+  weight = select(lobe.mirror, mirror_weight, weight);
+  pdf = lobe.mirror ? p_mirror : pdf;
   vec3 wi = to_world(make_shading_frame(lobes.normal), local);
-  store_bounce(l, i, scatters, offset_lane(point, {error, error, error}, geometric, wi), wi, pdf, weight);
+  store_bounce(l, i, scatters, offset_lane(point, {error, error, error}, geometric, wi), wi, pdf, weight, lobe.mirror);
 }
 
 // A lane whose light is an emitting triangle, after the first loop: its light sample replaces
@@ -651,6 +670,19 @@ template <RenderContext::LaneModel Model>
   if constexpr (Model == RenderContext::LaneModel::glossy) l.fallback[i] |= (!light.in_range) & shaped;
 }
 
+// A classic spot's falloff at the lane's point (delta_light.cpp, spot_falloff): cos^exponent in
+// front of the light, nothing behind it. The cosine is shaped_delta_light_lane's, in the same
+// operations; std::pow, which no vector loop reproduces to the bit, one lane at a time.
+void spot_powers(SurfaceLanes& l) {
+  for (int i = 0; i < l.count; ++i) {
+    if (!l.shaped[i] || !l.classic_spot[i]) continue;
+    vec3 to_light = vec3{l.light_x[i], l.light_y[i], l.light_z[i]} - vec3{l.px[i], l.py[i], l.pz[i]};
+    vec3 towards = to_light * (1 / length(to_light));
+    float cos_angle = dot(vec3{l.spot_x[i], l.spot_y[i], l.spot_z[i]}, -towards);
+    l.spot_power[i] = cos_angle > 0 ? std::pow(cos_angle, l.spot_exponent[i]) : 0.0f;
+  }
+}
+
 // Phong lanes' light loops take two passes: the first records each light direction's cosine
 // (PhongRecord), phong_powers raises it where `which` (every lane when null), and the loop
 // proper reads the power (PhongValue).
@@ -684,6 +716,7 @@ template <RenderContext::LaneModel Model, bool AnyArea, int Hits>
     for (int i = 0; i < l.count; ++i) lambert_lane<Hits>(l, i);
   }
   if (l.any_shaped) {
+    if (l.any_classic_spot) spot_powers(l);
     if constexpr (phong) {
       for (int i = 0; i < l.count; ++i) record_shaped_phong(l, i);
       phong_powers(l, l.shaped);
@@ -743,8 +776,11 @@ void shade_surface_lanes(SurfaceLanes& lanes, LaneIsa isa) {
 
 void set_lane_shaped_light(SurfaceLanes& l, int i, const LightDesc& light) {
   bool spot = light.kind == LightKind::spot, directional = light.kind == LightKind::directional;
+  bool classic = spot && !light.use_cone;
   l.any_shaped = true;
-  l.spot[i] = spot, l.directional[i] = directional;
+  l.any_classic_spot |= classic;
+  l.spot[i] = spot && light.use_cone, l.classic_spot[i] = classic, l.directional[i] = directional;
+  l.spot_exponent[i] = light.spot_exponent;
   l.range[i] = directional ? 0.0f : light.range;  // a directional light has no range
   l.spot_x[i] = light.direction.x, l.spot_y[i] = light.direction.y, l.spot_z[i] = light.direction.z;
   // spot_falloff's cone, worked out as it does.
@@ -759,9 +795,10 @@ RenderContext::LaneModel lane_model_of(const SurfaceMaterial& m, const BsdfMater
   if (plain && bsdf.lambert() && max_component(bsdf.lambert()->albedo) > 0) return LaneModel::lambert;
   if (plain && bsdf.metallic_roughness() && is_metallic_roughness_lane_case(*bsdf.metallic_roughness()))
     return LaneModel::glossy;
-  // Phong with its glossy lobe and no delta lobe (a Phong material without one is a Lambert).
-  if (const PhongWeights* w = bsdf.phong();
-      plain && w && w->scatters && w->p_glossy > 0 && w->p_mirror == 0 && w->p_transmission == 0)
+  // Phong with a glossy or mirror lobe beside a non-delta one (a Phong material with neither
+  // is a Lambert; one with only a mirror takes no light sample) and no transmission.
+  if (const PhongWeights* w = bsdf.phong(); plain && w && w->scatters && (w->p_glossy > 0 || w->p_mirror > 0) &&
+                                            (w->p_diffuse > 0 || w->p_glossy > 0) && w->p_transmission == 0)
     return LaneModel::phong;
   return LaneModel::none;
 }

@@ -1,7 +1,8 @@
 // A batch's commonest path vertices shaded across SIMD lanes: a hit of a mesh's triangle, a sphere
-// or a plane, lit (through a shadow ray the caller traces) by one point, glTF spot or directional light, one
+// or a plane, lit (through a shadow ray the caller traces) by one point, spot or directional light, one
 // emitting triangle or sphere, or the environment, with a Lambert material, a metallic-roughness
-// one in the case metallic_roughness_lane.h takes, or a Phong one with a glossy lobe (`model`).
+// one in the case metallic_roughness_lane.h takes, or a Phong one with a glossy or mirror lobe
+// (`model`).
 // The batched path tracer (integrators/path.cpp) gathers such vertices of a stage into these
 // lanes, one set per model, shades them together and scatters the results back; every other
 // vertex, and every lane this kernel cannot finish (`fallback`), is shaded one path at a time.
@@ -69,10 +70,13 @@ struct SurfaceLanes {
   alignas(32) int32_t two_sided[stride];
   alignas(32) float u_point_x[stride], u_point_y[stride];
   // Where `shaped`, the delta light is a glTF spot (`spot`: its axis in spot_*, the cosine of its
-  // outer cone and the smooth step's scale), has a range (`range` > 0), or is `directional`
-  // (its direction of travel in spot_*); the point light's fields then hold finite values.
-  alignas(32) int32_t shaped[stride], spot[stride], directional[stride];
+  // outer cone and the smooth step's scale), a classic spot (`classic_spot`: its axis in spot_*
+  // and its exponent; between the kernel's loops, its falloff cos^exponent in spot_power,
+  // std::pow one lane at a time), has a range (`range` > 0), or is `directional` (its direction
+  // of travel in spot_*); the point light's fields then hold finite values.
+  alignas(32) int32_t shaped[stride], spot[stride], classic_spot[stride], directional[stride];
   alignas(32) float spot_x[stride], spot_y[stride], spot_z[stride], cos_outer[stride], cone_scale[stride];
+  alignas(32) float spot_exponent[stride], spot_power[stride];
   alignas(32) float range[stride];
   // Where `drawn`, the light is sampled one lane at a time, in the library's functions, whose
   // trigonometry no vector loop reproduces to the bit: the environment (of `lights`, the
@@ -96,21 +100,23 @@ struct SurfaceLanes {
   alignas(32) float specular[stride], specular_f0_r[stride], specular_f0_g[stride], specular_f0_b[stride];
   alignas(32) float specular_f0_max[stride];
   alignas(32) float u_lobe[stride], u_x[stride], u_y[stride];
-  // A Phong lane's material (PhongWeights: kd in albedo_*, its lobe probabilities in p_diffuse
-  // and p_specular) and, between the kernel's loops, the cosine of the angle between a light's
+  // A Phong lane's material (PhongWeights: kd in albedo_*, kr in mirror_*, its lobe
+  // probabilities in p_diffuse, p_specular (glossy) and p_mirror) and, between the kernel's loops, the cosine of the angle between a light's
   // direction and wo's mirror direction, and its power (phong_lobe_power: std::pow, one lane at a
   // time), and the same power for the bounce's direction.
   alignas(32) float ks_r[stride], ks_g[stride], ks_b[stride], exponent[stride];
+  alignas(32) float mirror_r[stride], mirror_g[stride], mirror_b[stride], p_mirror[stride];
   alignas(32) float phong_cos[stride], phong_power[stride], bounce_power[stride];
 
   // Outputs. `fallback`: a value left float's normal range where the one-path code rescales it;
   // the vertex must be shaded one path at a time. Otherwise: the hit's position and the
   // shading normal facing the ray (the path's previous_*); `scatters`, and where it does the
-  // next ray (origin, direction wi), its pdf and the throughput's weight; `lit`, and where it is the shadow ray
+  // next ray (origin, direction wi), its pdf, the throughput's weight and whether the bounce is
+  // a delta lobe's (`delta`: a Phong lane's mirror); `lit`, and where it is the shadow ray
   // (origin, direction; tmax 1 - 1e-4, or infinite where `shadow_infinite`: the sun or the
   // environment), where it ends (shadow_target's; not set for an infinite one) and the light's
   // contribution through the throughput.
-  alignas(32) int32_t fallback[stride], scatters[stride], lit[stride];
+  alignas(32) int32_t fallback[stride], scatters[stride], delta[stride], lit[stride];
   alignas(32) float px[stride], py[stride], pz[stride];
   alignas(32) float nx[stride], ny[stride], nz[stride];
   alignas(32) float ox[stride], oy[stride], oz[stride];
@@ -135,9 +141,9 @@ struct SurfaceLanes {
   int count = 0;
   RenderContext::LaneModel model = RenderContext::LaneModel::lambert;  // the lanes' model (not none)
   // Set by whoever fills the lanes: whether any lane's light is a triangle, a shaped delta
-  // light, or drawn (the environment or a sphere), and which kinds of hit beside untransformed triangles the lanes
-  // hold. The kernel leaves out what none needs.
-  bool any_area = false, any_shaped = false, any_drawn = false;
+  // light (a classic spot among them), or drawn (the environment or a sphere), and which kinds
+  // of hit beside untransformed triangles the lanes hold. The kernel leaves out what none needs.
+  bool any_area = false, any_shaped = false, any_classic_spot = false, any_drawn = false;
   static constexpr int transformed_hits = 1, shape_hits = 2;
   int hit_kinds = 0;
 };
@@ -145,11 +151,12 @@ struct SurfaceLanes {
 // Shades lanes [0, count).
 void shade_surface_lanes(SurfaceLanes& lanes, LaneIsa isa = LaneIsa::best);
 
-// Lane i's fields for a shaped delta light (set_lane_delta_light), and sets any_shaped.
+// Lane i's fields for a shaped delta light (set_lane_delta_light), and sets any_shaped (and
+// any_classic_spot for a classic spot).
 void set_lane_shaped_light(SurfaceLanes& lanes, int i, const LightDesc& light);
 
-// Lane i's light fields for a delta light the lanes take: a point light, a glTF spot (use_cone)
-// or a directional light. Inline: the plain point light is every lane's light on most boxes.
+// Lane i's light fields for a delta light: a point light, a glTF or classic spot, or a
+// directional light. Inline: the plain point light is every lane's light on most boxes.
 [[gnu::always_inline]] inline void set_lane_delta_light(SurfaceLanes& l, int i, const LightDesc& light) {
   l.light_x[i] = light.position.x, l.light_y[i] = light.position.y, l.light_z[i] = light.position.z;
   l.kc[i] = light.kc, l.kl[i] = light.kl, l.kq[i] = light.kq;
@@ -161,8 +168,8 @@ void set_lane_shaped_light(SurfaceLanes& lanes, int i, const LightDesc& light);
 
 // Which lanes can shade a vertex whose material resolved to `m` (`bsdf` its BSDF material), if
 // any: opaque, not emitting, lit; Lambertian with some albedo, the metallic-roughness case of
-// materials/metallic_roughness_lane.h, or Phong with a glossy lobe and no mirror or
-// transmission. Normal and bump maps are the caller's (given_normal).
+// materials/metallic_roughness_lane.h, or Phong with a glossy or mirror lobe beside a
+// non-delta one, and no transmission. Normal and bump maps are the caller's (given_normal).
 RenderContext::LaneModel lane_model_of(const SurfaceMaterial& m, const BsdfMaterial& bsdf);
 
 }  // namespace radiant

@@ -51,9 +51,10 @@ RenderContext make_context(const PreparedScene& prepared, const ResolvedSettings
   // Untextured; a textured render asks again at each hit (path.cpp, shade_in_surface_lanes).
   for (size_t i = 0; i < scene.materials.size(); ++i)
     ctx.lane_models.push_back(lane_model_of(ctx.flat_materials[i], ctx.flat_bsdf_materials[i]));
-  // A texture scales the authored ks (resolve_material), so ks 0 stays 0 at every hit.
+  // A texture scales the authored ks (resolve_material), so ks 0 stays 0 at every hit; kr is
+  // not textured.
   for (const MaterialDesc& m : scene.materials)
-    ctx.phong_lanes |= m.model == MaterialModel::phong && max_component(m.ks) > 0;
+    ctx.phong_lanes |= m.model == MaterialModel::phong && (max_component(m.ks) > 0 || max_component(m.kr) > 0);
   ctx.absorption.reserve(scene.materials.size());
   for (const MaterialDesc& m : scene.materials) ctx.absorption.push_back(volume_absorption(m));
   ctx.texture_lookup = {options.texture_filter, pyramids};

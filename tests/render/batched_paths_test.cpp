@@ -109,12 +109,12 @@ void require_same_render(const SceneDesc& scene, RenderOptions o, bool packets =
 }  // namespace
 
 // A room of matte walls, a glTF plastic box, a rough metal panel and Phong's glossy lobe (a box
-// and a panel) lit by point lights (one with
-// a range), a glTF spot, the sun, the sky (at full size) and an emitting panel, whose vertices the batch shades in its
-// surface lanes (integrators/surface_lanes.h), one wall with vertex normals, a rotated and a
-// mirrored instance, and with `shapes` a matte, a plastic and an emitting sphere and a plane for a ceiling,
-// beside every vertex the lanes must leave to the one-path code: vertex normals that are all
-// zero, a smooth metal, the emitting panel itself, a classic spot (a power of the cosine).
+// with a mirror lobe too, and a panel) lit by point lights (one with a range), a glTF spot, a
+// classic spot (a power of the cosine), the sun, the sky (at full size) and an emitting panel,
+// whose vertices the batch shades in its surface lanes (integrators/surface_lanes.h), one wall
+// with vertex normals, a rotated and a mirrored instance, and with `shapes` a matte, a plastic
+// and an emitting sphere and a plane for a ceiling, beside every vertex the lanes must leave to
+// the one-path code: vertex normals that are all zero, a smooth metal, the emitting panel itself.
 // Scaled down by `scale`, every triangle's
 // normal gets a squared length below float's normal range, and every lane falls back. Nothing in
 // it is seen through or textured (see_through_occluders and textured_lanes_room add those).
@@ -152,8 +152,8 @@ SceneDesc surface_lanes_room(float scale, bool shapes = false) {
   MaterialDesc panel;
   panel.kd = {0, 0, 0}, panel.emission = {3, 3, 2}, panel.double_sided = false;
   add_quad(scene, {-1, 4, 1}, {1, 4, 1}, {1, 4, 3}, {-1, 4, 3}, add_material(scene, panel));  // facing down
-  MaterialDesc shiny;  // the .scene format's Phong with a glossy lobe, weights summing past one
-  shiny.kd = {0.6f, 0.3f, 0.2f}, shiny.ks = {0.5f, 0.5f, 0.45f}, shiny.shininess = 40;
+  MaterialDesc shiny;  // the .scene format's Phong with glossy and mirror lobes, weights summing past one
+  shiny.kd = {0.6f, 0.3f, 0.2f}, shiny.ks = {0.5f, 0.5f, 0.45f}, shiny.kr = {0.2f, 0.2f, 0.25f}, shiny.shininess = 40;
   add_box(scene, {2.2f, 0, -3.5f}, {3.5f, 1.2f, -2.5f}, add_material(scene, shiny));
   MaterialDesc lacquer;  // a glossy lobe alone, sharp
   lacquer.kd = {0, 0, 0}, lacquer.ks = {0.7f, 0.6f, 0.5f}, lacquer.shininess = 300;

@@ -3,6 +3,7 @@
 // render-level check, the batch against one path at a time, is in batched_paths_test.cpp.
 #include <doctest/doctest.h>
 
+#include <array>
 #include <bit>
 #include <cmath>
 #include <limits>
@@ -154,6 +155,7 @@ void set_lane(SurfaceLanes& l, int i, const LaneCase& c) {
     l.albedo_r[i] = w.kd.x, l.albedo_g[i] = w.kd.y, l.albedo_b[i] = w.kd.z;
     l.ks_r[i] = w.ks.x, l.ks_g[i] = w.ks.y, l.ks_b[i] = w.ks.z;
     l.exponent[i] = w.exponent, l.p_diffuse[i] = w.p_diffuse, l.p_specular[i] = w.p_glossy;
+    l.mirror_r[i] = w.kr.x, l.mirror_g[i] = w.kr.y, l.mirror_b[i] = w.kr.z, l.p_mirror[i] = w.p_mirror;
     l.u_lobe[i] = c.u_lobe, l.u_x[i] = c.u.x, l.u_y[i] = c.u.y;
   }
 }
@@ -173,7 +175,7 @@ struct ReferenceBsdf {
 // What the one-path code makes of the case: the hit as fill_triangle_hit writes it for an
 // untransformed triangle, then the library's own shading, lobes, bounce, light
 // sample and ray origins.
-void check_lane(const SurfaceLanes& l, int i, const LaneCase& c, int& specular_bounces) {
+void check_lane(const SurfaceLanes& l, int i, const LaneCase& c, int& specular_bounces, int& mirror_bounces) {
   SurfaceHit hit;
   vec3 e1 = c.p1 - c.p0, e2 = c.p2 - c.p0;
   float b1 = c.barycentric.x, b2 = c.barycentric.y;
@@ -222,6 +224,8 @@ void check_lane(const SurfaceLanes& l, int i, const LaneCase& c, int& specular_b
     CHECK(same_bits({l.wix[i], l.wiy[i], l.wiz[i]}, bounce->wi));
     CHECK(same_bits(l.pdf[i], bounce->pdf));
     CHECK(same_bits({l.weight_r[i], l.weight_g[i], l.weight_b[i]}, bounce->weight));
+    CHECK(bool(l.delta[i]) == bounce->delta);
+    mirror_bounces += bounce->delta;
     specular_bounces += l.model == RenderContext::LaneModel::glossy ? c.u_lobe < l.p_specular[i]
                         : l.model == RenderContext::LaneModel::phong  ? !(c.u_lobe < l.p_diffuse[i])
                                                                       : false;
@@ -302,12 +306,14 @@ std::vector<LaneCase> lane_cases() {
     c.light.position = corner + point(4);
     c.light.intensity = {5 * next(), 5 * next(), 5 * next()};
     c.light.kc = k % 3 == 0 ? 1.0f : 0.0f, c.light.kl = k % 3 == 1 ? 0.5f : 0.0f, c.light.kq = k % 3 == 2 ? 0.0f : 1.0f;
-    // Beside plain point lights: glTF spots aimed near the point (some with a range), point
-    // lights with a range that some points are beyond, and directional lights from any side.
+    // Beside plain point lights: glTF spots and classic spots (cos^exponent, from a wide beam to
+    // a narrow one) aimed near the point, some with a range, point lights with a range that some
+    // points are beyond, and directional lights from any side.
     if (k % 6 == 0) {
-      c.light.kind = LightKind::spot, c.light.use_cone = true;
+      c.light.kind = LightKind::spot, c.light.use_cone = k % 24 != 12;
       c.light.direction = normalize(corner - c.light.position + point(2));
       c.light.inner_cone = 0.2f * next(), c.light.outer_cone = c.light.inner_cone + (k % 12 == 0 ? 0.0f : 0.6f * next());
+      c.light.spot_exponent = std::array{0.5f, 1.0f, 20.0f, 300.0f}[k / 24 % 4];
       c.light.range = k % 18 == 6 ? 3.0f : 0.0f;
     } else if (k % 6 == 2) {
       c.light.kind = LightKind::directional;
@@ -393,7 +399,8 @@ std::vector<LaneCase> glossy_cases() {
 }
 
 // The same hits on Phong materials with a glossy lobe (the .scene format's kd, ks and
-// shininess): broad and sharp lobes, a glossy lobe alone, and weights that sum past one (scaled).
+// shininess): broad and sharp lobes, a glossy lobe alone, and weights that sum past one (scaled);
+// a mirror (kr) beside them in a third, and beside the diffuse lobe alone in a few.
 std::vector<LaneCase> phong_cases() {
   uint32_t state = 13;
   auto next = [&] { return float((state = state * 1664525u + 1013904223u) >> 8) * 0x1p-24f; };
@@ -405,6 +412,8 @@ std::vector<LaneCase> phong_cases() {
     m.kd = k % 9 == 4 ? color3{} : k % 7 == 3 ? color3{0.9f, 0.8f, 0.95f} : c.albedo;
     m.ks = k % 7 == 3 ? color3{0.8f, 0.6f, 0.7f} : color3{0.05f + 0.5f * next(), 0.05f + 0.5f * next(), 0.3f};
     m.shininess = k % 5 == 0 ? 1.0f : k % 5 == 1 ? 500.0f : 10 + 200 * next();
+    if (k % 3 == 2) m.kr = k % 4 == 2 ? color3{0.5f, 0.45f, 0.4f} : color3{0.3f * next(), 0.2f, 0.0f};
+    if (k % 12 == 2 && !is_black(m.kd)) m.ks = {};
     c.u_lobe = next();
     c.u = {next(), next()};
     c.cosine = sample_cosine_hemisphere(c.u);  // the batch warps the same numbers
@@ -517,7 +526,7 @@ TEST_CASE("Lambert lanes: each lane is the one-path vertex to the bit, on every 
       for (size_t i = 0; i < cases->size(); ++i) {
         CAPTURE(i);
         int unused = 0;
-        check_lane(*lanes, int(i), (*cases)[i], unused);
+        check_lane(*lanes, int(i), (*cases)[i], unused, unused);
         lit += lanes->lit[i], scatters += lanes->scatters[i];
         lit_by_triangles += lanes->lit[i] && (*cases)[i].area;
         bool sphere = (*cases)[i].area && (*cases)[i].triangle.shape == AreaLightShape::sphere;
@@ -587,15 +596,21 @@ TEST_CASE("Glossy and Phong lanes: each lane is the one-path vertex to the bit, 
         for (size_t i = 0; i < cases->size(); ++i) set_lane(*lanes, int(i), (*cases)[i]);
         lanes->count = int(cases->size());
         shade_surface_lanes(*lanes, isa);
-        int lit = 0, scatters = 0, lit_by_triangles = 0, specular_bounces = 0, shaped = 0, lit_by_shaped = 0;
+        int lit = 0, scatters = 0, lit_by_triangles = 0, specular_bounces = 0, mirror_bounces = 0, shaped = 0,
+            lit_by_shaped = 0, classic_spots = 0, lit_by_classic_spots = 0;
         for (size_t i = 0; i < cases->size(); ++i) {
           CAPTURE(i);
-          check_lane(*lanes, int(i), (*cases)[i], specular_bounces);
+          check_lane(*lanes, int(i), (*cases)[i], specular_bounces, mirror_bounces);
           lit += lanes->lit[i], scatters += lanes->scatters[i];
           lit_by_triangles += lanes->lit[i] && (*cases)[i].area;
           bool shaped_light = !(*cases)[i].area && lanes->shaped[i];
           shaped += shaped_light, lit_by_shaped += shaped_light && lanes->lit[i];
+          bool classic_spot = shaped_light && lanes->classic_spot[i];
+          classic_spots += classic_spot, lit_by_classic_spots += classic_spot && lanes->lit[i];
         }
+        CHECK(lit_by_classic_spots > 3);
+        CHECK(classic_spots - lit_by_classic_spots > 0);
+        if (model == RenderContext::LaneModel::phong) CHECK(mirror_bounces > 5);
         CHECK(lit_by_shaped > 10);
         CHECK(shaped - lit_by_shaped > 10);
         // Both outcomes of both tests occur, for both kinds of light and both lobes.
@@ -644,7 +659,7 @@ TEST_CASE("Surface lanes: the environment's light sample is the one-path vertex'
         int environment = 0, lit_by_environment = 0, unused = 0;
         for (size_t i = 0; i < cases.size(); ++i) {
           CAPTURE(i);
-          check_lane(*lanes, int(i), cases[i], unused);
+          check_lane(*lanes, int(i), cases[i], unused, unused);
           environment += cases[i].environment != nullptr;
           lit_by_environment += cases[i].environment && lanes->lit[i];
         }
