@@ -92,7 +92,8 @@ template <class Eval>
   vec3 axis = {l.spot_x[i], l.spot_y[i], l.spot_z[i]};
   float t = std::clamp((dot(axis, -towards) - l.cos_outer[i]) * l.cone_scale[i], 0.0f, 1.0f);
   float falloff = l.spot[i] != 0 ? t * t : 1.0f;
-  falloff = l.classic_spot[i] != 0 ? l.spot_power[i] : falloff;
+  float spot_power = l.spot_power[i];  // loaded in every lane: a conditional load kept the loop scalar
+  falloff = l.classic_spot[i] != 0 ? spot_power : falloff;
   float r = d / l.range[i];
   float window = std::clamp(1 - r * r * r * r, 0.0f, 1.0f);
   falloff = l.range[i] > 0 ? falloff * window : falloff;
@@ -576,7 +577,9 @@ void sample_phong_bounces(SurfaceLanes& l) {
       (lobe.diffuse | lobe.glossy) & (pdf > 0) & !lane::black(f) & lane::finite(weight) & !lane::black(weight);
   float p_mirror = l.p_mirror[i];
   color3 mirror_weight = color3{l.mirror_r[i], l.mirror_g[i], l.mirror_b[i]} / p_mirror;
-  scatters = lobe.mirror ? !lane::black(mirror_weight) : scatters;
+  // The lobes are exclusive, so `scatters` is false where the mirror is chosen (as a select,
+  // the loop was not vectorised).
+  scatters = (lobe.mirror & !lane::black(mirror_weight)) | scatters;
   weight = select(lobe.mirror, mirror_weight, weight);
   pdf = lobe.mirror ? p_mirror : pdf;
   vec3 wi = to_world(make_shading_frame(lobes.normal), local);
@@ -783,10 +786,15 @@ void set_lane_shaped_light(SurfaceLanes& l, int i, const LightDesc& light) {
   l.spot_exponent[i] = light.spot_exponent;
   l.range[i] = directional ? 0.0f : light.range;  // a directional light has no range
   l.spot_x[i] = light.direction.x, l.spot_y[i] = light.direction.y, l.spot_z[i] = light.direction.z;
-  // spot_falloff's cone, worked out as it does.
-  float cos_outer = std::cos(light.outer_cone), cos_inner = std::cos(light.inner_cone);
-  l.cos_outer[i] = cos_outer;
-  l.cone_scale[i] = 1.0f / std::max(0.001f, cos_inner - cos_outer);
+  // A glTF spot's cone, worked out as spot_falloff does; finite values for the other lights,
+  // whose lanes compute a cone they do not use.
+  if (l.spot[i]) {
+    float cos_outer = std::cos(light.outer_cone), cos_inner = std::cos(light.inner_cone);
+    l.cos_outer[i] = cos_outer;
+    l.cone_scale[i] = 1.0f / std::max(0.001f, cos_inner - cos_outer);
+  } else {
+    l.cos_outer[i] = 0, l.cone_scale[i] = 1;
+  }
 }
 
 RenderContext::LaneModel lane_model_of(const SurfaceMaterial& m, const BsdfMaterial& bsdf) {
