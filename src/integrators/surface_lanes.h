@@ -101,9 +101,10 @@ struct SurfaceLanes {
   alignas(32) float specular_f0_max[stride];
   alignas(32) float u_lobe[stride], u_x[stride], u_y[stride];
   // A Phong lane's material (PhongWeights: kd in albedo_*, kr in mirror_*, its lobe
-  // probabilities in p_diffuse, p_specular (glossy) and p_mirror) and, between the kernel's loops, the cosine of the angle between a light's
-  // direction and wo's mirror direction, and its power (phong_lobe_power: std::pow, one lane at a
-  // time), and the same power for the bounce's direction.
+  // probabilities in p_diffuse, p_specular (glossy) and p_mirror) and, between the kernel's
+  // loops, the cosine of the angle between a light's direction and wo's mirror direction, and
+  // its power (phong_lobe_power: std::pow, one lane at a time), and the same power for the
+  // bounce's direction.
   alignas(32) float ks_r[stride], ks_g[stride], ks_b[stride], exponent[stride];
   alignas(32) float mirror_r[stride], mirror_g[stride], mirror_b[stride], p_mirror[stride];
   alignas(32) float phong_cos[stride], phong_power[stride], bounce_power[stride];
