@@ -95,7 +95,7 @@ struct LightSampleResult {
   bool traces = false;
 };
 
-// A vertex's random numbers drawn ahead, for a whole batch at once (draw_sobol_lanes): the values
+// A vertex's random numbers drawn ahead, for a whole batch at once (draw_sample_lanes): the values
 // the vertex would draw itself, to the bit (a 1D value is the first of its dimension's pair).
 // Those a scene cannot use are not drawn (`has`); run() draws each when it needs it.
 struct VertexDraws {
@@ -534,12 +534,12 @@ struct PathVariant {
     int live[max_batch_paths], shadowed[max_batch_paths];
     VertexScratch scratch;
     SharedFirstVertex first_vertex;  // with sub-paths
-    // A stage's draws (draw_ahead): the Sobol lanes, the directions' cosine warps, each live
+    // A stage's draws (draw_ahead): the sampler's lanes, the directions' cosine warps, each live
     // path's values, and whether the last stage's BSDFs chose lobes (then this one draws their
     // choices ahead too). A batch's first stage goes by the previous batch's first stage: the
     // last stage before it, a few long paths deep, says little about the camera's hits. Either
     // guess only decides where the numbers are drawn, never their values.
-    SobolLanes lanes;
+    SampleLanes lanes;
     float cosine_x[max_batch_paths], cosine_y[max_batch_paths], cosine_z[max_batch_paths];
     VertexDraws drawn[max_batch_paths];
     bool lobe_choices = true, first_lobe_choices = true;
@@ -858,25 +858,23 @@ struct PathVariant {
   // Every live path's random numbers for the vertex it is at, drawn together in SIMD, a group
   // of lanes per dimension: those its scene can use (a light point only with area or
   // environment lights, a light choice only with one to make, roulette once a path can reach
-  // its start depth). Other samplers than Sobol draw as run() does.
+  // its start depth). Every sampler: a `.scene` file's jittered sampler keeps its pixel
+  // positions in path mode, and its vertices draw hashes that run in lanes as well as Sobol's.
+  // At least one path is live.
   [[gnu::always_inline]] static void draw_ahead(const RenderContext& ctx, BatchWorkspace& w, int live_count) {
     const LightTable& lights = *ctx.lights;
     const PathState* paths = w.paths;
     const int* live = w.live;
-    bool sobol = live_count > 0 && paths[live[0]].sample->kind == SamplerKind::sobol;
-    uint32_t wants = 0;
-    if (sobol) {
-      wants = 1u << bsdf_direction;
-      if (LightSampling && (!lights.area_lights.empty() || lights.has_environment())) wants |= 1u << light_point;
-      if (LightSampling && light_choice_draws(lights)) wants |= 1u << light_choice;
-      if (w.lobe_choices) wants |= 1u << lobe_choice;
-      for (int k = 0; k < live_count; ++k)
-        if (paths[live[k]].depth + 1 >= roulette_start_depth) wants |= 1u << roulette;
-    }
-    SobolLanes& lanes = w.lanes;
+    uint32_t wants = 1u << bsdf_direction;
+    if (LightSampling && (!lights.area_lights.empty() || lights.has_environment())) wants |= 1u << light_point;
+    if (LightSampling && light_choice_draws(lights)) wants |= 1u << light_choice;
+    if (w.lobe_choices) wants |= 1u << lobe_choice;
+    for (int k = 0; k < live_count; ++k)
+      if (paths[live[k]].depth + 1 >= roulette_start_depth) wants |= 1u << roulette;
+    SampleLanes& lanes = w.lanes;
     lanes.count = 0;
     constexpr VertexDimension groups[] = {bsdf_direction, light_point, light_choice, lobe_choice, roulette};
-    static_assert(SobolLanes::capacity >= std::size(groups) * max_batch_paths);
+    static_assert(SampleLanes::capacity >= std::size(groups) * max_batch_paths);
     for (VertexDimension d : groups) {
       if (!(wants & (1u << d))) continue;
       // The bounce and roulette are the sub-path's own; the light sample is the camera sample's
@@ -888,7 +886,7 @@ struct PathVariant {
                   dimension(d == roulette ? path.depth + 1 : path.depth, d));
       }
     }
-    draw_sobol_lanes(lanes);
+    draw_sample_lanes(paths[live[0]].sample->kind, lanes);  // a render's paths share one sampler
     int group = 0;
     auto next_group = [&](VertexDimension d) { return wants & (1u << d) ? live_count * group++ : -1; };
     int direction = next_group(bsdf_direction), point = next_group(light_point), choice = next_group(light_choice),

@@ -191,11 +191,11 @@ struct PassRunner {
       HitId hits[max_batch_paths];
       // The Sobol sampler's pixel pairs (dimension 0, as sample_pixel draws them), a tile's at once;
       // the grid and jittered samplers' positions, with the tile's pixel numbers they are drawn for.
-      SobolLanes pixel_pairs;
+      SampleLanes pixel_pairs;
       uint32_t tile_pixel[batch_tile_pixels];
       float stratified_x[batch_tile_pixels], stratified_y[batch_tile_pixels];
     };
-    static_assert(SobolLanes::capacity >= batch_tile_pixels);
+    static_assert(SampleLanes::capacity >= batch_tile_pixels);
     static tbb::enumerable_thread_specific<Workspace> per_thread;
     auto& [tile, pending, batch, rays, hits, pixel_pairs, tile_pixel, stratified_x, stratified_y] = per_thread.local();
     bool sobol = s.sampler == SamplerKind::sobol;
@@ -216,7 +216,7 @@ struct PassRunner {
             if (sobol) {
               pixel_pairs.count = 0;
               for (int i = 0; i < count; ++i) pixel_pairs.add(sample_at(tile[i].x, tile[i].y, index), 0);
-              draw_sobol_lanes(pixel_pairs);
+              draw_sample_lanes(SamplerKind::sobol, pixel_pairs);
             } else if (stratified) {
               draw_stratified_pixels(s.sampler, uint32_t(s.spp), index, seed, tile_pixel, count, stratified_x,
                                      stratified_y);

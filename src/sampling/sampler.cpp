@@ -5,6 +5,7 @@
 
 #include "math/fast_divisor.h"
 #include "sampling/hash.h"
+#include "sampling/hashed_value.h"
 #include "sampling/sobol.h"
 #include "sampling/strata.h"
 
@@ -13,7 +14,7 @@ namespace radiant {
 namespace {
 
 float random_value(const SampleContext& c, uint32_t dimension) {
-  return bits_to_unit_float(hash4(c.pixel, c.index, dimension, c.seed));
+  return hashed_value(c.pixel, c.index, dimension, c.seed);
 }
 
 }  // namespace
@@ -41,7 +42,7 @@ vec2 sample_pixel(const SampleContext& c) {
       uint32_t cell = permutation_element(grid.cells.remainder(c.index), grid.cells, order_seed);
       vec2 offset = {0.5f, 0.5f};
       if (c.kind == SamplerKind::jittered)
-        offset = {bits_to_unit_float(hash4(c.pixel, cell, 0, c.seed)), bits_to_unit_float(hash4(c.pixel, cell, 1, c.seed))};
+        offset = {hashed_value(c.pixel, cell, 0, c.seed), hashed_value(c.pixel, cell, 1, c.seed)};
       return {(float(grid.nx.remainder(cell)) + offset.x) / float(grid.nx.d),
               (float(grid.nx.quotient(cell)) + offset.y) / float(grid.ny.d)};
     }

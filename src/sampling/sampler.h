@@ -41,11 +41,12 @@ constexpr uint32_t lens_dimension = 0xF0000000u;
 float sample_1d(const SampleContext& context, uint32_t dimension);
 vec2 sample_2d(const SampleContext& context, uint32_t dimension);
 
-// Many Sobol pairs drawn at once (SamplerKind::sobol only), laid out one array per field so
-// that the draw runs across them in SIMD (math/lane_isa.h): fill the first `count` lanes'
-// inputs, call draw_sobol_lanes, read x and y. Lane i's (x, y) is sample_2d({sobol, pixel[i], index[i], _,
-// seed[i]}, dimension[i]) to the bit (a 1D value is the pair's x, as sample_1d's).
-struct SobolLanes {
+// Many pairs drawn at once, laid out one array per field so that the draw runs across them in
+// SIMD (math/lane_isa.h): fill the first `count` lanes' inputs, call draw_sample_lanes, read x
+// and y. Lane i's (x, y) is sample_2d({kind, pixel[i], index[i], _, seed[i]}, dimension[i]) to
+// the bit (a 1D value is the pair's x, as sample_1d's), for every sampler: Sobol's shuffled
+// and scrambled points, or the other samplers' hashes.
+struct SampleLanes {
   static constexpr int capacity = 1280;
   alignas(32) uint32_t pixel[capacity], index[capacity], dimension[capacity], seed[capacity];
   alignas(32) float x[capacity], y[capacity];
@@ -56,6 +57,6 @@ struct SobolLanes {
     ++count;
   }
 };
-void draw_sobol_lanes(SobolLanes& lanes, LaneIsa isa = LaneIsa::best);
+void draw_sample_lanes(SamplerKind kind, SampleLanes& lanes, LaneIsa isa = LaneIsa::best);
 
 }  // namespace radiant

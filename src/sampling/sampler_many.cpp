@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "sampling/hash.h"
+#include "sampling/hashed_value.h"
 #include "sampling/sobol.h"
 #include "sampling/strata.h"
 
@@ -23,10 +24,26 @@ namespace {
   }
 }
 
-[[gnu::target("avx2")]] void sobol_pairs_avx2(SobolLanes& l) {
+[[gnu::target("avx2")]] void sobol_pairs_avx2(SampleLanes& l) {
   sobol_pairs(l.pixel, l.index, l.dimension, l.seed, l.count, l.x, l.y);
 }
-void sobol_pairs_baseline(SobolLanes& l) { sobol_pairs(l.pixel, l.index, l.dimension, l.seed, l.count, l.x, l.y); }
+void sobol_pairs_baseline(SampleLanes& l) { sobol_pairs(l.pixel, l.index, l.dimension, l.seed, l.count, l.x, l.y); }
+
+// The other samplers' pairs, sample_2d's two hashes per lane: eight at a time with AVX2, four
+// with SSE2 (which GCC gives 32-bit multiplies made of its 64-bit ones).
+[[gnu::always_inline]] inline void hashed_pairs(const uint32_t* __restrict pixel, const uint32_t* __restrict index,
+                                                const uint32_t* __restrict dimension, const uint32_t* __restrict seed,
+                                                int count, float* __restrict x, float* __restrict y) {
+  for (int i = 0; i < count; ++i) {
+    x[i] = hashed_value(pixel[i], index[i], dimension[i], seed[i]);
+    y[i] = hashed_value(pixel[i], index[i], dimension[i] + 1, seed[i]);
+  }
+}
+
+[[gnu::target("avx2")]] void hashed_pairs_avx2(SampleLanes& l) {
+  hashed_pairs(l.pixel, l.index, l.dimension, l.seed, l.count, l.x, l.y);
+}
+void hashed_pairs_baseline(SampleLanes& l) { hashed_pairs(l.pixel, l.index, l.dimension, l.seed, l.count, l.x, l.y); }
 
 // sample_pixel's grid and jittered branch across the lanes, loop by loop: the hashes, the
 // permutation's rounds and the final arithmetic vectorise; the divisor's 128-bit products stay
@@ -60,8 +77,8 @@ constexpr int stratified_chunk = 64;
   const float width = float(grid.nx.d), height = float(grid.ny.d);
   if (jittered) {
     for (int i = 0; i < count; ++i) {
-      x[i] = (column[i] + bits_to_unit_float(hash4(pixel[i], cell[i], 0, seed))) / width;
-      y[i] = (row[i] + bits_to_unit_float(hash4(pixel[i], cell[i], 1, seed))) / height;
+      x[i] = (column[i] + hashed_value(pixel[i], cell[i], 0, seed)) / width;
+      y[i] = (row[i] + hashed_value(pixel[i], cell[i], 1, seed)) / height;
     }
   } else {
     for (int i = 0; i < count; ++i) x[i] = (column[i] + 0.5f) / width, y[i] = (row[i] + 0.5f) / height;
@@ -97,11 +114,12 @@ void draw_stratified_pixels(SamplerKind kind, uint32_t samples, uint32_t index, 
   }
 }
 
-void draw_sobol_lanes(SobolLanes& lanes, LaneIsa isa) {
-  if (resolve_lane_isa(isa) == LaneIsa::avx2)
-    sobol_pairs_avx2(lanes);
+void draw_sample_lanes(SamplerKind kind, SampleLanes& lanes, LaneIsa isa) {
+  bool avx2 = resolve_lane_isa(isa) == LaneIsa::avx2;
+  if (kind == SamplerKind::sobol)
+    avx2 ? sobol_pairs_avx2(lanes) : sobol_pairs_baseline(lanes);
   else
-    sobol_pairs_baseline(lanes);
+    avx2 ? hashed_pairs_avx2(lanes) : hashed_pairs_baseline(lanes);
 }
 
 }  // namespace radiant

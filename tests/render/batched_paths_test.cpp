@@ -442,9 +442,9 @@ TEST_CASE("batched paths: textures, normal maps and emission textures of real gl
 }
 
 TEST_CASE("batched paths: every sampler and both light samplers draw what one path draws") {
-  // The batch draws a vertex's random numbers ahead, in SIMD for Sobol (light choices, lobe
-  // choices, roulette among them: the room has four lights, rough metal and glass, depth 12);
-  // the other samplers draw as one path does.
+  // The batch draws a vertex's random numbers ahead in SIMD, Sobol's points or the other
+  // samplers' hashes (light choices, lobe choices, roulette among them: the room has four
+  // lights, rough metal and glass, depth 12), and its surface lanes shade with them.
   SceneDesc scene = effects_room(false);
   for (SamplerKind sampler : {SamplerKind::sobol, SamplerKind::jittered, SamplerKind::random})
     for (LightSampler light_sampler : {LightSampler::power, LightSampler::bvh}) {

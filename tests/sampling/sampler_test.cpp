@@ -1,6 +1,7 @@
 // Samplers: strata coverage, progressive prefixes, purity, and the pixel positions and Sobol pairs drawn in SIMD.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <bit>
 #include <set>
 #include <vector>
@@ -133,40 +134,45 @@ TEST_CASE("sampler: Sobol dimension 1 by shift-and-mask steps is the product wit
   }
 }
 
-TEST_CASE("sampler: Sobol pairs drawn many at once are sample_2d's and sample_1d's to the bit") {
-  SobolLanes lanes;
-  std::vector<SampleContext> contexts;
-  std::vector<uint32_t> dimensions;
-  uint32_t state = 99;
-  auto next = [&] { return state = state * 1664525u + 1013904223u; };
-  for (int i = 0; i < SobolLanes::capacity; ++i) {
-    // Small and huge indices, pixels and seeds, and dimension 0 (the unshuffled pixel pair).
-    SampleContext c{SamplerKind::sobol, i % 3 ? next() % 4096 : next(), i % 5 ? next() % 256 : next(), 64,
-                    i % 7 ? next() % 4 : next()};
-    uint32_t d = i % 11 == 0 ? 0 : 2 + next() % 200;
-    contexts.push_back(c);
-    dimensions.push_back(d);
-    lanes.add(c, d);
-  }
-  // Counts that end inside and at the end of a SIMD register, with every instruction set this
-  // CPU runs (they must agree, or shards from different machines would not merge to one image).
-  for (LaneIsa isa : {LaneIsa::best, LaneIsa::baseline, LaneIsa::avx2}) {
-    if (!lane_isa_available(isa)) continue;
-    CAPTURE(int(isa));
-    for (int count : {SobolLanes::capacity, 13, 8, 1}) {
-      lanes.count = count;
-      draw_sobol_lanes(lanes, isa);
-      for (int i = 0; i < count; ++i) {
-        CAPTURE(i);
-        const SampleContext& c = contexts[size_t(i)];
-        uint32_t d = dimensions[size_t(i)];
-        vec2 expected = sample_2d(c, d);
-        REQUIRE(std::bit_cast<uint32_t>(lanes.x[i]) == std::bit_cast<uint32_t>(expected.x));
-        REQUIRE(std::bit_cast<uint32_t>(lanes.y[i]) == std::bit_cast<uint32_t>(expected.y));
-        if (d > 0)
-          REQUIRE(std::bit_cast<uint32_t>(lanes.x[i]) == std::bit_cast<uint32_t>(sample_1d(c, d)));
-        else
-          REQUIRE(std::bit_cast<uint32_t>(lanes.y[i]) == std::bit_cast<uint32_t>(sample_pixel(c).y));
+TEST_CASE("sampler: pairs drawn many at once are sample_2d's and sample_1d's to the bit, for every sampler") {
+  SampleLanes lanes;
+  for (SamplerKind kind : {SamplerKind::sobol, SamplerKind::jittered, SamplerKind::grid, SamplerKind::random}) {
+    CAPTURE(int(kind));
+    std::vector<SampleContext> contexts;
+    std::vector<uint32_t> dimensions;
+    uint32_t state = 99;
+    auto next = [&] { return state = state * 1664525u + 1013904223u; };
+    lanes.count = 0;
+    for (int i = 0; i < SampleLanes::capacity; ++i) {
+      // Small and huge indices, pixels and seeds, and dimension 0 (Sobol's unshuffled pixel pair).
+      SampleContext c{kind, i % 3 ? next() % 4096 : next(), i % 5 ? next() % 256 : next(), 64,
+                      i % 7 ? next() % 4 : next()};
+      uint32_t d = i % 11 == 0 ? 0 : 2 + next() % 200;
+      contexts.push_back(c);
+      dimensions.push_back(d);
+      lanes.add(c, d);
+    }
+    // Counts that end inside and at the end of a SIMD register, with every instruction set this
+    // CPU runs (they must agree, or shards from different machines would not merge to one image).
+    for (LaneIsa isa : {LaneIsa::best, LaneIsa::baseline, LaneIsa::avx2}) {
+      if (!lane_isa_available(isa)) continue;
+      CAPTURE(int(isa));
+      for (int count : {SampleLanes::capacity, 13, 8, 1}) {
+        lanes.count = count;
+        std::fill(lanes.x, lanes.x + count, -1.0f);
+        draw_sample_lanes(kind, lanes, isa);
+        for (int i = 0; i < count; ++i) {
+          CAPTURE(i);
+          const SampleContext& c = contexts[size_t(i)];
+          uint32_t d = dimensions[size_t(i)];
+          vec2 expected = sample_2d(c, d);
+          REQUIRE(std::bit_cast<uint32_t>(lanes.x[i]) == std::bit_cast<uint32_t>(expected.x));
+          REQUIRE(std::bit_cast<uint32_t>(lanes.y[i]) == std::bit_cast<uint32_t>(expected.y));
+          if (d > 0)
+            REQUIRE(std::bit_cast<uint32_t>(lanes.x[i]) == std::bit_cast<uint32_t>(sample_1d(c, d)));
+          else if (kind == SamplerKind::sobol || kind == SamplerKind::random)  // the others stratify it
+            REQUIRE(std::bit_cast<uint32_t>(lanes.y[i]) == std::bit_cast<uint32_t>(sample_pixel(c).y));
+        }
       }
     }
   }
