@@ -189,8 +189,9 @@ struct PassRunner {
       BatchPath batch[max_batch_paths];
       const Ray* rays[max_batch_paths];
       HitId hits[max_batch_paths];
-      // The Sobol sampler's pixel pairs (dimension 0, as sample_pixel draws them), a tile's at once;
-      // the grid and jittered samplers' positions, with the tile's pixel numbers they are drawn for.
+      // The Sobol and random samplers' pixel pairs (dimension 0, as sample_pixel draws them), a
+      // tile's at once; the grid and jittered samplers' positions, with the tile's pixel numbers
+      // they are drawn for.
       SampleLanes pixel_pairs;
       uint32_t tile_pixel[batch_tile_pixels];
       float stratified_x[batch_tile_pixels], stratified_y[batch_tile_pixels];
@@ -198,8 +199,7 @@ struct PassRunner {
     static_assert(SampleLanes::capacity >= batch_tile_pixels);
     static tbb::enumerable_thread_specific<Workspace> per_thread;
     auto& [tile, pending, batch, rays, hits, pixel_pairs, tile_pixel, stratified_x, stratified_y] = per_thread.local();
-    bool sobol = s.sampler == SamplerKind::sobol;
-    bool stratified = s.sampler == SamplerKind::grid || s.sampler == SamplerKind::jittered;
+    bool pairs = s.sampler == SamplerKind::sobol || s.sampler == SamplerKind::random;  // or grid, jittered
     RayCounts& c = counts.local();
     for (int y0 = r.rows().begin(); y0 < r.rows().end(); y0 += 8)
       for (int x0 = r.cols().begin(); x0 < r.cols().end(); x0 += 8) {
@@ -213,11 +213,11 @@ struct PassRunner {
           uint32_t batch_end = std::min(end, batch_first + batch_samples);
           int paths = 0, samples = 0;
           for (uint32_t index = batch_first; index < batch_end; ++index) {
-            if (sobol) {
+            if (pairs) {
               pixel_pairs.count = 0;
               for (int i = 0; i < count; ++i) pixel_pairs.add(sample_at(tile[i].x, tile[i].y, index), 0);
-              draw_sample_lanes(SamplerKind::sobol, pixel_pairs);
-            } else if (stratified) {
+              draw_sample_lanes(s.sampler, pixel_pairs);
+            } else {
               draw_stratified_pixels(s.sampler, uint32_t(s.spp), index, seed, tile_pixel, count, stratified_x,
                                      stratified_y);
             }
@@ -225,9 +225,7 @@ struct PassRunner {
               Pending& p = pending[samples++];
               p = tile[i];
               SampleContext sample = sample_at(p.x, p.y, index);
-              vec2 pixel_pair = sobol        ? vec2{pixel_pairs.x[i], pixel_pairs.y[i]}
-                                : stratified ? vec2{stratified_x[i], stratified_y[i]}
-                                             : sample_pixel(sample);
+              vec2 pixel_pair = pairs ? vec2{pixel_pairs.x[i], pixel_pairs.y[i]} : vec2{stratified_x[i], stratified_y[i]};
               std::optional<Ray> ray = camera_ray(p.x, p.y, sample, pixel_pair, p.negative);
               p.path = ray ? paths : -1;
               if (ray) {
