@@ -55,10 +55,6 @@ struct SceneAccel {
   mutable std::atomic<uint64_t> untraceable_rays{0};
   // A few analytic shapes and no meshes: traced without Embree.
   DirectShapes direct_shapes;
-  // Some geometry calls back into radiant while Embree traverses it (analytic shapes, alpha-mask
-  // filters). The callbacks take one ray at a time, so such an accelerator never traces packets;
-  // set when one is attached and kept until the next build.
-  bool calls_back = false;
 
   SceneAccel() = default;
   SceneAccel(const SceneAccel&) = delete;
@@ -87,7 +83,8 @@ void update_scene_accel(SceneAccel& accel, const SceneChanges& changes);
 // Nearest hit along the ray (from t = 0 to ray.tmax); none for an untraceable ray.
 HitId intersect_nearest(const SceneAccel& accel, const Ray& ray);
 // Whether intersect_nearest_many and occluded_many trace streams here (otherwise they trace ray
-// by ray: analytic shapes and alpha masks call back one ray at a time).
+// by ray: a scene of a few shapes traced without Embree). Analytic shapes and alpha masks,
+// which Embree calls back for, take its packets.
 bool traces_packets(const SceneAccel& accel);
 // How the rays of one call relate: a tile's camera rays travel together, and Embree sorts them
 // into packets; the bounces and shadow rays of different paths mostly do not.

@@ -89,10 +89,10 @@ SceneDesc effects_room(bool cutout) {
   return scene;
 }
 
-// Every way of tracing; checks that the scene traces its rays as expected (as Embree packets and
-// streams, or one at a time through its callbacks) and that the images agree.
-void require_same_render(const SceneDesc& scene, RenderOptions o, bool packets = true) {
-  REQUIRE(traces_packets(*build_scene_accel(scene)) == packets);
+// Every way of tracing; checks that the scene traces its rays as Embree packets and streams
+// (analytic shapes and alpha masks through callbacks that take them) and that the images agree.
+void require_same_render(const SceneDesc& scene, RenderOptions o) {
+  REQUIRE(traces_packets(*build_scene_accel(scene)));
   o.path_batching = PathBatching::none;
   RenderResult alone = render_scene(scene, o);
   for (PathBatching batching : {PathBatching::camera_rays, PathBatching::all_rays}) {
@@ -231,7 +231,7 @@ TEST_CASE("batched paths: vertices shaded in SIMD lanes render what one path ren
           CHECK(result.settings.light_sampler == light_sampler);
           CHECK((result.settings.effects & (effect_group_transparency | effect_group_textures)) == 0);
           CHECK(result.stats.rays.shadow > 1000);
-          require_same_render(scene, o, !shapes);
+          require_same_render(scene, o);
         }
       }
     }
@@ -461,9 +461,8 @@ TEST_CASE("batched paths: every sampler and both light samplers draw what one pa
     }
 }
 
-TEST_CASE("batched paths: analytic shapes and alpha masks, traced one ray at a time, batch the same") {
-  // Their Embree callbacks take one ray at a time, so the batch traces its rays one by one; its
-  // shading and random numbers still run across the batch.
+TEST_CASE("batched paths: analytic shapes and alpha masks, whose hits Embree calls back for, batch the same") {
+  // Their callbacks take Embree's packets, so the batch traces these scenes' rays in streams too.
   SceneDesc room = effects_room(false);
   MaterialDesc chrome;
   chrome.kd = {0.1f, 0.1f, 0.1f}, chrome.kr = {0.7f, 0.7f, 0.7f};
@@ -478,7 +477,7 @@ TEST_CASE("batched paths: analytic shapes and alpha masks, traced one ray at a t
     RenderOptions o;
     o.width = 26, o.height = 19, o.spp = 4, o.mode = mode, o.max_depth = 8;
     o.aovs = {"albedo", "normal", "depth"};
-    require_same_render(room, o, false);
+    require_same_render(room, o);
   }
   // The bundled many-lights scene: spheres and a plane under 400 lamps, by both light samplers.
   SceneDesc lamps = load_scene(source_path("assets/many-lights.scene").string());
@@ -487,7 +486,7 @@ TEST_CASE("batched paths: analytic shapes and alpha masks, traced one ray at a t
     RenderOptions o;
     o.width = 24, o.height = 18, o.spp = 4, o.mode = RenderMode::path;
     o.light_sampler = light_sampler;
-    require_same_render(lamps, o, false);
+    require_same_render(lamps, o);
   }
 }
 
