@@ -15,17 +15,18 @@
 # Usage: bench/ab_pair.sh BINARY_A BINARY_B [--rounds 10] [--size 256] [--spp 32]
 #        [--scene cornell.scene|cornell.gltf|cornell-lambertian.gltf|cornell-textured.gltf|cornell-glass.gltf]
 #        [--file SCENE]
-#        [--flags "RADIANT FLAGS"]
+#        [--flags "RADIANT FLAGS"] [--mode path|naive|whitted]
 # (--file: any scene file instead of the tutorial's box, rendered at --size x --size, e.g.
 # assets/many-lights.scene for the light BVH's descent. --flags: more flags for both renders,
-# e.g. "--env sky.exr" to light a model by an environment map.)
+# e.g. "--env sky.exr" to light a model by an environment map. --mode: the integrator, path
+# unless given.)
 # Needs: embree-tools (the tutorial's scene).
 set -euo pipefail
 (($# >= 2)) || { echo "usage: $0 BINARY_A BINARY_B [--rounds N] [--size N] [--spp N]" >&2; exit 2; }
 binary_a=$(realpath "$1") binary_b=$(realpath "$2")
 shift 2
 cd "$(dirname "$0")/.."
-rounds=10 size=256 spp=32 threads=1 extra_flags=()
+rounds=10 size=256 spp=32 threads=1 mode=path extra_flags=()
 while (($#)); do
   case $1 in
     --rounds) rounds=$2; shift 2 ;;
@@ -34,6 +35,7 @@ while (($#)); do
     --scene) radiant_scene=$2; shift 2 ;;
     --file) scene_file=$(realpath "$2"); shift 2 ;;
     --flags) read -r -a extra_flags <<<"$2"; shift 2 ;;
+    --mode) mode=$2; shift 2 ;;
     *) echo "unknown option $1" >&2; exit 2 ;;
   esac
 done
@@ -47,7 +49,7 @@ cpu_seconds() {
   local TIMEFORMAT=%U core=$1
   shift
   { time taskset -c "$core" "$1" render "${scene_file:-$work/${radiant_scene:-cornell.scene}}" -o "$2.png" --width "$size" --height "$size" --spp "$spp" \
-      --max-depth 8 --mode path --threads "$threads" --quiet "${extra_flags[@]}" >/dev/null; } 2>"$2"
+      --max-depth 8 --mode "$mode" --threads "$threads" --quiet "${extra_flags[@]}" >/dev/null; } 2>"$2"
 }
 ratios=()
 for ((i = 0; i < rounds; i++)); do
