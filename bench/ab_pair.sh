@@ -64,4 +64,4 @@ for ((i = 0; i < rounds; i++)); do
 done
 printf 'median CPU time ratio B/A over %d rounds: %.3f\n' "$rounds" "$(median "${ratios[@]}")"
 printf 'geometric mean of the ratios (core speeds cancel over an even number of rounds): %.3f\n' \
-  "$(printf '%s\n' "${ratios[@]}" | awk '{s += log($1)} END {print exp(s / NR)}')"
+  "$(geometric_mean "${ratios[@]}")"

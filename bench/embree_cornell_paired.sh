@@ -1,7 +1,11 @@
 #!/usr/bin/env bash
 # radiant against Embree's tutorial path tracer at equal samples, both running at once: each
 # round starts the two together, one thread each on its own core, so both see the same clock
-# and the same background; which one starts first alternates. On a virtual machine whose
+# and the same background; which one starts first alternates, and so do the cores: each is
+# pinned to one (taskset) and they swap every round, so that a fixed difference between the
+# cores' speeds cancels in the geometric mean of the ratios over an even number of rounds, as
+# in bench/ab_pair.sh. Unpinned, the forty-fourth session's AMD EPYC gave the same `.scene` box
+# 0.80 in some rounds and 1.22 in others, by which core each program landed on. On a virtual machine whose
 # effective clock drifts between runs (bench/embree_cornell.sh has seen the tutorial take 9.5 s
 # and 13.9 s for the same render in one session), this ratio is steadier than one of runs in
 # turn. It measures one thread each, not the two-thread render the other benchmark times; both
@@ -48,12 +52,14 @@ cpu_seconds() {
 tutorial() { cpu_seconds "$work/tutorial" "$tutorial_render" "$size" "$spp" "$work/tutorial.ppm"; }
 radiant() { cpu_seconds "$work/radiant" radiant_render "$size" "$spp" "$work/radiant.png"; }
 
+# on_core CORE FUNCTION: the function in a subshell pinned to CORE, whose processes inherit it.
+on_core() { (taskset -pc "$1" "$BASHPID" >/dev/null && "$2"); }
 ratios=()
 for ((i = 0; i < rounds; i++)); do
   if ((i % 2)); then
-    radiant & tutorial & wait
+    on_core 0 radiant & on_core 1 tutorial & wait
   else
-    tutorial & radiant & wait
+    on_core 0 tutorial & on_core 1 radiant & wait
   fi
   t=$(<"$work/tutorial") r=$(<"$work/radiant")
   echo "round $((i + 1)): tutorial $t s, radiant $r s (CPU)"
@@ -61,3 +67,5 @@ for ((i = 0; i < rounds; i++)); do
 done
 echo "Cornell box (Embree tutorial scene; radiant's file ${radiant_scene:-cornell.scene}), ${size}x${size}, $spp spp, path length 8"
 summarize_ratios "CPU time ratio radiant / Embree tutorial ($tutorial_kernel kernel), one thread each, run together" "${ratios[@]}"
+printf 'geometric mean of the ratios (core speeds cancel over an even number of rounds): %.3f\n' \
+  "$(geometric_mean "${ratios[@]}")"

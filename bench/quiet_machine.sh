@@ -50,6 +50,9 @@ timed_run() {
 }
 
 median() { printf '%s\n' "$@" | sort -g | awk '{a[NR] = $1} END {print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2}'; }
+# The geometric mean of ratios: over an even number of rounds whose runs swap cores, a fixed
+# difference between the cores' speeds cancels in it (bench/ab_pair.sh).
+geometric_mean() { printf '%s\n' "$@" | awk '{s += log($1)} END {print exp(s / NR)}'; }
 
 summarize_ratios() {
   local label=$1
