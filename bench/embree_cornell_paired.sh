@@ -5,7 +5,8 @@
 # pinned to one (taskset) and they swap every round, so that a fixed difference between the
 # cores' speeds cancels in the geometric mean of the ratios over an even number of rounds, as
 # in bench/ab_pair.sh. Unpinned, the forty-fourth session's AMD EPYC gave the same `.scene` box
-# 0.80 in some rounds and 1.22 in others, by which core each program landed on. On a virtual machine whose
+# 0.80 in some rounds and 1.22 in others; pinned, one run's tutorial took 1.97-2.24 s on core 0
+# and 2.40-2.65 s on core 1. On a virtual machine whose
 # effective clock drifts between runs (bench/embree_cornell.sh has seen the tutorial take 9.5 s
 # and 13.9 s for the same render in one session), this ratio is steadier than one of runs in
 # turn. It measures one thread each, not the two-thread render the other benchmark times; both
