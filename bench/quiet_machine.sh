@@ -5,6 +5,7 @@
 #
 # Needs $threads and $work (a scratch folder). Provides: require_quiet_machine MAX_LOAD, timed_run NAME COMMAND ARGS...
 # (sets timed_seconds and timed_note), summarize_ratios LABEL RATIO..., median VALUE...,
+# geometric_mean RATIO...,
 # install_debian_packages PACKAGE...
 
 load_average() { cut -d' ' -f1 /proc/loadavg; }
