@@ -166,7 +166,7 @@ void render_at_moment(LoadedScene& loaded, RenderJob job, PhaseTimes& times) {
 void check_view(const LoadedScene& loaded, const RenderJob& job, MemoryBudget& budget) {
   check_outputs_spare_scene_files(loaded.prepared->scene->input_files, render_job_outputs(job));
   ResolvedSettings settings = resolve_settings(*loaded.prepared, job.options);
-  if (!settings.environment_map.empty()) open_environment_map(settings.environment_map, &budget);
+  if (!settings.environment.map_path.empty()) open_environment_map(settings.environment.map_path, &budget);
 }
 
 // Every output of the script, checked before anything loads: formats and places, and no file

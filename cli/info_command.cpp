@@ -108,7 +108,9 @@ int info_main(int argc, char** argv) {
     SceneSummary summary = summarize_scene(scene);
     EffectSet effects = analyze_effects(scene);
     std::string reason;
-    RenderMode auto_mode = choose_auto_mode(scene, reason);
+    // The plain command's environment: the file's own, or the studio when nothing lights it.
+    bool environment = !is_black(scene.environment.color) || !scene.environment.map_path.empty() || !lights_itself(scene);
+    RenderMode auto_mode = choose_auto_mode(scene, environment, reason);
     if (json) std::cout << info_json(scene_path, scene, summary, effects, auto_mode, reason);
     else print_info(std::cout, scene_path, scene, summary, effects, auto_mode, reason);
   } catch (const std::exception& e) {

@@ -7,6 +7,7 @@
 #include <limits>
 #include <sstream>
 
+#include "environment_flags.h"
 #include "image/view_transform.h"
 #include "sampling/pixel_filter.h"
 #include "lights/light_table.h"
@@ -247,7 +248,7 @@ const std::vector<std::pair<std::string, std::string>> flag_synonyms = {
     {"samples", "spp"},       {"sample", "spp"},         {"spp-max", "spp"},      {"out", "output"},
     {"outfile", "output"},    {"integrator", "mode"},    {"maxdepth", "max-depth"}, {"depth", "max-depth"},
     {"resolution", "width"},  {"xres", "width"},         {"yres", "height"},      {"nthreads", "threads"},
-    {"environment", "env"},   {"background", "env-color"}};
+    {"environment", "env"},   {"hdri", "env"},           {"world", "env"}};
 
 std::string suggestions(const CLI::App& app, const std::string& unknown) {
   std::vector<std::string> found;
@@ -341,10 +342,26 @@ void RenderFlags::bind(CLI::App& app, bool image_flags) {
   app.add_option("--scene", gltf_scene, "glTF scene index (default: the file's default scene)")->check(CLI::NonNegativeNumber);
   app.add_option("--variant", variant, "glTF material variant by name (KHR_materials_variants)");
   app.add_option("--env-color", env_color, "Uniform environment radiance R,G,B (linear)");
-  app.add_option("--env", options.env_map, "Equirectangular environment map (.exr or .hdr)");
+  app.add_option("--env", env,
+                 "Environment: studio (the default for files with no light of their own), white, none, or an "
+                 "equirectangular map (.exr, .hdr)");
+  app.add_option("--env-intensity", env_intensity, "Multiplies the environment's radiance (default 1)")
+      ->check(number_in(0, 1e6));
+  app.add_option("--env-rotation", env_rotation,
+                 "Turns the environment about the up axis, in degrees, counterclockwise seen from above (at 0 "
+                 "the map's centre faces +X, as in Blender and three.js)")
+      ->check(number_in(-36000, 36000));
+  app.add_option("--background", background,
+                 "What the camera sees behind the scene: blur (the environment blurred; default), env, "
+                 "transparent or color:R,G,B");
   app.add_option("--look-from", look_from, "Camera position X,Y,Z");
   app.add_option("--look-at", look_at, "Point the camera looks at X,Y,Z");
-  app.add_option("--up", up, "Camera up vector X,Y,Z");
+  app.add_option("--up", up,
+                 "The scene's up: an axis (+Z for z-up files) or X,Y,Z; turns the framing camera and the "
+                 "environment, and rolls a camera placed by the flags");
+  app.add_option("--orbit", orbit,
+                 "AZIMUTH,ELEVATION[,DISTANCE]: the framing camera turned about the model in degrees, and "
+                 "its distance as a multiple of the framing one");
   app.add_option("--fov", fov, "Vertical field of view in degrees (a fisheye's whole one, up to 360)")
       ->check(positive_number(360));
   app.add_option("--camera-type", camera_type, "perspective, orthographic, equirect (360 degrees) or fisheye");
@@ -412,7 +429,16 @@ void RenderFlags::finish() {
   if (!aovs.empty()) options.aovs = parse_aovs("--aov", aovs);
   if (!look_from.empty()) options.camera_override.look_from = parse_vec3("--look-from", look_from);
   if (!look_at.empty()) options.camera_override.look_at = parse_vec3("--look-at", look_at);
-  if (!up.empty()) options.camera_override.up = parse_vec3("--up", up);
+  if (!up.empty()) options.camera_override.up = options.world_up = parse_up("--up", up);
+  if (!orbit.empty()) options.orbit = parse_orbit("--orbit", orbit);
+  if (!env.empty()) parse_environment_choice(env, options);
+  options.env_intensity = env_intensity;
+  options.env_rotation_degrees = env_rotation;
+  if (!background.empty()) {
+    parse_background(background, options);
+    if (transparent && options.background != BackgroundKind::transparent)
+      throw CLI::ValidationError("--background", "contradicts --transparent");
+  }
   if (fov != 0) options.camera_override.fov_degrees = fov;
   if (!camera_type.empty()) options.camera_override.projection = parse_camera_type("--camera-type", camera_type);
   if (lens_radius >= 0) options.camera_override.lens_radius = lens_radius;

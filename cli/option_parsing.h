@@ -59,6 +59,8 @@ struct RenderFlags {
   RenderOptions options;
   std::string mode, sampler, light_sampler, env_color, crop, aovs, look_from, look_at, up, view, camera_type, variant;
   std::string texture_filter;
+  std::string env, background, orbit;
+  float env_intensity = 1, env_rotation = 0;
   std::string batching;
   std::string shard, split, sample_range, filter;
   int width = 0, height = 0, spp = 0, max_depth = 0, indirect_paths = 0, gltf_scene = -1;

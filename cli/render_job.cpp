@@ -76,11 +76,12 @@ TemporaryFile& output_file(OutputSet& outputs, const std::string& target, const 
 }  // namespace
 
 void print_render_notes(const std::string& scene_path, const PreparedScene& prepared, const ResolvedSettings& s) {
-  if (s.camera_framed) std::cerr << "radiant: the scene has no camera; using one that frames the whole scene\n";
+  if (s.camera_framed && prepared.world.cameras.empty())
+    std::cerr << "radiant: the scene has no camera; using one that frames the whole scene\n";
   if (!s.mode_reason.empty()) std::cerr << "radiant: mode " << mode_name(s.mode) << ": " << s.mode_reason << "\n";
-  if (!has_light_sources(*prepared.scene) && is_black(s.environment_color) && s.environment_map.empty())
-    std::cerr << "radiant: warning: " << scene_path
-              << ": no lights, emissive materials or environment: the image is black (light it with --env-color or --env)\n";
+  if (s.default_environment)
+    std::cerr << "radiant: " << scene_path
+              << ": nothing in the file lights it; using the built-in studio environment (--env none for black)\n";
 }
 
 void run_render_job(const std::string& scene_path, PreparedScene& prepared, const RenderJob& job, PhaseTimes& times) {
@@ -100,6 +101,8 @@ void run_render_job(const std::string& scene_path, PreparedScene& prepared, cons
   }
   if (!job.options.quiet && job.notes) print_render_notes(scene_path, prepared, resolve_settings(prepared, job.options));
   RenderResult result = render_prepared(prepared, options);
+  if (!job.options.quiet)
+    for (const std::string& warning : result.warnings) std::cerr << "radiant: warning: " << warning << "\n";
   if (result.stats.interrupted && result.stats.samples == 0) throw_if_interrupted();  // nothing to save
   times.render = result.stats.render_seconds;
   auto write_start = Clock::now();

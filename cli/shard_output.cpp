@@ -18,8 +18,8 @@ ShardInfo make_shard_info(const PreparedScene& prepared, const ResolvedSettings&
                           const std::string& request_hash) {
   std::vector<std::string> files = prepared.scene->input_files;
   // An environment map is read when rendering, not loading: it belongs to the scene all the same.
-  if (!s.environment_map.empty() && std::find(files.begin(), files.end(), s.environment_map) == files.end())
-    files.push_back(s.environment_map);
+  const std::string& map = s.environment.map_path;
+  if (!map.empty() && std::find(files.begin(), files.end(), map) == files.end()) files.push_back(map);
   ShardInfo info;
   info.version = RADIANT_VERSION;
   info.scene_hash = files_hash(files);

@@ -297,8 +297,10 @@ struct PathVariant {
     if (enabled<E>(ctx.effects, effect_absorption) && path.medium >= 0 && id.valid())
       throughput *= exp(ctx.absorption[size_t(path.medium)] * -(id.t * length(ray.direction)));
     if (!id.valid()) {
-      // Depth 0 is the camera ray, also after it passed alpha cutouts.
-      if (gathers && enabled<E>(ctx.effects, effect_environment) && !(depth == 0 && ctx.transparent_background)) {
+      // Depth 0 is the camera ray, also after it passed alpha cutouts: it sees the backdrop.
+      if (depth == 0) {
+        if (gathers) radiance += throughput * camera_background<E>(ctx, ray.direction);
+      } else if (gathers && enabled<E>(ctx.effects, effect_environment)) {
         color3 background = eval_environment(lights, normalize(ray.direction));
         float weight = 1;
         // The environment has a selection slot only when it exists (--effects=all can switch

@@ -47,6 +47,10 @@ inline bool is_finite(const FirstHit& hit) {
   return is_finite(hit.albedo) && is_finite(hit.normal) && std::isfinite(hit.depth);
 }
 
+// What a camera ray that leaves the scene sees: the environment, its blurred backdrop, a
+// colour, or nothing (a transparent render, whose alpha says where the scene is).
+enum class CameraBackground : uint8_t { environment, backdrop, color, none };
+
 struct RenderContext {
   const SceneDesc* scene = nullptr;
   const SceneAccel* accel = nullptr;
@@ -71,9 +75,10 @@ struct RenderContext {
   // first hit's own light is gathered once, its bounce sampled this many times, each 1/split.
   int split = 1;
   float contribution_cutoff = 0.001f;
-  // A transparent render: camera rays that escape see black (the environment still lights what
-  // they hit, and is seen in reflections and through glass).
-  bool transparent_background = false;
+  // What camera rays that escape see (--background); the environment still lights what they
+  // hit, and is seen in reflections and through glass.
+  CameraBackground camera_background = CameraBackground::environment;
+  color3 background_color;  // for CameraBackground::color
 };
 
 // Radiance along a camera ray for one sample; `first_hit` (optional) receives AOV values.

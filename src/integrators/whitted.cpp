@@ -47,8 +47,7 @@ color3 trace(const RenderContext& ctx, const Ray& ray, int depth, int see_throug
   }
   HitId id = known_hit ? *known_hit : intersect_nearest(*ctx.accel, ray);
   if (!id.valid()) {
-    // A camera ray (also one through a partly opaque surface) sees no background when transparent.
-    if (kind == RayKind::camera && ctx.transparent_background) return {0, 0, 0};
+    if (kind == RayKind::camera) return camera_background<E>(ctx, ray.direction);
     return background_radiance<E>(ctx, ray.direction);
   }
   SurfaceHit hit = make_surface_hit(*ctx.accel, ray, id);

@@ -11,5 +11,9 @@ namespace radiant {
 float sample_environment(const LightTable& lights, vec3 normal, float u_choice, vec2 u, vec3& direction);
 // Solid-angle pdf of `direction` as sampled from a point with shading normal `normal`.
 float environment_pdf(const LightTable& lights, vec3 normal, vec3 direction);
+// Environment radiance seen along unit direction `d`.
+color3 eval_environment(const LightTable& lights, vec3 d);
+// The same through the map's blurred backdrop: what --background blur shows camera rays.
+color3 eval_environment_backdrop(const LightTable& lights, vec3 d);
 
 }  // namespace radiant

@@ -6,10 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "image/image_io.h"
 #include "lights/emission_estimate.h"
 #include "lights/light_bounds.h"
-#include "memory/input_file.h"
 #include "scene/scene_bounds.h"
 
 namespace radiant {
@@ -85,19 +83,6 @@ void add_emissive_spheres(const SceneDesc& scene, LightTable& table) {
   }
 }
 
-// A texel must be radiance: finite and not negative. Throws naming the file, pixel and channel.
-void check_environment_texel(const std::string& path, const ImageHeader& spec, int x, int y, color3 c) {
-  for (int k = 0; k < 3; ++k) {
-    if (std::isfinite(c[k]) && c[k] >= 0) continue;
-    std::string channel = spec.channels >= 3 ? spec.channel_names[size_t(k)] : spec.channel_names[0];
-    std::ostringstream value;
-    value << c[k];
-    throw std::runtime_error(path + ": pixel (" + std::to_string(x) + ", " + std::to_string(y) + "): " + channel +
-                             " is " + value.str() + ": environment radiance must " +
-                             (std::isfinite(c[k]) ? "not be negative" : "be finite"));
-  }
-}
-
 // The area lights add_emissive_triangles and add_emissive_spheres will make, and their weights.
 uint64_t area_light_bytes(const SceneDesc& scene) {
   uint64_t lights = scene.shapes.size();
@@ -106,42 +91,6 @@ uint64_t area_light_bytes(const SceneDesc& scene) {
     if (mesh.material >= 0 && !is_black(scene.materials[mesh.material].emission)) lights += mesh.triangle_count();
   }
   return saturating_multiply(lights, 2 * sizeof(AreaLight) + 3 * sizeof(float));
-}
-
-EnvironmentMap load_environment_map(const std::string& path, MemoryBudget* budget) {
-  std::unique_ptr<ImageSource> input = open_environment_map(path, budget);
-  const ImageHeader& spec = input->header();
-  // The float pixels read (OpenImageIO's copy is the source's charge), then texels, weights and
-  // the sampling tables.
-  uint64_t texels = uint64_t(spec.width) * uint64_t(spec.height);
-  uint64_t per_texel = 4 * uint64_t(spec.channels) + sizeof(color3) + 5 * sizeof(float);
-  MemoryCharge memory(budget, saturating_multiply(texels, per_texel),
-                      path + ": a " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
-                          " environment map");
-  std::vector<float> pixels(size_t(spec.width) * spec.height * spec.channels);
-  if (!input->read(spec.channels, PixelType::float32, pixels.data()))
-    throw std::runtime_error(path + ": cannot read environment map: " + input->error());
-  EnvironmentMap map;
-  map.memory = std::move(memory);
-  map.width = spec.width;
-  map.height = spec.height;
-  map.texels.resize(size_t(map.width) * map.height);
-  std::vector<float> weights(map.texels.size());
-  for (int y = 0; y < map.height; ++y) {
-    float sin_theta = std::sin(pi * (float(y) + 0.5f) / float(map.height));
-    for (int x = 0; x < map.width; ++x) {
-      size_t i = size_t(y) * map.width + x;
-      const float* p = &pixels[i * spec.channels];
-      color3 c = spec.channels >= 3 ? color3{p[0], p[1], p[2]} : color3{p[0], p[0], p[0]};
-      check_environment_texel(path, spec, x, y, c);
-      map.texels[i] = c;
-      // Divided by the texel count, so that the weights' sum (the distribution's total, a float)
-      // is the map's mean and cannot overflow however bright its texels are.
-      weights[i] = float(double(luminance(map.texels[i])) * sin_theta / double(map.texels.size()));
-    }
-  }
-  map.distribution = make_distribution_2d(weights, map.width, map.height);
-  return map;
 }
 
 // Weights as floats with the same ratios: scaled down together when their sum nears float's
@@ -228,23 +177,8 @@ void choose_light_sampler(const SceneDesc& scene, LightTable& table, const std::
 
 }  // namespace
 
-std::unique_ptr<ImageSource> open_environment_map(const std::string& path, MemoryBudget* budget) {
-  uint64_t file_size = 0;
-  std::string problem = input_file_problem(path, file_size);
-  if (!problem.empty()) throw std::runtime_error(path + ": cannot read environment map: " + problem);
-  std::string error;
-  auto input = open_image_file(path, error, budget);
-  if (!input) throw std::runtime_error(path + ": cannot read environment map: " + error);
-  const ImageHeader& spec = input->header();
-  if (spec.width <= 0 || spec.height <= 0 || spec.channels <= 0 ||
-      size_t(spec.width) * spec.height > (size_t(1) << 28))
-    throw std::runtime_error(path + ": environment map has an unusable size");
-  return input;
-}
-
-LightTable make_light_table(const SceneDesc& scene, color3 environment_color, const std::string& environment_map_path,
-                            bool use_area_lights, MemoryBudget* budget, LightSampler sampler,
-                            bool emission_textures) {
+LightTable make_light_table(const SceneDesc& scene, const EnvironmentSpec& environment, bool use_area_lights,
+                            MemoryBudget* budget, LightSampler sampler, bool emission_textures) {
   LightTable table;
   if (use_area_lights)
     table.area_light_memory = MemoryCharge(budget, area_light_bytes(scene), scene.source_path + ": the area lights");
@@ -257,8 +191,11 @@ LightTable make_light_table(const SceneDesc& scene, color3 environment_color, co
     add_emissive_triangles(scene, table, estimates ? &*estimates : nullptr);
     add_emissive_spheres(scene, table);
   }
-  table.environment_color = environment_color;
-  if (!environment_map_path.empty()) table.environment_map = load_environment_map(environment_map_path, budget);
+  table.environment_color = environment.color;
+  if (environment.studio) table.environment_map = make_studio_environment(budget);
+  else if (!environment.map_path.empty()) table.environment_map = load_environment_map(environment.map_path, budget);
+  table.environment_scale = environment.map_scale;
+  table.environment_frame = environment.frame;
 
   // Selection weights: each light's emitted power (up to a common factor), in double: a light of
   // 1e38 has a power beyond float's range, which make_distribution would read as zero.
@@ -275,27 +212,13 @@ LightTable make_light_table(const SceneDesc& scene, color3 environment_color, co
   if (table.has_environment()) {
     double average = luminance(table.environment_color);
     if (table.environment_map.width > 0)
-      average += double(table.environment_map.distribution.marginal.total) * pi / 2;
+      average += double(table.environment_map.distribution.marginal.total) * table.environment_scale * pi / 2;
     weights.push_back(std::max(average, 1e-6) * disk * 4);
   }
   table.selection = make_distribution(float_weights(weights));
   // Whitted (no area lights) lights every point with every light: it chooses none.
   choose_light_sampler(scene, table, weights, use_area_lights ? sampler : LightSampler::power, budget);
   return table;
-}
-
-color3 eval_environment(const LightTable& lights, vec3 d) {
-  color3 radiance = lights.environment_color;
-  const EnvironmentMap& map = lights.environment_map;
-  if (map.width > 0) {
-    // Equirectangular, +y up; u = 0.5 looks down -z.
-    float u = 0.5f + std::atan2(d.x, -d.z) / (2 * pi);
-    float v = std::acos(std::clamp(d.y, -1.0f, 1.0f)) / pi;
-    int x = std::clamp(int(u * map.width), 0, map.width - 1);
-    int y = std::clamp(int(v * map.height), 0, map.height - 1);
-    radiance += map.texels[size_t(y) * map.width + x] * lights.environment_scale;
-  }
-  return radiance;
 }
 
 }  // namespace radiant

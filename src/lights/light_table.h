@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "image/image_io_module.h"
+#include "lights/environment_map.h"
 #include "lights/light_bvh.h"
 #include "math/vec.h"
 #include "memory/memory_budget.h"
@@ -35,12 +35,14 @@ struct AreaLight {
   uint32_t primitive = 0;
 };
 
-// An equirectangular environment map, importance-sampled by luminance.
-struct EnvironmentMap {
-  int width = 0, height = 0;
-  std::vector<color3> texels;      // linear radiance, top row first (+y up is the top)
-  Distribution2D distribution;     // over (u, v) in [0,1)^2, by luminance * sin(theta) / texel count
-  MemoryCharge memory;             // its texels and tables (and their reading), against the budget
+// The environment a render asks for: a uniform colour, a map file or the built-in studio (or
+// both a colour and a map), scaled, and turned with the world's up (lights/environment_map.h).
+struct EnvironmentSpec {
+  color3 color;
+  std::string map_path;
+  bool studio = false;
+  float map_scale = 1;       // the map's radiance factor (the scene's, times the intensity)
+  EnvironmentFrame frame;
 };
 
 struct LightTable {
@@ -48,7 +50,8 @@ struct LightTable {
   std::vector<AreaLight> area_lights;
   color3 environment_color;             // uniform part of the environment
   EnvironmentMap environment_map;       // width 0 when there is none
-  float environment_scale = 1;
+  float environment_scale = 1;          // the map's radiance factor
+  EnvironmentFrame environment_frame;    // the map's axes in world space
   vec3 scene_center;                    // bounding sphere, for the power of infinite lights
   float scene_radius = 1;
 
@@ -73,24 +76,24 @@ struct LightTable {
 // choice costs one table lookup, and a scene with one light pays nothing for the tree.
 constexpr size_t light_bvh_min_lights = 8;
 
-// Builds the table. `environment_color` and `environment_map_path` are the resolved background
-// (scene, then --env-color/--env). `budget` (when given) is charged for the area lights, the
-// light BVH and the environment map (by the size its header declares) before they are built.
+// Builds the table. `environment` is the resolved environment (scene, then --env and its
+// flags). `budget` (when given) is charged for the area lights, the light BVH and the
+// environment map (by the size its header declares) before they are built.
 // `sampler` is how the path tracer will choose lights (`automatic` is resolved here; Whitted,
 // without area lights, gets power: it chooses none). Throws std::runtime_error when the map
 // cannot be read, MemoryLimitError when the budget refuses.
 // `emission_textures`: whether the render reads emission textures (the textures effect), so
 // that emissive triangles are weighed by what they will emit (lights/emission_estimate.h).
-LightTable make_light_table(const SceneDesc& scene, color3 environment_color, const std::string& environment_map_path,
-                            bool use_area_lights, MemoryBudget* budget = nullptr,
-                            LightSampler sampler = LightSampler::automatic, bool emission_textures = true);
-
-// Opens an environment map and checks its header (readable, of a usable size): what `batch`
-// checks of every view before rendering. Throws std::runtime_error naming the file (MemoryLimitError
-// when decoding it needs more than `budget` has; the source holds that charge).
-std::unique_ptr<ImageSource> open_environment_map(const std::string& path, MemoryBudget* budget);
-
-// Environment radiance seen along unit direction `d`.
-color3 eval_environment(const LightTable& lights, vec3 d);
+LightTable make_light_table(const SceneDesc& scene, const EnvironmentSpec& environment, bool use_area_lights,
+                            MemoryBudget* budget = nullptr, LightSampler sampler = LightSampler::automatic,
+                            bool emission_textures = true);
+// The same with a uniform environment and an optional map file, as most tests want.
+inline LightTable make_light_table(const SceneDesc& scene, color3 environment_color,
+                                   const std::string& environment_map_path, bool use_area_lights,
+                                   MemoryBudget* budget = nullptr, LightSampler sampler = LightSampler::automatic,
+                                   bool emission_textures = true) {
+  return make_light_table(scene, EnvironmentSpec{environment_color, environment_map_path}, use_area_lights, budget,
+                          sampler, emission_textures);
+}
 
 }  // namespace radiant

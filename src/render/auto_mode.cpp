@@ -13,13 +13,12 @@ bool is_emissive(const SceneDesc& scene, int material) {
 
 }  // namespace
 
-RenderMode choose_auto_mode(const SceneDesc& scene, std::string& reason) {
+RenderMode choose_auto_mode(const SceneDesc& scene, bool environment, std::string& reason) {
   for (const LightDesc& l : scene.lights)
     if (l.kind == LightKind::ambient) {
       reason = "the scene has ambient light, which only the Whitted model defines";
       return RenderMode::whitted;
     }
-  bool environment = !is_black(scene.environment.color) || !scene.environment.map_path.empty();
   if (environment) {
     reason = "the background lights the scene (environment light needs the path tracer)";
     return RenderMode::path;

@@ -1,10 +1,12 @@
 #include "render/camera.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
 #include "sampling/warp.h"
+#include "lights/environment_map.h"
 #include "scene/coordinate_range.h"
 #include "scene/scene_bounds.h"
 
@@ -94,11 +96,19 @@ static float projected_box_area(vec3 extent, vec3 d) {
   return std::abs(d.x) * extent.y * extent.z + std::abs(d.y) * extent.x * extent.z + std::abs(d.z) * extent.x * extent.y;
 }
 
-CameraDesc frame_box(vec3 lower, vec3 upper, float aspect) {
+CameraDesc frame_box(vec3 lower, vec3 upper, float aspect, vec3 up, const Orbit& orbit) {
   CameraDesc camera;
   camera.name = "framing";
   camera.vertical_fov_degrees = 40;
-  vec3 center = (lower + upper) * 0.5f, extent = upper - lower;
+  // The view is worked out in the world's own axes for `up` (the environment's: y up, +z the
+  // front), so a z-up model is framed as a y-up one is.
+  EnvironmentFrame axes = make_environment_frame(up, 0);
+  vec3 center = (lower + upper) * 0.5f, corners[8], extent;
+  for (int corner = 0; corner < 8; ++corner) {
+    vec3 p = {corner & 1 ? upper.x : lower.x, corner & 2 ? upper.y : lower.y, corner & 4 ? upper.z : lower.z};
+    corners[corner] = to_environment(axes, p - center);
+    extent = max(extent, abs(corners[corner]) * 2);
+  }
   // From the front (+z, the glTF front) a little above, so that depth shows, unless the side (+x)
   // or the view from above shows more than twice the box's area there: a flat model is seen face
   // on, never edge on, and a long low one keeps its front view.
@@ -106,21 +116,28 @@ CameraDesc frame_box(vec3 lower, vec3 upper, float aspect) {
   float front_area = projected_box_area(extent, toward_camera), best_area = 2 * front_area;
   for (vec3 view : {normalize(vec3{1, 0.25f, 0}), normalize(vec3{0, 1, 0.25f})})
     if (float area = projected_box_area(extent, view); area > best_area) toward_camera = view, best_area = area;
-  camera.forward = -toward_camera;
-  camera.up = normalize(cross(cross(camera.forward, vec3{0, 1, 0}), camera.forward));
-  vec3 right = cross(camera.forward, camera.up);
+  if (orbit.azimuth_degrees != 0 || orbit.elevation_degrees != 0) {
+    constexpr float degree = pi / 180;
+    float azimuth = std::atan2(toward_camera.x, toward_camera.z) + orbit.azimuth_degrees * degree;
+    float elevation = std::clamp(std::asin(toward_camera.y) + orbit.elevation_degrees * degree, -89.9f * degree,
+                                 89.9f * degree);
+    toward_camera = {std::cos(elevation) * std::sin(azimuth), std::sin(elevation), std::cos(elevation) * std::cos(azimuth)};
+  }
+  vec3 forward = -toward_camera;
+  vec3 camera_up = normalize(cross(cross(forward, vec3{0, 1, 0}), forward));
+  vec3 right = cross(forward, camera_up);
   // Every corner inside the view, with a margin of 5%: a corner at depth `along` before the
   // centre needs the camera `offset / tan(half angle)` farther than that.
   float tan_vertical = std::tan(camera.vertical_fov_degrees * pi / 360.0f);
   float tan_horizontal = tan_vertical * std::max(aspect, 1e-3f);
   float distance = 1e-6f * std::max(1.0f, max_component(abs(center)));
-  for (int corner = 0; corner < 8; ++corner) {
-    vec3 p = {corner & 1 ? upper.x : lower.x, corner & 2 ? upper.y : lower.y, corner & 4 ? upper.z : lower.z};
-    vec3 d = p - center;
-    float needed = std::max(std::abs(dot(d, camera.up)) / tan_vertical, std::abs(dot(d, right)) / tan_horizontal);
+  for (vec3 d : corners) {
+    float needed = std::max(std::abs(dot(d, camera_up)) / tan_vertical, std::abs(dot(d, right)) / tan_horizontal);
     distance = std::max(distance, dot(d, toward_camera) + 1.05f * needed);
   }
-  camera.position = center + toward_camera * distance;
+  camera.position = center + from_environment(axes, toward_camera * (distance * orbit.distance));
+  camera.forward = from_environment(axes, forward);
+  camera.up = from_environment(axes, camera_up);
   return camera;
 }
 
@@ -197,6 +214,10 @@ void apply_camera_override(CameraDesc& camera, const CameraOverride& o) {
 CameraDesc select_camera(const std::vector<CameraDesc>& cameras, const CameraDesc& framing, const std::string& which,
                          bool& framed) {
   framed = false;
+  if (which == framing_camera_name) {
+    framed = true;
+    return framing;
+  }
   if (which.empty()) {
     if (!cameras.empty()) return cameras.front();
     framed = true;

@@ -36,15 +36,19 @@ PixelSpread make_pixel_spread(const CameraFrame& frame);
 bool framing_box(const SceneDesc& scene, vec3& lower, vec3& upper);
 
 // A camera that sees all of the box [lower, upper] in an image of width / height `aspect`,
-// looking across its two largest extents (docs/cli.md, "The framing camera").
-CameraDesc frame_box(vec3 lower, vec3 upper, float aspect);
+// looking across its two largest extents with `up` up, then turned by `orbit` about the box's
+// centre (docs/cli.md, "The framing camera").
+CameraDesc frame_box(vec3 lower, vec3 upper, float aspect, vec3 up = {0, 1, 0}, const Orbit& orbit = {});
+
+// --camera frame: the framing camera, even when the file has cameras.
+inline constexpr const char* framing_camera_name = "frame";
 
 // Applies --look-from/--look-at/--up/--fov, --camera-type and the lens flags; throws
 // std::invalid_argument on a degenerate view or a lens without a focus distance.
 void apply_camera_override(CameraDesc& camera, const CameraOverride& override_);
 
 // Picks the camera by name or index among `cameras` ("" = the first, or `framing` when there is
-// none, setting `framed`); throws std::invalid_argument when not found.
+// none; "frame" = `framing`; both set `framed`); throws std::invalid_argument when not found.
 CameraDesc select_camera(const std::vector<CameraDesc>& cameras, const CameraDesc& framing, const std::string& which,
                          bool& framed);
 

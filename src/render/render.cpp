@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <sstream>
 #include <cmath>
 #include <cstdio>
 #include <mutex>
@@ -32,6 +33,21 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// What camera rays that miss see: nothing in a transparent render; `blur` is the environment
+// itself when it has no map to blur.
+CameraBackground camera_background_of(const ResolvedSettings& s) {
+  if (s.transparent) return CameraBackground::none;
+  switch (s.background) {
+    case BackgroundKind::blur:
+      return s.environment.studio || !s.environment.map_path.empty() ? CameraBackground::backdrop
+                                                                      : CameraBackground::environment;
+    case BackgroundKind::environment: return CameraBackground::environment;
+    case BackgroundKind::color: return CameraBackground::color;
+    case BackgroundKind::transparent: break;
+  }
+  return CameraBackground::none;
 }
 
 RenderContext make_context(const PreparedScene& prepared, const ResolvedSettings& s, const LightTable& lights,
@@ -64,7 +80,8 @@ RenderContext make_context(const PreparedScene& prepared, const ResolvedSettings
   static_assert(max_indirect_paths <= max_batch_paths, "a batch holds every sub-path of a camera sample");
   ctx.split = s.indirect_paths;
   ctx.contribution_cutoff = options.contribution_cutoff;
-  ctx.transparent_background = s.transparent;
+  ctx.camera_background = camera_background_of(s);
+  ctx.background_color = s.background_color;
   return ctx;
 }
 
@@ -300,8 +317,15 @@ CameraDesc world_view_camera(const WorldPlacement& world, const SceneSettings& s
                              bool& framed) {
   CameraDesc framing;
   framing.name = "framing";
-  if (world.has_framing_box) framing = frame_box(world.framing_lower, world.framing_upper, image_aspect(settings, options));
-  CameraDesc camera = select_camera(world.cameras, framing, options.camera, framed);
+  vec3 up = options.world_up ? normalize(*options.world_up) : vec3{0, 1, 0};
+  if (world.has_framing_box)
+    framing = frame_box(world.framing_lower, world.framing_upper, image_aspect(settings, options), up,
+                        options.orbit.value_or(Orbit{}));
+  // --orbit turns the framing camera, which it takes unless another is named.
+  std::string which = options.orbit && options.camera.empty() ? framing_camera_name : options.camera;
+  CameraDesc camera = select_camera(world.cameras, framing, which, framed);
+  if (options.orbit && !framed)
+    throw std::invalid_argument("--orbit turns the framing camera: leave out --camera, or give --camera frame");
   apply_camera_override(camera, options.camera_override);
   // A camera placed entirely by the flags is not a framing camera.
   if (options.camera_override.look_from && options.camera_override.look_at) framed = false;
@@ -347,9 +371,14 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
                                          " channels (film, AOVs and output image)");
   bool path_like = s.mode != RenderMode::whitted;
   LightTable lights =
-      make_light_table(*prepared.scene, s.environment_color, s.environment_map, path_like, options.memory,
-                       options.light_sampler, (s.effects & effect_textures) != 0);
-  lights.environment_scale = prepared.scene->environment.map_scale;
+      make_light_table(*prepared.scene, s.environment, path_like, options.memory, options.light_sampler,
+                       (s.effects & effect_textures) != 0);
+  if (size_t negative = lights.environment_map.negative_texels) {
+    std::ostringstream text;
+    text << s.environment.map_path << ": " << negative << " negative pixel value(s), down to "
+         << lights.environment_map.most_negative << ", read as 0";
+    result.warnings.push_back(text.str());
+  }
   s.light_sampler = lights.sampler;
   MemoryCharge materials_memory(options.memory, shading_materials_bytes(*prepared.scene),
                                 prepared.scene->source_path + ": the materials prepared for shading");

@@ -8,6 +8,7 @@
 #include "film/film.h"
 #include "image/image_writer.h"
 #include "integrators/render_context.h"
+#include "lights/light_table.h"
 #include "materials/texture_pyramid.h"
 #include "render/render_options.h"
 #include "render/render_space.h"
@@ -61,8 +62,12 @@ struct ResolvedSettings {
   LightSampler light_sampler = LightSampler::power;  // as the light table resolved `automatic`
   CameraDesc camera;
   bool camera_framed = false;  // no camera in the file: one frames the scene
-  color3 environment_color;
-  std::string environment_map;
+  EnvironmentSpec environment;  // what lights the scene from afar
+  // The environment was chosen because the scene has no light of its own.
+  bool default_environment = false;
+  vec3 world_up = {0, 1, 0};
+  BackgroundKind background = BackgroundKind::blur;
+  color3 background_color;
   uint32_t effects = 0;          // what runs: the scene's effects after --effects
   uint32_t compiled_variant = 0; // the compiled effect set that runs them
   PixelWindow window;
@@ -74,7 +79,8 @@ struct ResolvedSettings {
 ResolvedSettings resolve_settings(const PreparedScene& prepared, const RenderOptions& options);
 
 // auto mode's rule (docs/effects.md): Whitted when it gives the path tracer's converged answer.
-RenderMode choose_auto_mode(const SceneDesc& scene, std::string& reason);
+// `environment`: whether an environment lights the scene (its own, or one the flags give).
+RenderMode choose_auto_mode(const SceneDesc& scene, bool environment, std::string& reason);
 
 struct RenderStats {
   double build_seconds = 0, render_seconds = 0;
@@ -94,6 +100,7 @@ struct RenderResult {
   Film film;
   RenderStats stats;
   MemoryCharge image_memory;  // the film and the output image made from it, held until written
+  std::vector<std::string> warnings;  // about the inputs read while rendering (the environment map)
 };
 
 // The threads a render works on: `requested` (--threads), at most the cores; all cores for 0.

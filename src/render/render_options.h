@@ -57,6 +57,20 @@ enum class PathBatching {
   all_rays,
 };
 
+// --env NAME: a built-in environment (docs/lights.md, "Default lighting"); a file goes to env_map.
+enum class EnvironmentPreset { studio, white, none };
+
+// --background: what camera rays that leave the scene see. `blur` is the environment through a
+// small blurred copy of its map (the environment itself when it has no map).
+enum class BackgroundKind { blur, environment, color, transparent };
+
+// --orbit: the framing camera turned about the scene's centre, relative to the framing view.
+struct Orbit {
+  float azimuth_degrees = 0;    // counterclockwise about the up axis, seen from above
+  float elevation_degrees = 0;  // added to the framing view's elevation
+  float distance = 1;           // a multiple of the distance that frames the scene
+};
+
 struct RenderOptions {
   std::optional<int> width, height, spp, max_depth;
   std::optional<int> indirect_paths;  // --indirect-paths
@@ -69,6 +83,15 @@ struct RenderOptions {
   CameraOverride camera_override;
   std::optional<color3> env_color;
   std::string env_map;
+  std::optional<EnvironmentPreset> env_preset;
+  float env_intensity = 1;         // --env-intensity: scales the whole environment
+  float env_rotation_degrees = 0;  // --env-rotation: about the up axis (lights/environment_map.h)
+  // --up as the world's up: the framing camera's and the environment's (camera_override.up
+  // holds it too, for a camera placed by the flags).
+  std::optional<vec3> world_up;
+  std::optional<Orbit> orbit;
+  std::optional<BackgroundKind> background;
+  color3 background_color;  // for BackgroundKind::color
   std::optional<PixelWindow> crop;
   std::optional<SampleRange> sample_range;  // --sample-range: only these samples of each pixel
   std::optional<ShardSpec> shard;           // --shard: sets the window and sample range

@@ -6,6 +6,7 @@
 #include "render/camera.h"
 #include "render/render.h"
 #include "render/shard_plan.h"
+#include "scene/scene_summary.h"
 #include "sampling/pixel_filter.h"
 
 namespace radiant {
@@ -83,18 +84,46 @@ void resolve_piece(const RenderOptions& options, ResolvedSettings& r) {
     throw std::invalid_argument("--time-limit cannot be used with --shard or --sample-range: shards must be complete");
 }
 
+// The environment: --env NAME or FILE and --env-color, else the scene's own, else the built-in
+// studio for a scene that has no light of its own (docs/lights.md, "Default lighting").
+void resolve_environment(const RenderOptions& options, const SceneDesc& scene, ResolvedSettings& r) {
+  EnvironmentSpec& e = r.environment;
+  e.color = scene.environment.color;
+  e.map_path = scene.environment.map_path;
+  e.map_scale = scene.environment.map_scale;
+  if (!options.env_map.empty()) e.map_path = options.env_map, e.map_scale = 1;
+  if (options.env_preset) {
+    e = {};
+    if (*options.env_preset == EnvironmentPreset::studio) e.studio = true;
+    if (*options.env_preset == EnvironmentPreset::white) e.color = {1, 1, 1};
+  }
+  if (options.env_color) e.color = *options.env_color;
+  bool chosen = options.env_preset || !options.env_map.empty() || options.env_color;
+  if (!chosen && is_black(e.color) && e.map_path.empty() && !lights_itself(scene)) {
+    e.studio = true;
+    r.default_environment = true;
+  }
+  e.color = e.color * options.env_intensity;
+  e.map_scale *= options.env_intensity;
+  e.frame = make_environment_frame(r.world_up, options.env_rotation_degrees);
+}
+
+bool has_environment(const EnvironmentSpec& e) { return !is_black(e.color) || !e.map_path.empty() || e.studio; }
+
 }  // namespace
 
 ResolvedSettings resolve_settings(const PreparedScene& prepared, const RenderOptions& options) {
   const SceneDesc& scene = *prepared.scene;
   ResolvedSettings r;
+  if (options.world_up) r.world_up = normalize(*options.world_up);
   r.camera = world_view_camera(prepared, options, r.camera_framed);
   r.camera.position = to_render_space(r.camera.position, prepared.origin);
   resolve_size(options, scene, r);
   check_camera_traceable(r, prepared);
 
+  resolve_environment(options, scene, r);
   RenderMode mode = options.mode ? *options.mode : scene.settings.mode.value_or(RenderMode::auto_select);
-  if (mode == RenderMode::auto_select) mode = choose_auto_mode(scene, r.mode_reason);
+  if (mode == RenderMode::auto_select) mode = choose_auto_mode(scene, has_environment(r.environment), r.mode_reason);
   r.mode = mode;
   bool whitted = mode == RenderMode::whitted;
   r.spp = options.spp ? *options.spp : scene.settings.spp.value_or(whitted ? default_whitted_spp : default_path_spp);
@@ -113,17 +142,18 @@ ResolvedSettings resolve_settings(const PreparedScene& prepared, const RenderOpt
 
   r.view = options.view ? *options.view : scene.settings.view.value_or(ViewTransform::standard);
   r.transparent = options.transparent ? *options.transparent : scene.settings.transparent.value_or(false);
+  r.background = options.background.value_or(BackgroundKind::blur);
+  r.background_color = options.background_color;
+  if (r.background == BackgroundKind::transparent) r.transparent = true;
   r.filter = options.filter ? *options.filter : scene.settings.filter.value_or(PixelFilterKind::box);
   std::optional<float> width = options.filter_width ? options.filter_width : scene.settings.filter_width;
   r.filter_radius = width ? *width / 2 : default_filter_radius(r.filter);
   if (!(r.filter_radius > 0 && r.filter_radius <= max_filter_width / 2))
     throw std::invalid_argument("--filter-width must be in (0, " + std::to_string(int(max_filter_width)) + "] pixels");
-  r.environment_color = options.env_color ? *options.env_color : scene.environment.color;
-  r.environment_map = options.env_map.empty() ? scene.environment.map_path : options.env_map;
 
   uint32_t needed = prepared.effects.mask;
-  if (!is_black(r.environment_color) || !r.environment_map.empty()) needed |= effect_environment | effect_shadows | effect_indirect;
-  if (options.env_color && is_black(*options.env_color) && r.environment_map.empty()) needed &= ~effect_environment;
+  if (has_environment(r.environment)) needed |= effect_environment | effect_shadows | effect_indirect;
+  else if (options.env_color || options.env_preset) needed &= ~effect_environment;
   r.effects = options.effects.empty() ? needed : apply_effects_override(needed, options.effects);
   r.compiled_variant = options.effects.find("all") != std::string::npos ? effect_all : smallest_variant(r.effects);
 

@@ -57,8 +57,14 @@ std::string settings_hash(const ResolvedSettings& s, const RenderOptions& option
   text << int(c.projection) << ' ';
   put(text, c.position), put(text, c.forward), put(text, c.up);
   put(text, c.vertical_fov_degrees), put(text, c.ortho_height), put(text, c.aspect);
-  put(text, s.environment_color);
-  text << s.environment_map << '\n' << s.effects << ' ' << s.compiled_variant << ' ';
+  const EnvironmentSpec& e = s.environment;
+  put(text, e.color);
+  text << e.map_path << '\n' << s.effects << ' ' << s.compiled_variant << ' ';
+  // Only what differs from a plain uniform or file environment, so that their hashes stay.
+  if (e.studio) text << "studio ";
+  if (e.map_scale != 1) put(text, e.map_scale);
+  if (e.frame.x.x != 1 || e.frame.y.y != 1) put(text, e.frame.x), put(text, e.frame.y);
+  if (s.background != BackgroundKind::blur) text << "background " << int(s.background) << ' ', put(text, s.background_color);
   put(text, options.contribution_cutoff);
   text << int(options.texture_filter) << ' ';
   text << (options.aovs.empty() ? "no-aov-sums" : "aov-sums");

@@ -43,10 +43,10 @@ bool light_is_enclosed(const SceneAccel& accel, vec3 position) {
 
 }  // namespace
 
-bool has_light_sources(const SceneDesc& scene) {
+bool lights_itself(const SceneDesc& scene) {
   if (!scene.lights.empty() || !is_black(scene.environment.color) || !scene.environment.map_path.empty()) return true;
   for (const MaterialDesc& m : scene.materials)
-    if (!is_black(m.emission)) return true;
+    if (max_component(m.emission) > lamp_radiance) return true;
   return false;
 }
 
@@ -71,8 +71,10 @@ SceneSummary summarize_scene(const SceneDesc& scene) {
   s.warnings = scene.warnings;
   if (scene.degenerate_triangles_dropped > 0)
     s.warnings.push_back(std::to_string(scene.degenerate_triangles_dropped) + " degenerate triangle(s) dropped");
-  if (!has_light_sources(scene))
-    s.warnings.push_back("no lights, emissive materials or environment: the image will be black unless --env-color or --env is given");
+  if (!lights_itself(scene))
+    s.warnings.push_back(std::string(s.emissive_materials ? "no lights or environment, and no emissive material bright enough to light it"
+                                                          : "no lights, emissive materials or environment") +
+                         ": rendered under the built-in studio environment unless --env is given");
   if (!scene.instances.empty() || !scene.shapes.empty()) {
     auto accel = build_scene_accel(scene);
     for (size_t i = 0; i < scene.lights.size(); ++i) {

@@ -19,8 +19,14 @@ struct SceneSummary {
   std::vector<std::string> warnings;  // the loader's, plus the analysis below
 };
 
-// True when something in the file emits light: a light, an emissive material or an environment.
-bool has_light_sources(const SceneDesc& scene);
+// Emitted radiance above this lights a scene: glTF's emissive factor alone stops at 1, so a
+// brighter surface is a lamp (KHR_materials_emissive_strength, a .scene emitter), while a
+// dimmer one is a glowing detail (a screen, a label) that cannot light a model by itself.
+constexpr float lamp_radiance = 1.0f;
+
+// True when the file lights itself: a light, an environment, or an emissive material brighter
+// than lamp_radiance. Files that do not get the built-in studio environment by default.
+bool lights_itself(const SceneDesc& scene);
 
 // Counts and bounds, plus warnings: no light at all, lights enclosed by geometry (checked by
 // casting rays from each point or spot light), and the loader's own warnings.

@@ -207,28 +207,52 @@ TEST_CASE("render cli: a side derived from an extreme camera aspect is out of ra
   CHECK_FALSE(fs::exists(out));
 }
 
-TEST_CASE("render cli: a scene nothing lights is warned about before rendering, unless the flags light it") {
+namespace {
+
+// The mean of every channel of every pixel.
+double mean_value(const TestImage& image) {
+  double sum = 0;
+  for (float v : image.pixels) sum += v;
+  return image.pixels.empty() ? 0 : sum / double(image.pixels.size());
+}
+
+}  // namespace
+
+TEST_CASE("render cli: a scene nothing lights gets the studio environment, said before rendering, unless the flags light it") {
   ScratchDir dir("cli-dark");
   fs::path obj = dir.write("dark.obj", "v -1 -1 -3\nv 1 -1 -3\nv 0 1 -3\nf 1 2 3\n");
-  std::string render = "render " + quoted(obj) + " -o " + quoted(dir.file("o.png")) + " --width 8 --height 8 --spp 1";
-  CommandResult dark = run_radiant(render);
-  REQUIRE(dark.exit_code == 0);
-  size_t warning = dark.err.find("warning: " + obj.string() + ": no lights, emissive materials or environment");
-  CHECK(warning != std::string::npos);
-  CHECK(warning < dark.err.find("wrote "));  // said before the render, not after it
-  CommandResult lit = run_radiant(render + " --env-color 1,1,1");
-  REQUIRE(lit.exit_code == 0);
-  CHECK(lit.err.find("no lights") == std::string::npos);
+  std::string render = "render " + quoted(obj) + " --width 8 --height 8 --spp 4";
+  CommandResult studio = run_radiant(render + " -o " + quoted(dir.file("studio.exr")));
+  REQUIRE(studio.exit_code == 0);
+  size_t note = studio.err.find(obj.string() + ": nothing in the file lights it; using the built-in studio environment");
+  CHECK(note != std::string::npos);
+  CHECK(note < studio.err.find("wrote "));  // said before the render, not after it
+  CHECK(mean_value(read_image(dir.file("studio.exr"))) > 0.1);
+  for (const char* flags : {" --env none", " --env-color 1,1,1", " --env studio"}) {
+    CAPTURE(flags);
+    CommandResult chosen = run_radiant(render + flags + " -o " + quoted(dir.file("chosen.exr")));
+    REQUIRE(chosen.exit_code == 0);
+    CHECK(chosen.err.find("nothing in the file lights it") == std::string::npos);
+  }
+  CHECK(mean_value(read_image(dir.file("chosen.exr"))) > 0.1);  // --env studio, asked for
+  REQUIRE(run_radiant(render + " --env none --quiet -o " + quoted(dir.file("black.exr"))).exit_code == 0);
+  CHECK(mean_value(read_image(dir.file("black.exr"))) == 0);
 }
 
 TEST_CASE("render cli: auto mode's reason is printed before rendering and is right for an emissive-only scene") {
   ScratchDir dir("cli-auto-emissive");
   fs::path scene = dir.write("glow.scene", "@camera\nposition 0 0 5\ndirection 0 0 -1\nup 0 1 0\n"
                                            "@sphere\ncenter 0 0 0\nradius 1\nemission 255 128 0\n");
-  CommandResult r = run_radiant("render " + quoted(scene) + " -o " + quoted(dir.file("o.png")) + " --width 8 --height 8 --spp 1");
-  REQUIRE(r.exit_code == 0);
-  size_t reason = r.err.find("mode whitted: one convex emissive object and no other light");
+  std::string render = "render " + quoted(scene) + " -o " + quoted(dir.file("o.png")) + " --width 8 --height 8 --spp 1";
+  CommandResult dark = run_radiant(render + " --env none");
+  REQUIRE(dark.exit_code == 0);
+  size_t reason = dark.err.find("mode whitted: one convex emissive object and no other light");
   CHECK(reason != std::string::npos);
-  CHECK(reason < r.err.find("wrote "));
-  CHECK(r.err.find("no lights") == std::string::npos);  // its emission lights it
+  CHECK(reason < dark.err.find("wrote "));
+  // Emission no brighter than a glTF emissive factor lights nothing: the plain render is lit by
+  // the studio, which only the path tracer samples.
+  CommandResult plain = run_radiant(render);
+  REQUIRE(plain.exit_code == 0);
+  CHECK(plain.err.find("mode path: the background lights the scene") != std::string::npos);
+  CHECK(plain.err.find("nothing in the file lights it") != std::string::npos);
 }

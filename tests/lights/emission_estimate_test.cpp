@@ -89,6 +89,7 @@ RenderOptions direct_light(int spp, uint32_t seed) {
   o.mode = RenderMode::path;
   o.seed = seed;
   o.texture_filter = TextureFilterMode::bilinear;
+  o.env_preset = EnvironmentPreset::none;  // the emitter alone, not the default studio
   return o;
 }
 

@@ -18,6 +18,7 @@ RenderOptions path_options(int width, int height, int spp) {
   o.spp = spp;
   o.mode = RenderMode::path;
   o.quiet = true;
+  o.env_preset = EnvironmentPreset::none;  // glowing spheres on black, not the default studio
   return o;
 }
 

@@ -109,12 +109,10 @@ TEST_CASE("output: an unreadable environment map is an error naming the file") {
   CHECK_FALSE(fs::exists(dir.file("x.exr")));
 }
 
-TEST_CASE("output: an environment map with a negative or non-finite pixel is refused naming the pixel") {
-  // It used to be clamped to 0 (negative) or zeroed (NaN, infinity) without a word.
-  ScratchDir dir("env-negative");
+TEST_CASE("output: an environment map with a non-finite pixel is refused naming the pixel") {
+  ScratchDir dir("env-nonfinite");
   fs::path scene = dir.write("plane.scene", plane_scene);
-  for (auto [bad, message] : {std::pair{-1.0f, "G is -1: environment radiance must not be negative"},
-                              {std::nanf(""), "G is nan: environment radiance must be finite"},
+  for (auto [bad, message] : {std::pair{std::nanf(""), "G is nan: environment radiance must be finite"},
                               {INFINITY, "G is inf: environment radiance must be finite"}}) {
     std::vector<float> pixels(4 * 2 * 3, 1.0f);
     pixels[(1 * 4 + 2) * 3 + 1] = bad;  // pixel (2, 1), G
@@ -126,4 +124,25 @@ TEST_CASE("output: an environment map with a negative or non-finite pixel is ref
     CHECK(r.err == "radiant: " + sky.string() + ": pixel (2, 1): " + message + "\n");
     CHECK_FALSE(fs::exists(dir.file("x.exr")));
   }
+}
+
+TEST_CASE("output: an environment map's tiny negative pixels read as 0, with one warning") {
+  // Saved renders (Blender's world EXRs) carry values such as -1e-5.
+  ScratchDir dir("env-negative");
+  fs::path scene = dir.write("plane.scene", plane_scene);
+  std::vector<float> pixels(4 * 2 * 3, 1.0f), clamped = pixels;
+  pixels[(1 * 4 + 2) * 3 + 1] = -1.09e-5f, clamped[(1 * 4 + 2) * 3 + 1] = 0;
+  pixels[(0 * 4 + 1) * 3 + 2] = -2e-6f, clamped[(0 * 4 + 1) * 3 + 2] = 0;
+  write_test_image(dir.file("sky.exr"), 4, 2, {"R", "G", "B"}, pixels);
+  write_test_image(dir.file("clamped.exr"), 4, 2, {"R", "G", "B"}, clamped);
+  std::string flags = " --mode path --width 4 --height 4 --spp 4 --no-metadata";
+  CommandResult r = run_radiant("render " + quoted(scene) + " -o " + quoted(dir.file("x.exr")) + " --env " +
+                                quoted(dir.file("sky.exr")) + flags);
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.err.find("warning: " + dir.file("sky.exr").string() + ": 2 negative pixel value(s), down to -1.09e-05, read as 0") !=
+        std::string::npos);
+  REQUIRE(run_radiant("render " + quoted(scene) + " -o " + quoted(dir.file("y.exr")) + " --env " +
+                      quoted(dir.file("clamped.exr")) + flags + " --quiet")
+              .exit_code == 0);
+  CHECK(same_pixels(dir.file("x.exr"), dir.file("y.exr")));  // the same as zeros
 }

@@ -33,6 +33,7 @@ RenderOptions edge_options(PixelFilterKind filter) {
   o.mode = RenderMode::whitted;
   o.sampler = SamplerKind::sobol;
   o.filter = filter;
+  o.env_preset = EnvironmentPreset::none;  // the emitter's edge on black, not the default studio
   return o;
 }
 
