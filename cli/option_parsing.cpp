@@ -358,7 +358,7 @@ void RenderFlags::bind(CLI::App& app, bool image_flags) {
   app.add_option("--look-at", look_at, "Point the camera looks at X,Y,Z");
   app.add_option("--up", up,
                  "The scene's up: an axis (+Z for z-up files) or X,Y,Z; turns the framing camera and the "
-                 "environment, and rolls a camera placed by the flags");
+                 "environment, and is the up of a camera placed by --look-from/--look-at");
   app.add_option("--orbit", orbit,
                  "AZIMUTH,ELEVATION[,DISTANCE]: the framing camera turned about the model in degrees, and "
                  "its distance as a multiple of the framing one");
@@ -429,7 +429,11 @@ void RenderFlags::finish() {
   if (!aovs.empty()) options.aovs = parse_aovs("--aov", aovs);
   if (!look_from.empty()) options.camera_override.look_from = parse_vec3("--look-from", look_from);
   if (!look_at.empty()) options.camera_override.look_at = parse_vec3("--look-at", look_at);
-  if (!up.empty()) options.camera_override.up = options.world_up = parse_up("--up", up);
+  if (!up.empty()) {
+    options.world_up = parse_up("--up", up);
+    // A file's camera keeps its own roll; a camera placed by the flags stands on this up.
+    if (!look_from.empty() || !look_at.empty()) options.camera_override.up = options.world_up;
+  }
   if (!orbit.empty()) options.orbit = parse_orbit("--orbit", orbit);
   if (!env.empty()) parse_environment_choice(env, options);
   options.env_intensity = env_intensity;

@@ -101,12 +101,12 @@ color3 studio_radiance(vec3 d) {
   // Walls brighten towards the ceiling; the floor is darker; the horizon is a soft step.
   float elevation = std::asin(std::clamp(d.y, -1.0f, 1.0f));
   float above = std::clamp((elevation + 4 * degree) / (8 * degree), 0.0f, 1.0f);
-  float wall = 0.42f + 0.18f * std::max(d.y, 0.0f);
-  float radiance = 0.16f + (wall - 0.16f) * above * above * (3 - 2 * above);
+  float wall = 0.38f + 0.16f * std::max(d.y, 0.0f);
+  float radiance = 0.145f + (wall - 0.145f) * above * above * (3 - 2 * above);
   // A large key overhead, towards the camera and to its right; a fill to the left; a rim behind.
-  radiance += 3.2f * softbox(d, normalize(vec3{0.35f, 1.3f, 0.8f}), 22 * degree, 5 * degree);
-  radiance += 1.6f * softbox(d, normalize(vec3{-1.0f, 0.35f, 0.35f}), 18 * degree, 5 * degree);
-  radiance += 1.6f * softbox(d, normalize(vec3{0.7f, 0.75f, -1.0f}), 14 * degree, 4 * degree);
+  radiance += 2.9f * softbox(d, normalize(vec3{0.35f, 1.3f, 0.8f}), 22 * degree, 5 * degree);
+  radiance += 1.45f * softbox(d, normalize(vec3{-1.0f, 0.35f, 0.35f}), 18 * degree, 5 * degree);
+  radiance += 1.45f * softbox(d, normalize(vec3{0.7f, 0.75f, -1.0f}), 14 * degree, 4 * degree);
   return {radiance, radiance, radiance};
 }
 

@@ -75,3 +75,41 @@ TEST_CASE("framing camera: a flat model in the x = const plane fills the framed 
   for (const FilmPixel& pixel : result.film.pixels) lit += pixel_mean(pixel).x > 0;
   CHECK(lit > int(result.film.pixels.size()) / 3);
 }
+
+TEST_CASE("framing camera: --up +Z frames a z-up model as a y-up one, from -y, upright") {
+  // The same box, tall along y in a y-up world and tall along z in a z-up one.
+  CameraDesc y_up = frame_box({-1, 0, -0.5f}, {1, 3, 0.5f}, 1);
+  CameraDesc z_up = frame_box({-1, -0.5f, 0}, {1, 0.5f, 3}, 1, {0, 0, 1});
+  CHECK(z_up.up.z == doctest::Approx(y_up.up.y));
+  CHECK(z_up.position.y == doctest::Approx(-y_up.position.z));  // the front of a z-up file is -y
+  CHECK(z_up.position.z == doctest::Approx(y_up.position.y));
+  CHECK(z_up.position.x == doctest::Approx(y_up.position.x));
+  CHECK(widest_corner(z_up, {-1, -0.5f, 0}, {1, 0.5f, 3}, 1) == doctest::Approx(widest_corner(y_up, {-1, 0, -0.5f}, {1, 3, 0.5f}, 1)));
+}
+
+TEST_CASE("framing camera: --orbit turns the view about the box's centre, keeping all of it in view") {
+  vec3 lower{-1, -1, -1}, upper{1, 1, 1};
+  CameraDesc front = frame_box(lower, upper, 1);
+  CameraDesc right = frame_box(lower, upper, 1, {0, 1, 0}, Orbit{90, 0, 1});
+  // Counterclockwise seen from above: the camera in front (+z) moves to +x, at the same height.
+  CHECK(right.position.x == doctest::Approx(length(vec3{front.position.x, 0, front.position.z})));
+  CHECK(right.position.z == doctest::Approx(0).epsilon(1e-5).scale(1));
+  CHECK(right.position.y == doctest::Approx(front.position.y));
+  CameraDesc above = frame_box(lower, upper, 1, {0, 1, 0}, Orbit{0, 60, 1});
+  CHECK(std::asin(above.position.y / length(above.position)) * 180 / pi ==
+        doctest::Approx(std::asin(front.position.y / length(front.position)) * 180 / pi + 60).epsilon(1e-3));
+  for (CameraDesc camera : {right, above}) CHECK(widest_corner(camera, lower, upper, 1) <= 1);
+  CameraDesc farther = frame_box(lower, upper, 1, {0, 1, 0}, Orbit{0, 0, 2});
+  CHECK(length(farther.position) == doctest::Approx(2 * length(front.position)));
+}
+
+TEST_CASE("framing camera: --camera frame picks it even when the file has cameras") {
+  std::vector<CameraDesc> cameras = {perspective_camera({0, 0, 9}, {0, 0, -1}, {0, 1, 0}, 30)};
+  cameras[0].name = "file";
+  CameraDesc framing = frame_box({-1, -1, -1}, {1, 1, 1}, 1);
+  bool framed = false;
+  CHECK(select_camera(cameras, framing, "frame", framed).name == "framing");
+  CHECK(framed);
+  CHECK(select_camera(cameras, framing, "", framed).name == "file");
+  CHECK_FALSE(framed);
+}
