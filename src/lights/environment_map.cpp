@@ -14,6 +14,7 @@ namespace {
 
 constexpr int backdrop_width = 64, backdrop_height = 32;
 constexpr int studio_width = 512, studio_height = 256;
+constexpr float studio_backdrop_dimming = 0.45f;
 
 // Bytes a map of `texels` texels holds: texels, sampling weights and tables, and the backdrop.
 uint64_t environment_map_bytes(uint64_t texels, uint64_t read_bytes_per_texel) {
@@ -206,6 +207,9 @@ EnvironmentMap make_studio_environment(MemoryBudget* budget) {
       map.texels[size_t(y) * map.width + x] = studio_radiance(d);
     }
   finish_map(map);
+  // Seen behind the model, the walls are darker than they light it, so that a white or grey
+  // model stands out from them (as a photographer's backdrop is lit less than the subject).
+  for (color3& c : map.backdrop) c = c * studio_backdrop_dimming;
   return map;
 }
 
