@@ -292,8 +292,10 @@ struct PassRunner {
 // The image's width / height as a camera without an aspect of its own will see it (1 when the
 // size comes from the default).
 float image_aspect(const SceneSettings& settings, const RenderOptions& options) {
-  std::optional<int> width = options.width ? options.width : settings.width;
-  std::optional<int> height = options.height ? options.height : settings.height;
+  // One side from the flags keeps the scene's shape (resolve_settings).
+  bool flags = options.width && options.height;
+  std::optional<int> width = flags ? options.width : settings.width;
+  std::optional<int> height = flags ? options.height : settings.height;
   return width && height && *width > 0 && *height > 0 ? float(*width) / float(*height) : 1.0f;
 }
 

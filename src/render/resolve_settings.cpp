@@ -23,11 +23,20 @@ std::string side_text(double side) {
 void resolve_size(const RenderOptions& options, const SceneDesc& scene, ResolvedSettings& r) {
   // In double until checked: a side derived from an extreme aspect may not fit in an int.
   std::optional<double> width, height;
-  if (std::optional<int> w = options.width ? options.width : scene.settings.width) width = *w;
-  if (std::optional<int> h = options.height ? options.height : scene.settings.height) height = *h;
-  if (!width && r.camera.width > 0) width = r.camera.width;
-  if (!height && r.camera.height > 0) height = r.camera.height;
   double aspect = r.camera.aspect > 0 ? r.camera.aspect : 1.0;
+  if (options.width.has_value() != options.height.has_value()) {
+    // One side from the flags: the other keeps the shape the scene's image would have.
+    const SceneSettings& own = scene.settings;
+    if (own.width && own.height) aspect = double(*own.width) / double(*own.height);
+    else if (r.camera.width > 0 && r.camera.height > 0) aspect = double(r.camera.width) / double(r.camera.height);
+    if (options.width) width = *options.width;
+    else height = *options.height;
+  } else {
+    if (std::optional<int> w = options.width ? options.width : scene.settings.width) width = *w;
+    if (std::optional<int> h = options.height ? options.height : scene.settings.height) height = *h;
+    if (!width && r.camera.width > 0) width = r.camera.width;
+    if (!height && r.camera.height > 0) height = r.camera.height;
+  }
   if (width && !height) height = std::max(1.0, std::round(*width / aspect));
   if (height && !width) width = std::max(1.0, std::round(*height * aspect));
   if (!width) {

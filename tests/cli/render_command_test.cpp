@@ -256,3 +256,20 @@ TEST_CASE("render cli: auto mode's reason is printed before rendering and is rig
   CHECK(plain.err.find("mode path: the background lights the scene") != std::string::npos);
   CHECK(plain.err.find("nothing in the file lights it") != std::string::npos);
 }
+
+TEST_CASE("render cli: one side from the flags keeps the shape of the scene's image, as Cycles' percentage does") {
+  ScratchDir dir("cli-one-side");
+  fs::path scene = dir.write("wide.scene", "@render\nwidth 800\nheight 450\n@camera\nposition 0 0 5\ndirection 0 0 -1\n"
+                                           "up 0 1 0\n@sphere\ncenter 0 0 0\nradius 1\nkd 0.5\n@light point\nposition 0 4 4\n");
+  struct Case {
+    const char* flags;
+    int width, height;
+  };
+  for (Case c : {Case{"--width 400", 400, 225}, Case{"--height 90", 160, 90}, Case{"--width 100 --height 100", 100, 100}}) {
+    CAPTURE(c.flags);
+    REQUIRE(run_radiant("render " + quoted(scene) + " -o " + quoted(dir.file("o.png")) + " --spp 1 -q " + c.flags).exit_code == 0);
+    TestImage image = read_image(dir.file("o.png"));
+    CHECK(image.width == c.width);
+    CHECK(image.height == c.height);
+  }
+}
