@@ -73,12 +73,35 @@ TemporaryFile& output_file(OutputSet& outputs, const std::string& target, const 
   return is_standard_output(target) ? outputs.create_standard_output(format) : outputs.create(target);
 }
 
+// What the mode leaves out of the light the scene has, or "" (docs/lights.md's table).
+std::string dropped_light(const SceneDesc& scene, const ResolvedSettings& s) {
+  bool ambient = false, delta = false, emitters = false;
+  for (const LightDesc& l : scene.lights) (l.kind == LightKind::ambient ? ambient : delta) = true;
+  for (const MaterialDesc& m : scene.materials) emitters |= max_component(m.emission) > lamp_radiance;
+  bool environment = !is_black(s.environment.color) || !s.environment.map_path.empty() || s.environment.studio;
+  std::vector<std::string> lost;
+  if (s.mode == RenderMode::whitted) {
+    if (emitters) lost.push_back("emissive surfaces are only seen, they light nothing");
+    if (environment) lost.push_back("the environment is only seen behind the scene, it lights nothing");
+  } else {
+    if (ambient) lost.push_back("the ambient light is ignored (only the Whitted model defines it)");
+    if (delta && s.mode == RenderMode::naive)
+      lost.push_back("point, spot and directional lights cannot be hit by naive paths and add nothing");
+  }
+  std::string text;
+  for (const std::string& part : lost) text += (text.empty() ? "" : "; ") + part;
+  return text;
+}
+
 }  // namespace
 
 void print_render_notes(const std::string& scene_path, const PreparedScene& prepared, const ResolvedSettings& s) {
   if (s.camera_framed && prepared.world.cameras.empty())
     std::cerr << "radiant: the scene has no camera; using one that frames the whole scene\n";
   if (!s.mode_reason.empty()) std::cerr << "radiant: mode " << mode_name(s.mode) << ": " << s.mode_reason << "\n";
+  // A mode the flags or the file chose may leave out light the scene has (auto never does).
+  else if (std::string dropped = dropped_light(*prepared.scene, s); !dropped.empty())
+    std::cerr << "radiant: warning: mode " << mode_name(s.mode) << ": " << dropped << "\n";
   if (s.default_environment)
     std::cerr << "radiant: " << scene_path
               << ": nothing in the file lights it; using the built-in studio environment (--env none for black)\n";

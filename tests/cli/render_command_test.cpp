@@ -273,3 +273,20 @@ TEST_CASE("render cli: one side from the flags keeps the shape of the scene's im
     CHECK(image.height == c.height);
   }
 }
+
+TEST_CASE("render cli: a mode that leaves out light the scene has says so; auto and a mode that keeps it do not") {
+  ScratchDir dir("cli-dropped-light");
+  auto notes = [&](const std::string& scene, const std::string& flags) {
+    CommandResult r = run_radiant("render " + quoted(source_path(scene)) + " -o " + quoted(dir.file("o.png")) +
+                                  " --width 8 --height 8 --spp 1 " + flags);
+    REQUIRE(r.exit_code == 0);
+    return r.err;
+  };
+  CHECK(notes("assets/cornell.gltf", "--mode whitted").find("warning: mode whitted: emissive surfaces are only seen") !=
+        std::string::npos);
+  CHECK(notes("assets/showcase.scene", "--mode path").find("warning: mode path: the ambient light is ignored") !=
+        std::string::npos);
+  CHECK(notes("assets/cornell.gltf", "--mode path").find("warning") == std::string::npos);
+  CHECK(notes("assets/cornell.gltf", "").find("warning") == std::string::npos);
+  CHECK(notes("assets/showcase.scene", "").find("warning") == std::string::npos);
+}
