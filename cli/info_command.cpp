@@ -10,6 +10,7 @@
 #include "render/render.h"
 #include "render_report.h"
 #include "scene/effects.h"
+#include "scene/enum_names.h"
 #include "scene/scene_summary.h"
 
 namespace radiant::cli {
@@ -31,6 +32,13 @@ std::string info_json(const std::string& path, const SceneDesc& scene, const Sce
   j["lights"] = {{"ambient", s.ambient_lights}, {"directional", s.directional_lights}, {"point", s.point_lights},
                  {"spot", s.spot_lights}};
   j["cameras"] = s.cameras;
+  Json cameras = Json::array(), lights = Json::array();
+  for (size_t i = 0; i < scene.cameras.size(); ++i)
+    cameras.push_back({{"index", i}, {"name", scene.cameras[i].name}, {"projection", name_of(projection_names, scene.cameras[i].projection)}});
+  for (size_t i = 0; i < scene.lights.size(); ++i)
+    lights.push_back({{"index", i}, {"name", scene.lights[i].name}, {"kind", name_of(light_kind_names, scene.lights[i].kind)}});
+  j["camera_list"] = cameras;
+  j["light_list"] = lights;
   j["bounds"] = s.has_bounds ? Json{{"min", json_vec3(s.bounds_lower)}, {"max", json_vec3(s.bounds_upper)}} : Json(nullptr);
   Json list = Json::array();
   size_t reason = 0;
@@ -53,6 +61,13 @@ void print_info(std::ostream& out, const std::string& path, const SceneDesc& sce
       << "  lights:    " << s.point_lights << " point, " << s.spot_lights << " spot, " << s.directional_lights << " directional, "
       << s.ambient_lights << " ambient\n"
       << "  cameras:   " << s.cameras << (s.cameras ? "" : " (a framing camera will be used)") << "\n";
+  // Each camera and light by index and name, as --camera takes them.
+  for (size_t i = 0; i < scene.cameras.size(); ++i)
+    out << "    camera " << i << (scene.cameras[i].name.empty() ? "" : " '" + scene.cameras[i].name + "'") << ": "
+        << name_of(projection_names, scene.cameras[i].projection) << "\n";
+  for (size_t i = 0; i < scene.lights.size(); ++i)
+    out << "    light " << i << (scene.lights[i].name.empty() ? "" : " '" + scene.lights[i].name + "'") << ": "
+        << name_of(light_kind_names, scene.lights[i].kind) << "\n";
   if (s.has_bounds)
     out << "  bounds:    (" << s.bounds_lower.x << ", " << s.bounds_lower.y << ", " << s.bounds_lower.z << ") to ("
         << s.bounds_upper.x << ", " << s.bounds_upper.y << ", " << s.bounds_upper.z << ")\n";

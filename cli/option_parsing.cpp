@@ -12,6 +12,7 @@
 #include "sampling/pixel_filter.h"
 #include "lights/light_table.h"
 #include "scene/coordinate_range.h"
+#include "scene/enum_names.h"
 
 namespace radiant::cli {
 
@@ -104,12 +105,8 @@ LightSampler parse_light_sampler(const std::string& flag, const std::string& tex
 }
 
 Projection parse_camera_type(const std::string& flag, const std::string& text) {
-  if (text == "perspective") return Projection::perspective;
-  if (text == "orthographic") return Projection::orthographic;
-  if (text == "equirect") return Projection::equirectangular;
-  if (text == "fisheye") return Projection::fisheye;
-  throw CLI::ValidationError(flag, "unknown camera type '" + text +
-                                       "' (expected perspective, orthographic, equirect or fisheye)");
+  if (std::optional<Projection> projection = value_named(projection_names, text)) return *projection;
+  throw CLI::ValidationError(flag, "unknown camera type '" + text + "' (expected " + names_text(projection_names) + ")");
 }
 
 TextureFilterMode parse_texture_filter(const std::string& flag, const std::string& text) {

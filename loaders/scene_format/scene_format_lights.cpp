@@ -2,10 +2,9 @@
 
 #include "scene_format/scene_format_units.h"
 #include "scene_format/scene_format_values.h"
+#include "scene/enum_names.h"
 
 namespace radiant::scene_format {
-
-static const std::vector<std::string> light_kinds = {"ambient", "directional", "point", "spot"};
 
 static const std::vector<AttributeName>& accepted_names(LightKind kind) {
   static const std::vector<AttributeName> ambient = {{"color", ""}};
@@ -24,12 +23,11 @@ static const std::vector<AttributeName>& accepted_names(LightKind kind) {
 
 static LightKind light_kind(const BuildContext& context, const Block& block) {
   if (block.arguments.empty())
-    fail(context, block.header, "expected a light type after '@light' (ambient, directional, point or spot)");
+    fail(context, block.header, "expected a light type after '@light' (" + names_text(light_kind_names) + ")");
   expect_block_arguments(context, block, 1);
   const Token& word = block.arguments[0];
-  for (size_t i = 0; i < light_kinds.size(); ++i)
-    if (word.text == light_kinds[i]) return LightKind(i);
-  fail(context, word, "unknown light type " + quote(word.text) + " (expected ambient, directional, point or spot)");
+  if (std::optional<LightKind> kind = value_named(light_kind_names, word.text)) return *kind;
+  fail(context, word, "unknown light type " + quote(word.text) + " (expected " + names_text(light_kind_names) + ")");
 }
 
 static void set_attenuation(const BuildContext& context, const Attribute& attribute, LightDesc& light) {

@@ -92,8 +92,10 @@ inline LightTable make_light_table(const SceneDesc& scene, color3 environment_co
                                    const std::string& environment_map_path, bool use_area_lights,
                                    MemoryBudget* budget = nullptr, LightSampler sampler = LightSampler::automatic,
                                    bool emission_textures = true) {
-  return make_light_table(scene, EnvironmentSpec{environment_color, environment_map_path}, use_area_lights, budget,
-                          sampler, emission_textures);
+  EnvironmentSpec environment;
+  environment.color = environment_color;
+  environment.map_path = environment_map_path;
+  return make_light_table(scene, environment, use_area_lights, budget, sampler, emission_textures);
 }
 
 }  // namespace radiant

@@ -124,3 +124,14 @@ TEST_CASE("json: documents stay valid whatever the names hold: quotes, control c
   REQUIRE(render.exit_code == 0);
   CHECK(nlohmann::json::parse(read_bytes(stats))["scene"].get<std::string>().find("we\"ird") != std::string::npos);
 }
+
+TEST_CASE("info: each camera and light is listed by index, name and kind, as --camera takes them") {
+  CommandResult r = run_radiant("info " + quoted(source_path("assets/showcase.scene")));
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.out.find("    camera 0 'main': perspective\n") != std::string::npos);
+  CHECK(r.out.find("    light 3: spot\n") != std::string::npos);
+  CommandResult j = run_radiant("info " + quoted(source_path("assets/showcase.scene")) + " --json");
+  REQUIRE(j.exit_code == 0);
+  CHECK(j.out.find("\"camera_list\"") != std::string::npos);
+  CHECK(j.out.find("\"kind\": \"ambient\"") != std::string::npos);
+}

@@ -103,7 +103,9 @@ TEST_CASE("environment: the studio lights a white diffuse floor from above near 
     return sum / double(r.film.pixels.size());
   };
   // What the map says: the cosine-weighted sum of its texels over each hemisphere, divided by pi.
-  LightTable studio = make_light_table(SceneDesc{}, EnvironmentSpec{{}, "", true}, true);
+  EnvironmentSpec spec;
+  spec.studio = true;
+  LightTable studio = make_light_table(SceneDesc{}, spec, true);
   const EnvironmentMap& map = studio.environment_map;
   double up = 0, down = 0;
   for (int y = 0; y < map.height; ++y)
