@@ -89,6 +89,13 @@ float selection_weight(bool present, float estimate, bool delta) {
   return delta ? estimate : std::max(estimate, min_lobe_weight);
 }
 
+// Between equal indices a rough interface neither reflects (F = 0) nor bends light: Walter's
+// lobe narrows to the straight line as eta -> 1 (pbrt-v4 makes eta = 1 specular too), and close
+// to 1 its generalized half vector, of length ~|eta - 1|, is lost to rounding.
+constexpr float index_matched_tolerance = 1e-3f;
+bool is_index_matched(float ior) { return std::abs(ior - 1) < index_matched_tolerance; }
+bool transmission_is_delta(const MetallicRoughnessLobes& l) { return l.smooth || is_index_matched(l.ior); }
+
 // Generalized half vector of a refraction (Walter et al. 2007), facing the wo side; false when
 // wo and wi cannot be joined by a refracting microfacet.
 bool refraction_half_vector(const MetallicRoughnessLobes& l, vec3 wi, vec3& h) {
@@ -149,7 +156,7 @@ color3 evaluate(const MetallicRoughnessLobes& l, vec3 wi, float& pdf) {
     if (WithF && l.p_diffuse > 0) f += eval_diffuse(l, wi);
     if (WithPdf) pdf += l.p_diffuse * wi.z * inv_pi;
     if (!l.smooth && l.p_specular > 0) add_rough_reflection<WithF, WithPdf>(l, wi, f, pdf);
-  } else if (!l.smooth && l.p_transmission > 0) {
+  } else if (!transmission_is_delta(l) && l.p_transmission > 0) {
     add_rough_transmission<WithF, WithPdf>(l, wi, f, pdf);
   }
   if (!std::isfinite(pdf)) pdf = 0;
@@ -166,7 +173,7 @@ std::optional<BsdfSample> sample_specular(const MetallicRoughnessLobes& l, vec2 
 
 std::optional<BsdfSample> sample_transmission(const MetallicRoughnessLobes& l, vec2 u) {
   vec3 wi;
-  if (l.smooth) {
+  if (transmission_is_delta(l)) {
     if (!refract(l.wo, {0, 0, 1}, l.eta, wi)) return std::nullopt;  // reflection took it all
     color3 transmittance = l.base * (l.glass * (1 - fresnel_dielectric(l.wo.z, l.eta)));
     return delta_sample(l, wi, transmittance, l.p_transmission);
@@ -216,12 +223,12 @@ MetallicRoughnessLobes make_metallic_roughness_lobes(const MetallicRoughnessPara
   float rise_o = coating_rise(l, cos_o);
   l.coating_o = coating_transmittance(l, cos_o, rise_o);
   if (!l.smooth) l.lambda_o = microfacet_lambda(l, l.wo);
-  float specular = selection_weight(l.metal > 0 || l.plastic * l.specular > 0 || l.glass > 0,
+  float specular = selection_weight(l.metal > 0 || l.plastic * l.specular > 0 || (l.glass > 0 && !is_index_matched(l.ior)),
                                     mean(specular_fresnel(l, cos_o, rise_o)), l.smooth);
   float diffuse = selection_weight(l.plastic > 0 && colored,
                                    l.plastic * mean(l.base) * l.coating_o, false);
   float transmitted = l.glass > 0 && colored ? l.glass * mean(l.base) * (1 - fresnel_dielectric(cos_o, l.eta)) : 0;
-  transmitted = selection_weight(l.glass > 0 && colored, transmitted, l.smooth);
+  transmitted = selection_weight(l.glass > 0 && colored, transmitted, transmission_is_delta(l));
   float total = specular + diffuse + transmitted;
   if (total <= 0) return l;
   l.p_specular = specular / total;
@@ -255,7 +262,8 @@ std::optional<BsdfSample> sample_local(const MetallicRoughnessLobes& l, float u_
 bool is_metallic_roughness_pure_delta(const SurfaceMaterial& m) {
   float alpha = roughness_to_alpha(m.roughness), anisotropy = std::clamp(m.anisotropy, 0.0f, 1.0f);
   float widest_alpha = alpha + (1 - alpha) * anisotropy * anisotropy;  // alpha itself when isotropic
-  return widest_alpha < smooth_alpha_threshold && !has_metallic_roughness_diffuse(m);
+  bool clear_glass = m.metallic <= 0 && m.transmission >= 1 && is_index_matched(m.ior);  // straight through only
+  return clear_glass || (widest_alpha < smooth_alpha_threshold && !has_metallic_roughness_diffuse(m));
 }
 
 }  // namespace radiant
