@@ -308,7 +308,7 @@ void RenderFlags::bind(CLI::App& app, bool image_flags) {
     app.add_option("--spp", spp, "Samples per pixel (the maximum with --noise-threshold)")->check(CLI::Range(1, 1 << 24));
     app.add_option("--exposure", options.exposure, "Exposure in stops for PNG, TIFF, JPEG... (EXR stays linear)")
         ->check(number_in(-64, 64));
-    app.add_option("--view", view, "View transform of PNG, TIFF, JPEG...: standard (sRGB), linear, filmic or agx");
+    app.add_option("--view", view, "View transform of PNG, TIFF, JPEG...: standard (sRGB), linear, filmic, agx, neutral (Khronos PBR Neutral) or aces");
     app.add_option("--bit-depth", options.bit_depth, "8 or 16 bits per channel for PNG and TIFF")
         ->check(CLI::IsMember({8, 16}));
     app.add_flag("--half", options.half_float, "EXR with 16-bit half floats instead of 32-bit");

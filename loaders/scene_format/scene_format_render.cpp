@@ -24,7 +24,7 @@ void build_render_block(BuildContext& context, const Block& block) {
   if (auto* a = find(attributes, "height")) settings.height = read_integer(context, *a, 1, max_image_side);
   // Same order as ViewTransform.
   if (auto* a = find(attributes, "view"))
-    settings.view = ViewTransform(read_choice(context, *a, {"standard", "linear", "filmic", "agx"}));
+    settings.view = ViewTransform(read_choice(context, *a, {"standard", "linear", "filmic", "agx", "neutral", "aces"}));
   // Same order as PixelFilterKind.
   if (auto* a = find(attributes, "filter"))
     settings.filter = PixelFilterKind(read_choice(context, *a, {"box", "triangle", "gaussian", "mitchell", "blackman-harris"}));

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <stdexcept>
 
 #include "image/image_writer.h"
@@ -47,17 +48,63 @@ color3 agx(color3 linear) {
   return {clamp01(c.x), clamp01(c.y), clamp01(c.z)};
 }
 
+// Khronos PBR Neutral (KhronosGroup/ToneMapping, PBR_Neutral): below its start of compression a
+// colour passes unchanged but for a small offset that keeps black black; above, its peak channel
+// is compressed towards 1 and the colour desaturated as much as the peak was lowered.
+constexpr float neutral_f90 = 0.04f;                          // the offset: F0 of an ior-1.5 dielectric
+constexpr float neutral_start = 0.8f - neutral_f90;           // K_s, where compression starts
+constexpr float neutral_desaturation = 0.15f;                 // K_d
+color3 pbr_neutral(color3 c) {
+  c = max(c, {0, 0, 0});
+  float x = min_component(c);
+  float offset = x <= 2 * neutral_f90 ? x - x * x / (4 * neutral_f90) : neutral_f90;
+  c = c - color3{offset, offset, offset};
+  float peak = max_component(c);
+  if (peak <= neutral_start) return c;
+  float d = 1 - neutral_start;
+  float new_peak = 1 - d * d / (peak + d - neutral_start);
+  float g = 1 / (neutral_desaturation * (peak - new_peak) + 1);
+  return c * (new_peak / peak * g) + color3{new_peak, new_peak, new_peak} * (1 - g);
+}
+
+// ACES as three.js's ACESFilmicToneMapping: Stephen Hill's fit of the RRT and ODT between his
+// input matrix (sRGB to AP1 with the RRT's saturation) and output matrix (back to sRGB), after
+// three.js's exposure pre-scale of 1/0.6. Rows here; three.js's GLSL gives them by columns.
+constexpr float aces_input[3][3] = {{0.59719f, 0.35458f, 0.04823f},
+                                    {0.07600f, 0.90834f, 0.01566f},
+                                    {0.02840f, 0.13383f, 0.83777f}};
+constexpr float aces_output[3][3] = {{1.60475f, -0.53108f, -0.07367f},
+                                     {-0.10208f, 1.10813f, -0.00605f},
+                                     {-0.00327f, -0.07276f, 1.07602f}};
+constexpr float aces_exposure = 1 / 0.6f;
+float rrt_odt_fit(float v) {
+  return (v * (v + 0.0245786f) - 0.000090537f) / (v * (0.983729f * v + 0.4329510f) + 0.238081f);
+}
+color3 aces(color3 linear) {
+  color3 c = multiply(aces_input, max(linear, {0, 0, 0}) * aces_exposure);
+  c = multiply(aces_output, {rrt_odt_fit(c.x), rrt_odt_fit(c.y), rrt_odt_fit(c.z)});
+  return {clamp01(c.x), clamp01(c.y), clamp01(c.z)};
+}
+
+color3 srgb_encode(color3 display_linear) {
+  return {linear_to_srgb(clamp01(display_linear.x)), linear_to_srgb(clamp01(display_linear.y)),
+          linear_to_srgb(clamp01(display_linear.z))};
+}
+
+constexpr ViewTransform all_views[] = {ViewTransform::standard, ViewTransform::linear, ViewTransform::filmic,
+                                       ViewTransform::agx,      ViewTransform::neutral, ViewTransform::aces};
+
 }  // namespace
 
 color3 display_encode(color3 linear, const DisplaySettings& display) {
   color3 c = display.exposure == 0 ? linear : linear * std::exp2(display.exposure);
   switch (display.view) {
-    case ViewTransform::standard:
-      return {linear_to_srgb(clamp01(c.x)), linear_to_srgb(clamp01(c.y)), linear_to_srgb(clamp01(c.z))};
+    case ViewTransform::standard: return srgb_encode(c);
     case ViewTransform::linear: return {clamp01(c.x), clamp01(c.y), clamp01(c.z)};
-    case ViewTransform::filmic:
-      return {linear_to_srgb(aces_fitted(c.x)), linear_to_srgb(aces_fitted(c.y)), linear_to_srgb(aces_fitted(c.z))};
+    case ViewTransform::filmic: return srgb_encode({aces_fitted(c.x), aces_fitted(c.y), aces_fitted(c.z)});
     case ViewTransform::agx: return agx(c);
+    case ViewTransform::neutral: return srgb_encode(pbr_neutral(c));
+    case ViewTransform::aces: return srgb_encode(aces(c));
   }
   return c;
 }
@@ -68,14 +115,23 @@ const char* view_transform_name(ViewTransform view) {
     case ViewTransform::linear: return "linear";
     case ViewTransform::filmic: return "filmic";
     case ViewTransform::agx: return "agx";
+    case ViewTransform::neutral: return "neutral";
+    case ViewTransform::aces: return "aces";
   }
   return "?";
 }
 
 ViewTransform parse_view_transform(const std::string& name) {
-  for (ViewTransform v : {ViewTransform::standard, ViewTransform::linear, ViewTransform::filmic, ViewTransform::agx})
+  for (ViewTransform v : all_views)
     if (name == view_transform_name(v)) return v;
-  throw std::invalid_argument("unknown view '" + name + "' (standard, linear, filmic or agx)");
+  throw std::invalid_argument("unknown view '" + name + "' (" + view_transform_choices() + ")");
+}
+
+std::string view_transform_choices() {
+  std::string text;
+  for (size_t i = 0; i < std::size(all_views); ++i)
+    text += (i == 0 ? "" : i + 1 == std::size(all_views) ? " or " : ", ") + std::string(view_transform_name(all_views[i]));
+  return text;
 }
 
 }  // namespace radiant

@@ -8,6 +8,10 @@
 //   agx       AgX (Sobotka), in Wrensch's minimal form: an inset matrix, log2 encoding over
 //             [-12.47, 4.03] stops around 0.18, a polynomial fit of the default contrast
 //             sigmoid, the outset matrix; its output is display-encoded already
+//   neutral   Khronos PBR Neutral: base colours under diffuse white light show unchanged (less
+//             a small offset near black), highlights are compressed and desaturated; then sRGB
+//   aces      the ACES RRT+ODT fit three.js uses (ACESFilmicToneMapping: Hill's matrices and
+//             curve, exposure pre-scale 1/0.6); then sRGB
 // Float outputs (EXR) never pass through here: they keep scene-linear radiance.
 #pragma once
 
@@ -27,8 +31,10 @@ struct DisplaySettings {
 // The display values in [0, 1] of a linear color.
 color3 display_encode(color3 linear, const DisplaySettings& display);
 
-// "standard", "linear", "filmic", "agx"; parse throws std::invalid_argument naming the choices.
+// "standard", "linear", "filmic", "agx", "neutral", "aces"; parse throws std::invalid_argument
+// naming the choices, which view_transform_choices lists ("standard, linear, ... or aces").
 const char* view_transform_name(ViewTransform view);
 ViewTransform parse_view_transform(const std::string& name);
+std::string view_transform_choices();
 
 }  // namespace radiant

@@ -89,6 +89,13 @@ float selection_weight(bool present, float estimate, bool delta) {
   return delta ? estimate : std::max(estimate, min_lobe_weight);
 }
 
+// Between equal indices a rough interface neither reflects (F = 0) nor bends light: Walter's
+// lobe narrows to the straight line as eta -> 1 (pbrt-v4 makes eta = 1 specular too), and close
+// to 1 its generalized half vector, of length ~|eta - 1|, is lost to rounding.
+constexpr float index_matched_tolerance = 1e-3f;
+bool is_index_matched(float ior) { return std::abs(ior - 1) < index_matched_tolerance; }
+bool transmission_is_delta(const MetallicRoughnessLobes& l) { return l.smooth || is_index_matched(l.ior); }
+
 // Generalized half vector of a refraction (Walter et al. 2007), facing the wo side; false when
 // wo and wi cannot be joined by a refracting microfacet.
 bool refraction_half_vector(const MetallicRoughnessLobes& l, vec3 wi, vec3& h) {
@@ -122,6 +129,10 @@ float refraction_denominator(const MetallicRoughnessLobes& l, vec3 wi, vec3 h) {
   return denominator * denominator;
 }
 
+// The glass lobe samples a visible microfacet, then reflects with that microfacet's Fresnel
+// reflectance F and refracts otherwise (as pbrt-v4's rough dielectric does): where the interface
+// reflects most, beyond the critical angle inside, its sample reflects instead of dying, and
+// neither choice's weight grows with 1 / F. These are its pdfs of each side.
 template <bool WithF, bool WithPdf>
 void add_rough_transmission(const MetallicRoughnessLobes& l, vec3 wi, color3& f, float& pdf) {
   vec3 h;
@@ -129,13 +140,19 @@ void add_rough_transmission(const MetallicRoughnessLobes& l, vec3 wi, color3& f,
   float denominator = refraction_denominator(l, wi, h);
   if (denominator < 1e-12f) return;
   float density = microfacet_density(l, h);
+  float cos_h = dot(l.wo, h), transmitted = 1 - fresnel_dielectric(cos_h, l.eta);
   if constexpr (WithF) {
-    float cos_h = dot(l.wo, h);
-    float transmittance = l.glass * (1 - fresnel_dielectric(cos_h, l.eta));
     float g = density * microfacet_masking_shadowing(l, wi) * std::abs(dot(wi, h)) * cos_h / (l.wo.z * denominator);
-    f += l.base * (transmittance * g);
+    f += l.base * (l.glass * transmitted * g);
   }
-  if constexpr (WithPdf) pdf += l.p_transmission * (visible_normal_pdf(l, h, density) * std::abs(dot(wi, h)) / denominator);
+  if constexpr (WithPdf)
+    pdf += l.p_transmission * transmitted * (visible_normal_pdf(l, h, density) * std::abs(dot(wi, h)) / denominator);
+}
+float glass_reflection_pdf(const MetallicRoughnessLobes& l, vec3 wi) {
+  vec3 h = normalize(l.wo + wi);
+  float cos_h = dot(l.wo, h);
+  if (cos_h <= 0) return 0;
+  return fresnel_dielectric(cos_h, l.eta) * visible_normal_pdf(l, h, microfacet_density(l, h)) / (4 * cos_h);
 }
 
 // f(wo, wi) * |cos| of the non-delta lobes, and the pdf that sample_local picks wi through them,
@@ -149,7 +166,8 @@ color3 evaluate(const MetallicRoughnessLobes& l, vec3 wi, float& pdf) {
     if (WithF && l.p_diffuse > 0) f += eval_diffuse(l, wi);
     if (WithPdf) pdf += l.p_diffuse * wi.z * inv_pi;
     if (!l.smooth && l.p_specular > 0) add_rough_reflection<WithF, WithPdf>(l, wi, f, pdf);
-  } else if (!l.smooth && l.p_transmission > 0) {
+    if (WithPdf && !transmission_is_delta(l) && l.p_transmission > 0) pdf += l.p_transmission * glass_reflection_pdf(l, wi);
+  } else if (!transmission_is_delta(l) && l.p_transmission > 0) {
     add_rough_transmission<WithF, WithPdf>(l, wi, f, pdf);
   }
   if (!std::isfinite(pdf)) pdf = 0;
@@ -164,14 +182,20 @@ std::optional<BsdfSample> sample_specular(const MetallicRoughnessLobes& l, vec2 
   return mixture_sample(l, wi);
 }
 
-std::optional<BsdfSample> sample_transmission(const MetallicRoughnessLobes& l, vec2 u) {
+// `u_choice` in [0, 1) picks reflection or refraction at the sampled microfacet.
+std::optional<BsdfSample> sample_transmission(const MetallicRoughnessLobes& l, float u_choice, vec2 u) {
   vec3 wi;
-  if (l.smooth) {
+  if (transmission_is_delta(l)) {
     if (!refract(l.wo, {0, 0, 1}, l.eta, wi)) return std::nullopt;  // reflection took it all
     color3 transmittance = l.base * (l.glass * (1 - fresnel_dielectric(l.wo.z, l.eta)));
     return delta_sample(l, wi, transmittance, l.p_transmission);
   }
   vec3 h = sample_visible_normal(l, u);
+  if (u_choice < fresnel_dielectric(dot(l.wo, h), l.eta)) {  // 1 where refract() would fail
+    wi = reflect(l.wo, h);
+    if (wi.z <= 0) return std::nullopt;  // sent below the surface: masked
+    return mixture_sample(l, wi);
+  }
   if (!refract(l.wo, h, l.eta, wi) || wi.z >= 0) return std::nullopt;
   return mixture_sample(l, normalize(wi));
 }
@@ -216,12 +240,14 @@ MetallicRoughnessLobes make_metallic_roughness_lobes(const MetallicRoughnessPara
   float rise_o = coating_rise(l, cos_o);
   l.coating_o = coating_transmittance(l, cos_o, rise_o);
   if (!l.smooth) l.lambda_o = microfacet_lambda(l, l.wo);
-  float specular = selection_weight(l.metal > 0 || l.plastic * l.specular > 0 || l.glass > 0,
+  float specular = selection_weight(l.metal > 0 || l.plastic * l.specular > 0 || (l.glass > 0 && !is_index_matched(l.ior)),
                                     mean(specular_fresnel(l, cos_o, rise_o)), l.smooth);
   float diffuse = selection_weight(l.plastic > 0 && colored,
                                    l.plastic * mean(l.base) * l.coating_o, false);
-  float transmitted = l.glass > 0 && colored ? l.glass * mean(l.base) * (1 - fresnel_dielectric(cos_o, l.eta)) : 0;
-  transmitted = selection_weight(l.glass > 0 && colored, transmitted, l.smooth);
+  // A rough glass lobe reflects too, where its microfacets choose to: its estimate counts both.
+  float glass_f = fresnel_dielectric(cos_o, l.eta), glass_reflects = transmission_is_delta(l) ? 0 : glass_f;
+  float transmitted = l.glass > 0 && colored ? l.glass * (mean(l.base) * (1 - glass_f) + glass_reflects) : 0;
+  transmitted = selection_weight(l.glass > 0 && colored, transmitted, transmission_is_delta(l));
   float total = specular + diffuse + transmitted;
   if (total <= 0) return l;
   l.p_specular = specular / total;
@@ -248,14 +274,18 @@ std::optional<BsdfSample> sample_local(const MetallicRoughnessLobes& l, float u_
   if (!l.valid) return std::nullopt;
   if (u_lobe < l.p_specular) return sample_specular(l, u);
   if (u_lobe < l.p_specular + l.p_diffuse) return mixture_sample(l, cosine ? *cosine : sample_cosine_hemisphere(u));
-  if (l.p_transmission > 0) return sample_transmission(l, u);
+  // The rest of u_lobe chooses the glass's reflection or refraction. It is drawn: rough glass that
+  // is not index-matched always has the specular lobe beside it.
+  if (l.p_transmission > 0)
+    return sample_transmission(l, std::min((u_lobe - l.p_specular - l.p_diffuse) / l.p_transmission, 0x1.fffffep-1f), u);
   return std::nullopt;
 }
 
 bool is_metallic_roughness_pure_delta(const SurfaceMaterial& m) {
   float alpha = roughness_to_alpha(m.roughness), anisotropy = std::clamp(m.anisotropy, 0.0f, 1.0f);
   float widest_alpha = alpha + (1 - alpha) * anisotropy * anisotropy;  // alpha itself when isotropic
-  return widest_alpha < smooth_alpha_threshold && !has_metallic_roughness_diffuse(m);
+  bool clear_glass = m.metallic <= 0 && m.transmission >= 1 && is_index_matched(m.ior);  // straight through only
+  return clear_glass || (widest_alpha < smooth_alpha_threshold && !has_metallic_roughness_diffuse(m));
 }
 
 }  // namespace radiant

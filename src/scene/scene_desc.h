@@ -219,7 +219,7 @@ struct EnvironmentDesc {
 enum class RenderMode { auto_select, whitted, path, naive };
 enum class SamplerKind { grid, random, jittered, sobol };
 // How radiance becomes a displayed value in 8- and 16-bit images (src/image/view_transform.h).
-enum class ViewTransform { standard, linear, filmic, agx };
+enum class ViewTransform { standard, linear, filmic, agx, neutral, aces };
 // The pixel reconstruction filter (src/sampling/pixel_filter.h), and the widest one accepted, in
 // pixels (a radius of 32).
 enum class PixelFilterKind { box, triangle, gaussian, mitchell, blackman_harris };

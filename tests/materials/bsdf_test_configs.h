@@ -122,6 +122,9 @@ inline std::vector<BsdfConfig> non_delta_configs() {
       {"rough transmission 0.3 from outside", metallic_roughness(white, 0, 0.3f, 1, 1.5f)},
       {"rough transmission 0.3 from inside", metallic_roughness(white, 0, 0.3f, 1, 1.5f), true},
       {"half metal half glass roughness 0.5", metallic_roughness(white, 0.5f, 0.5f, 0.5f)},
+      // The glass half has ior 1: it passes light straight through (delta), the metal's lobe stays.
+      {"half metal half ior-1 glass roughness 0.6 from outside", metallic_roughness(white, 0.5f, 0.6f, 1, 1.0f)},
+      {"half metal half ior-1 glass roughness 0.6 from inside", metallic_roughness(white, 0.5f, 0.6f, 1, 1.0f), true},
       {"phong shininess 10", phong({0, 0, 0}, {0.9f, 0.9f, 0.9f}, 10)},
       {"phong shininess 100", phong({0, 0, 0}, {0.9f, 0.9f, 0.9f}, 100)},
       {"phong matte (the Lambert model)", phong({0.7f, 0.5f, 0.3f}, {}, 1)},
@@ -144,6 +147,8 @@ inline std::vector<BsdfConfig> delta_configs() {
       {"phong mirror and glass", phong({0.2f, 0.2f, 0.2f}, {0.1f, 0.1f, 0.1f}, 30, {0.5f, 0.5f, 0.5f},
                                        {0.5f, 0.5f, 0.5f})},
       {"phong glass from inside", phong({}, {}, 1, {0.1f, 0.1f, 0.1f}, {0.9f, 0.9f, 0.9f}), true},
+      {"rough ior-1 glass (straight through) from outside", metallic_roughness(white, 0, 0.6f, 1, 1.0f)},
+      {"rough ior-1 glass (straight through) from inside", metallic_roughness(white, 0, 0.6f, 1, 1.0f), true},
   };
 }
 
