@@ -46,7 +46,8 @@ static ImageDesc convert_image(const GltfContext& context, size_t i) {
 }
 
 // The glTF image a texture shows: EXT_texture_webp's source, else the texture's own `source`,
-// which is the PNG/JPEG fallback of the image extensions radiant lacks (KHR_texture_basisu...).
+// which is the PNG/JPEG fallback of the image extensions radiant lacks (KHR_texture_basisu's
+// KTX2: Debian has no decoder).
 static int chosen_image(const GltfContext& context, const tinygltf::Texture& source, const std::string& where) {
   const auto& images = context.model.images;
   auto webp = source.extensions.find("EXT_texture_webp");
@@ -59,7 +60,8 @@ static int chosen_image(const GltfContext& context, const tinygltf::Texture& sou
   }
   for (const auto& [name, value] : source.extensions)
     if (value.IsObject() && value.Has("source"))
-      context.fail(where, name + " images are not supported and the texture has no PNG or JPEG fallback source");
+      context.fail(where + ".extensions." + name + ".source",
+                   name + " images are not supported and the texture has no PNG or JPEG fallback source");
   context.fail(where, "texture has no image source");
 }
 
