@@ -190,6 +190,13 @@ static void convert_clearcoat(const GltfContext& context, const tinygltf::Value&
                                                     clearcoat_where + ".clearcoatRoughnessFactor");
   material.clearcoat_roughness_texture =
       extension_texture(context, clearcoat, "clearcoatRoughnessTexture", clearcoat_where);
+  material.clearcoat_normal_texture = extension_texture(context, clearcoat, "clearcoatNormalTexture", clearcoat_where);
+  if (material.clearcoat_normal_texture.valid()) {
+    double scale = number(clearcoat.Get("clearcoatNormalTexture"), "scale", 1);
+    if (!(std::abs(scale) <= 1e6))
+      context.fail(clearcoat_where + ".clearcoatNormalTexture.scale", number_text(scale) + " is not a usable scale");
+    material.clearcoat_normal_scale = float(scale);
+  }
 }
 
 // KHR_materials_sheen: the colour and roughness of a Charlie sheen.
@@ -313,11 +320,6 @@ void convert_materials(GltfContext& context) {
   for (size_t i = 0; i < context.model.materials.size(); ++i) {
     const tinygltf::Material& source = context.model.materials[i];
     context.scene.materials.push_back(convert_material(context, source, element("materials", i)));
-    const tinygltf::Value* clearcoat = extension(source.extensions, "KHR_materials_clearcoat");
-    if (clearcoat && clearcoat->Has("clearcoatNormalTexture"))
-      context.warn(element("materials", i) +
-                   ".extensions.KHR_materials_clearcoat.clearcoatNormalTexture: not supported, the coat uses the "
-                   "material's shading normal");
   }
 }
 
