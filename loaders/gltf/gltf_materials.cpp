@@ -5,6 +5,7 @@
 #include <map>
 
 #include "file_access.h"
+#include "gltf/gltf_specular_glossiness.h"
 #include "texture_file.h"
 
 namespace radiant {
@@ -97,12 +98,12 @@ void convert_textures(GltfContext& context) {
 
 // ---------------------------------------------------------------- materials
 
-static double number(const tinygltf::Value& object, const char* key, double fallback) {
+double number(const tinygltf::Value& object, const char* key, double fallback) {
   if (!object.IsObject() || !object.Has(key) || !object.Get(key).IsNumber()) return fallback;
   return object.Get(key).GetNumberAsDouble();
 }
 
-static const tinygltf::Value* extension(const tinygltf::ExtensionMap& extensions, const char* name) {
+const tinygltf::Value* extension(const tinygltf::ExtensionMap& extensions, const char* name) {
   auto it = extensions.find(name);
   return it == extensions.end() ? nullptr : &it->second;
 }
@@ -142,9 +143,8 @@ static TextureRef texture_ref(const GltfContext& context, int index, double texc
   return ref;
 }
 
-// A textureInfo inside a material extension (tinygltf leaves extensions as JSON values).
-static TextureRef extension_texture(const GltfContext& context, const tinygltf::Value& extension_value,
-                                    const char* key, const std::string& extension_where) {
+TextureRef extension_texture(const GltfContext& context, const tinygltf::Value& extension_value, const char* key,
+                             const std::string& extension_where) {
   if (!extension_value.Has(key)) return {};
   const tinygltf::Value& info = extension_value.Get(key);
   std::string info_where = extension_where + "." + key;
@@ -154,9 +154,8 @@ static TextureRef extension_texture(const GltfContext& context, const tinygltf::
   return texture_ref(context, index, number(info, "texCoord", 0), {}, info_where);
 }
 
-// An RGB factor inside a material extension: three non-negative numbers.
-static color3 extension_color(const GltfContext& context, const tinygltf::Value& extension_value, const char* key,
-                              color3 fallback, const std::string& extension_where) {
+color3 extension_color(const GltfContext& context, const tinygltf::Value& extension_value, const char* key,
+                       color3 fallback, const std::string& extension_where) {
   if (!extension_value.Has(key)) return fallback;
   const tinygltf::Value& v = extension_value.Get(key);
   std::string where = extension_where + "." + key;
@@ -256,7 +255,7 @@ static color3 color_of(const std::vector<double>& factor, color3 fallback) {
   return {float(factor[0]), float(factor[1]), float(factor[2])};
 }
 
-static MaterialDesc convert_material(const GltfContext& context, const tinygltf::Material& source,
+static MaterialDesc convert_material(GltfContext& context, const tinygltf::Material& source,
                                      const std::string& where) {
   MaterialDesc material;
   material.name = source.name;
@@ -313,14 +312,25 @@ static MaterialDesc convert_material(const GltfContext& context, const tinygltf:
   if (const tinygltf::Value* ior = extension(source.extensions, "KHR_materials_ior"))
     material.ior = float(number(*ior, "ior", 1.5));
   material.unlit = extension(source.extensions, "KHR_materials_unlit") != nullptr;
+  // Preferred to pbrMetallicRoughness, which such files carry for viewers without the extension.
+  if (const tinygltf::Value* spec_gloss = extension(source.extensions, specular_glossiness_extension))
+    convert_specular_glossiness(context, *spec_gloss, where, material);
   return material;
 }
 
 void convert_materials(GltfContext& context) {
+  size_t spec_gloss = 0;
+  std::string first_spec_gloss;
   for (size_t i = 0; i < context.model.materials.size(); ++i) {
     const tinygltf::Material& source = context.model.materials[i];
     context.scene.materials.push_back(convert_material(context, source, element("materials", i)));
+    if (extension(source.extensions, specular_glossiness_extension) && spec_gloss++ == 0)
+      first_spec_gloss = element("materials", i) + ".extensions." + specular_glossiness_extension;
   }
+  if (spec_gloss > 0)
+    context.warn(first_spec_gloss + ": " + std::to_string(spec_gloss) +
+                 " specular-glossiness material(s) converted to metallic-roughness with KHR_materials_specular "
+                 "(approximate: the Fresnel curve and the diffuse part's weight differ slightly)");
 }
 
 int scene_material(GltfContext& context, int index, const std::string& where) {
