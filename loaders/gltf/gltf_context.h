@@ -10,6 +10,7 @@
 #include <limits>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "load_scene.h"
@@ -25,6 +26,8 @@ struct GltfContext {
   std::map<int, int> mirrored_meshes;        // MeshDesc -> its copy with reversed winding
   int default_material = -1;                 // the glTF default material, made on first use
   int variant = -1;                          // the KHR_materials_variants index in use, or -1
+  // (texture, glossinessFactor) -> the roughness texture made from its alpha (KHR_materials_pbrSpecularGlossiness)
+  std::map<std::pair<int, float>, int> roughness_from_glossiness;
 
   // Throws `file: where: message`.
   [[noreturn]] void fail(const std::string& where, const std::string& message) const {

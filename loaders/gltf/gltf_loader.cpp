@@ -22,13 +22,16 @@ namespace radiant {
 
 namespace {
 
+// KHR_texture_basisu is read through each texture's PNG/JPEG fallback `source`; a texture
+// without one is refused by name (gltf_materials.cpp).
 const std::vector<std::string> supported_extensions = {
     "KHR_lights_punctual",       "KHR_materials_emissive_strength", "KHR_texture_transform",
     "KHR_materials_transmission", "KHR_materials_ior",              "KHR_materials_unlit",
     "KHR_materials_specular",     "KHR_materials_clearcoat",        "KHR_materials_sheen",
     "KHR_materials_volume",       "KHR_materials_variants",         "KHR_materials_iridescence",
     "KHR_materials_anisotropy",   "KHR_mesh_quantization",          "KHR_draco_mesh_compression",
-    "EXT_texture_webp",           "EXT_meshopt_compression",        "KHR_materials_dispersion"};
+    "EXT_texture_webp",           "EXT_meshopt_compression",        "KHR_materials_dispersion",
+    "KHR_materials_pbrSpecularGlossiness", "KHR_texture_basisu"};
 
 bool is_supported(const std::string& name) {
   return std::find(supported_extensions.begin(), supported_extensions.end(), name) != supported_extensions.end();

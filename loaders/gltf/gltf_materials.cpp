@@ -5,6 +5,7 @@
 #include <map>
 
 #include "file_access.h"
+#include "gltf/gltf_specular_glossiness.h"
 #include "texture_file.h"
 
 namespace radiant {
@@ -46,7 +47,8 @@ static ImageDesc convert_image(const GltfContext& context, size_t i) {
 }
 
 // The glTF image a texture shows: EXT_texture_webp's source, else the texture's own `source`,
-// which is the PNG/JPEG fallback of the image extensions radiant lacks (KHR_texture_basisu...).
+// which is the PNG/JPEG fallback of the image extensions radiant lacks (KHR_texture_basisu's
+// KTX2: Debian has no decoder).
 static int chosen_image(const GltfContext& context, const tinygltf::Texture& source, const std::string& where) {
   const auto& images = context.model.images;
   auto webp = source.extensions.find("EXT_texture_webp");
@@ -59,7 +61,8 @@ static int chosen_image(const GltfContext& context, const tinygltf::Texture& sou
   }
   for (const auto& [name, value] : source.extensions)
     if (value.IsObject() && value.Has("source"))
-      context.fail(where, name + " images are not supported and the texture has no PNG or JPEG fallback source");
+      context.fail(where + ".extensions." + name + ".source",
+                   name + " images are not supported and the texture has no PNG or JPEG fallback source");
   context.fail(where, "texture has no image source");
 }
 
@@ -95,12 +98,12 @@ void convert_textures(GltfContext& context) {
 
 // ---------------------------------------------------------------- materials
 
-static double number(const tinygltf::Value& object, const char* key, double fallback) {
+double number(const tinygltf::Value& object, const char* key, double fallback) {
   if (!object.IsObject() || !object.Has(key) || !object.Get(key).IsNumber()) return fallback;
   return object.Get(key).GetNumberAsDouble();
 }
 
-static const tinygltf::Value* extension(const tinygltf::ExtensionMap& extensions, const char* name) {
+const tinygltf::Value* extension(const tinygltf::ExtensionMap& extensions, const char* name) {
   auto it = extensions.find(name);
   return it == extensions.end() ? nullptr : &it->second;
 }
@@ -140,9 +143,8 @@ static TextureRef texture_ref(const GltfContext& context, int index, double texc
   return ref;
 }
 
-// A textureInfo inside a material extension (tinygltf leaves extensions as JSON values).
-static TextureRef extension_texture(const GltfContext& context, const tinygltf::Value& extension_value,
-                                    const char* key, const std::string& extension_where) {
+TextureRef extension_texture(const GltfContext& context, const tinygltf::Value& extension_value, const char* key,
+                             const std::string& extension_where) {
   if (!extension_value.Has(key)) return {};
   const tinygltf::Value& info = extension_value.Get(key);
   std::string info_where = extension_where + "." + key;
@@ -152,9 +154,8 @@ static TextureRef extension_texture(const GltfContext& context, const tinygltf::
   return texture_ref(context, index, number(info, "texCoord", 0), {}, info_where);
 }
 
-// An RGB factor inside a material extension: three non-negative numbers.
-static color3 extension_color(const GltfContext& context, const tinygltf::Value& extension_value, const char* key,
-                              color3 fallback, const std::string& extension_where) {
+color3 extension_color(const GltfContext& context, const tinygltf::Value& extension_value, const char* key,
+                       color3 fallback, const std::string& extension_where) {
   if (!extension_value.Has(key)) return fallback;
   const tinygltf::Value& v = extension_value.Get(key);
   std::string where = extension_where + "." + key;
@@ -188,6 +189,13 @@ static void convert_clearcoat(const GltfContext& context, const tinygltf::Value&
                                                     clearcoat_where + ".clearcoatRoughnessFactor");
   material.clearcoat_roughness_texture =
       extension_texture(context, clearcoat, "clearcoatRoughnessTexture", clearcoat_where);
+  material.clearcoat_normal_texture = extension_texture(context, clearcoat, "clearcoatNormalTexture", clearcoat_where);
+  if (material.clearcoat_normal_texture.valid()) {
+    double scale = number(clearcoat.Get("clearcoatNormalTexture"), "scale", 1);
+    if (!(std::abs(scale) <= 1e6))
+      context.fail(clearcoat_where + ".clearcoatNormalTexture.scale", number_text(scale) + " is not a usable scale");
+    material.clearcoat_normal_scale = float(scale);
+  }
 }
 
 // KHR_materials_sheen: the colour and roughness of a Charlie sheen.
@@ -247,7 +255,7 @@ static color3 color_of(const std::vector<double>& factor, color3 fallback) {
   return {float(factor[0]), float(factor[1]), float(factor[2])};
 }
 
-static MaterialDesc convert_material(const GltfContext& context, const tinygltf::Material& source,
+static MaterialDesc convert_material(GltfContext& context, const tinygltf::Material& source,
                                      const std::string& where) {
   MaterialDesc material;
   material.name = source.name;
@@ -304,19 +312,25 @@ static MaterialDesc convert_material(const GltfContext& context, const tinygltf:
   if (const tinygltf::Value* ior = extension(source.extensions, "KHR_materials_ior"))
     material.ior = float(number(*ior, "ior", 1.5));
   material.unlit = extension(source.extensions, "KHR_materials_unlit") != nullptr;
+  // Preferred to pbrMetallicRoughness, which such files carry for viewers without the extension.
+  if (const tinygltf::Value* spec_gloss = extension(source.extensions, specular_glossiness_extension))
+    convert_specular_glossiness(context, *spec_gloss, where, material);
   return material;
 }
 
 void convert_materials(GltfContext& context) {
+  size_t spec_gloss = 0;
+  std::string first_spec_gloss;
   for (size_t i = 0; i < context.model.materials.size(); ++i) {
     const tinygltf::Material& source = context.model.materials[i];
     context.scene.materials.push_back(convert_material(context, source, element("materials", i)));
-    const tinygltf::Value* clearcoat = extension(source.extensions, "KHR_materials_clearcoat");
-    if (clearcoat && clearcoat->Has("clearcoatNormalTexture"))
-      context.warn(element("materials", i) +
-                   ".extensions.KHR_materials_clearcoat.clearcoatNormalTexture: not supported, the coat uses the "
-                   "material's shading normal");
+    if (extension(source.extensions, specular_glossiness_extension) && spec_gloss++ == 0)
+      first_spec_gloss = element("materials", i) + ".extensions." + specular_glossiness_extension;
   }
+  if (spec_gloss > 0)
+    context.warn(first_spec_gloss + ": " + std::to_string(spec_gloss) +
+                 " specular-glossiness material(s) converted to metallic-roughness with KHR_materials_specular "
+                 "(approximate: the Fresnel curve and the diffuse part's weight differ slightly)");
 }
 
 int scene_material(GltfContext& context, int index, const std::string& where) {

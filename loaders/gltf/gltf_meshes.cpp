@@ -82,8 +82,9 @@ std::vector<uint32_t> vertex_order(const GltfContext& context, const tinygltf::P
 
 void fill_shading_frames(GltfContext& context, MeshDesc& mesh, bool has_normals, const std::string& where) {
   const MaterialDesc& material = context.scene.materials[mesh.material];
-  // Normal maps and anisotropy (KHR_materials_anisotropy) are both written in the tangent frame.
-  bool needs_tangents = material.normal_texture.valid() || material.anisotropy_strength > 0;
+  // Normal maps (the coat's too) and anisotropy (KHR_materials_anisotropy) are written in the tangent frame.
+  bool normal_maps = material.normal_texture.valid() || material.clearcoat_normal_texture.valid();
+  bool needs_tangents = normal_maps || material.anisotropy_strength > 0;
   bool normal_mapped = needs_tangents && !mesh.texcoords0.empty();
   context.charge(shading_frame_bytes(mesh, needs_tangents), where);
   if (!has_normals) {
@@ -94,7 +95,7 @@ void fill_shading_frames(GltfContext& context, MeshDesc& mesh, bool has_normals,
   }
   if (mesh.tangents.empty() && needs_tangents) {
     if (mesh.texcoords0.empty())
-      context.warn(where + (material.normal_texture.valid() ? ": normal map" : ": anisotropic material") +
+      context.warn(where + (normal_maps ? ": normal map" : ": anisotropic material") +
                    " without TEXCOORD_0; tangents cannot be generated");
     else
       generate_tangents(mesh);

@@ -7,7 +7,9 @@
 #include <unordered_map>
 
 #include "file_access.h"
+#include "obj/obj_material_names.h"
 #include "obj/obj_materials.h"
+#include "obj/obj_messages.h"
 #include "obj/obj_memory.h"
 #include "obj/obj_numbers.h"
 #include "obj/obj_paths.h"
@@ -30,11 +32,13 @@ struct MtlReader : tinyobj::MaterialReader {
   std::map<std::string, std::string> written_names;  // tinyobjloader's name -> as written
   std::vector<std::string>& warnings;
   std::string refusal;
+  bool missing_library = false;
   MtlReader(std::filesystem::path base, const std::string& f, const LoadOptions& o,
             std::map<std::string, std::string> names, std::vector<std::string>& w)
       : base_dir(std::move(base)), file(f), options(o), written_names(std::move(names)), warnings(w) {}
   bool operator()(const std::string& asked, std::vector<tinyobj::material_t>* materials,
-                  std::map<std::string, int>* names, std::string* warn, std::string* err) override {
+                  std::map<std::string, int>* names, std::string* /*warn: placed here, where the MTL is known*/,
+                  std::string* err) override {
     auto written = written_names.find(asked);
     std::string name = portable_path(written == written_names.end() ? asked : written->second);
     try {
@@ -43,12 +47,14 @@ struct MtlReader : tinyobj::MaterialReader {
       uint64_t size = 0;
       if (input_file_problem(path, size) == no_such_file) {
         warnings.push_back(label + ": " + no_such_file + "; its materials are replaced by the default material");
+        missing_library = true;
         return false;
       }
       size = check_input_file(path, label, options);
       std::ifstream in(path);
       if (!in) throw LoadError(label + ": cannot open");
-      check_mtl_numbers(in, (std::filesystem::path(file).parent_path() / name).string());
+      std::string mtl_file = (std::filesystem::path(file).parent_path() / name).string();
+      check_mtl_numbers(in, mtl_file);
       in.clear();
       in.seekg(0);
       // tinyobjloader keeps about 2 KB a material: count them before it parses any.
@@ -56,7 +62,12 @@ struct MtlReader : tinyobj::MaterialReader {
       charge_load(options, mtl_parse_bytes(count, size), label + ": " + std::to_string(count) + " materials");
       in.clear();
       in.seekg(0);
-      tinyobj::LoadMtl(names, materials, &in, warn, err);
+      MaterialNameFilter filter(in, "newmtl");
+      std::istream named(&filter);
+      std::string mtl_warnings;
+      tinyobj::LoadMtl(names, materials, &named, &mtl_warnings, err);
+      for (std::string& warning : placed_messages(mtl_warnings, {mtl_file}))
+        warnings.push_back(std::move(warning));
       return true;
     } catch (const LoadError& error) {
       if (refusal.empty()) refusal = error.what();
@@ -102,12 +113,20 @@ ObjData parse_obj(const std::string& path, const LoadOptions& options, std::vect
   std::map<std::string, std::string> libraries = mtllib_names(in);
   rewind();
   ObjData data;
+  bool names_libraries = !libraries.empty();
   MtlReader reader(std::filesystem::absolute(path).parent_path(), path, options, std::move(libraries), warnings);
+  MaterialNameFilter filter(in, "usemtl");
+  std::istream named(&filter);
   std::string warning, error;
-  bool ok = tinyobj::LoadObj(&data.attrib, &data.shapes, &data.materials, &warning, &error, &in, &reader, false, false);
+  bool ok = tinyobj::LoadObj(&data.attrib, &data.shapes, &data.materials, &warning, &error, &named, &reader, false, false);
   if (!reader.refusal.empty()) throw LoadError(reader.refusal);
-  if (!ok || !error.empty()) throw LoadError(path + ": " + (error.empty() ? "invalid OBJ" : one_line(error)));
-  if (!warning.empty()) warnings.push_back(path + ": " + one_line(warning));
+  ObjMessageSource source{path, &filter.named_lines(), names_libraries && !reader.missing_library};
+  if (!ok || !error.empty()) {
+    std::vector<std::string> errors = placed_messages(error, source);
+    throw LoadError(errors.empty() ? path + ": invalid OBJ" : errors[0]);
+  }
+  for (std::string& placed : placed_messages(warning, source)) warnings.push_back(std::move(placed));
+  for (tinyobj::material_t& material : data.materials) material.name = decode_material_name(material.name);
   return data;
 }
 

@@ -364,7 +364,8 @@ struct PathVariant {
     vec3 normal = bsdf_normal(m, f);
     Bsdf bsdf = dispersive ? Bsdf(dispersive_material(m, sample_1d(sample, dimension(depth, dispersion_channel)),
                                                       path.channel, throughput, scratch.dispersed),
-                                  normal, f.wo, anisotropy_tangent(hit, m, normal))
+                                  normal, f.wo, anisotropy_tangent(hit, m, normal),
+                                  enabled<E>(ctx.effects, effect_normal_maps) ? clearcoat_normal(hit, m, normal) : vec3{})
                            : bsdf_at<E>(ctx, hit, m, normal, f.wo);
     // A dispersive first vertex changes each sub-path's throughput and channel: not shared.
     if (SharesFirstVertex && depth == 0 && path.gathers_first_vertex && !dispersive)

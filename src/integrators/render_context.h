@@ -115,12 +115,23 @@ inline vec3 anisotropy_tangent(const SurfaceHit& hit, const SurfaceMaterial& m, 
   return t * m.anisotropy_direction.x + cross(n, t) * (hit.tangent.w * m.anisotropy_direction.y);
 }
 
+// A clearcoat's own shading normal (KHR_materials_clearcoat), on the side of `n`: the vertex
+// normal, bent by the coat's normal map in the base map's tangent frame. Zero (the coat shares
+// `n`) without a coat, or when neither the base nor the coat is normal- or bump-mapped.
+inline vec3 clearcoat_normal(const SurfaceHit& hit, const SurfaceMaterial& m, vec3 n) {
+  if (!(m.clearcoat > 0) || !(m.has_clearcoat_normal_map || m.has_normal_map || m.has_bump_map)) return {};
+  vec3 c = hit.shading_normal;
+  if (m.has_clearcoat_normal_map && (hit.tangent.x != 0 || hit.tangent.y != 0 || hit.tangent.z != 0))
+    c = apply_normal_map(c, hit.tangent, m.clearcoat_normal_sample);
+  return dot(hit.shading_normal, n) < 0 ? -c : c;
+}
+
 // The BSDF at a hit for material `m` (from material_at), seen from wo with shading normal `n`.
 template <uint32_t E>
 Bsdf bsdf_at(const RenderContext& ctx, const SurfaceHit& hit, const SurfaceMaterial& m, vec3 n, vec3 wo) {
   vec3 tangent = anisotropy_tangent(hit, m, n);
-  if (enabled<E>(ctx.effects, effect_textures) || enabled<E>(ctx.effects, effect_normal_maps))
-    return Bsdf(m, n, wo, tangent);
+  if (enabled<E>(ctx.effects, effect_normal_maps)) return Bsdf(m, n, wo, tangent, clearcoat_normal(hit, m, n));
+  if (enabled<E>(ctx.effects, effect_textures)) return Bsdf(m, n, wo, tangent);
   return Bsdf(ctx.flat_bsdf_materials[hit.material], n, wo, tangent);
 }
 

@@ -49,7 +49,7 @@ BuiltBy(Make) -> BuiltBy<Make>;  // clang before 17 deduces no aggregate's argum
 
 // The lobes, returned as the variant itself and built in its storage: emplacing into an
 // existing variant goes through a temporary variant in libstdc++.
-BsdfLobes make_lobes(const BsdfParams& params, vec3 n, vec3 wo, vec3 tangent) {
+BsdfLobes make_lobes(const BsdfParams& params, vec3 n, vec3 wo, vec3 tangent, vec3 coat_normal) {
   if (auto* p = std::get_if<LambertParams>(&params))
     return BsdfLobes(std::in_place_type<LambertLobes>, BuiltBy{[&] { return make_lambert_lobes(*p, n, wo); }});
   if (auto* w = std::get_if<PhongWeights>(&params))
@@ -58,14 +58,14 @@ BsdfLobes make_lobes(const BsdfParams& params, vec3 n, vec3 wo, vec3 tangent) {
     return BsdfLobes(std::in_place_type<MetallicRoughnessLobes>,
                      BuiltBy{[&] { return make_metallic_roughness_lobes(*m, n, wo, tangent); }});
   if (auto* c = std::get_if<LayeredParams>(&params))
-    return BsdfLobes(std::in_place_type<LayeredLobes>, BuiltBy{[&] { return make_layered_lobes(*c, n, wo, tangent); }});
+    return BsdfLobes(std::in_place_type<LayeredLobes>, BuiltBy{[&] { return make_layered_lobes(*c, n, wo, tangent, coat_normal); }});
   return {};
 }
 
 }  // namespace
 
-Bsdf::Bsdf(const BsdfMaterial& material, vec3 n, vec3 wo, vec3 tangent)
-    : lobes_(make_lobes(material.params_, n, wo, tangent)) {}
+Bsdf::Bsdf(const BsdfMaterial& material, vec3 n, vec3 wo, vec3 tangent, vec3 coat_normal)
+    : lobes_(make_lobes(material.params_, n, wo, tangent, coat_normal)) {}
 
 color3 Bsdf::eval_framed(vec3 wi) const {
   if (auto* l = std::get_if<PhongLobes>(&lobes_)) return eval_local(*l, to_local(l->frame, wi));

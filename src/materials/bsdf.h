@@ -37,9 +37,11 @@ class BsdfMaterial {
 
 class Bsdf {
  public:
-  // `tangent` (world space, zero when unknown) orients anisotropic lobes (KHR_materials_anisotropy).
-  Bsdf(const BsdfMaterial& material, vec3 n, vec3 wo, vec3 tangent = {});
-  Bsdf(const SurfaceMaterial& m, vec3 n, vec3 wo, vec3 tangent = {}) : Bsdf(BsdfMaterial(m), n, wo, tangent) {}
+  // `tangent` (world space, zero when unknown) orients anisotropic lobes (KHR_materials_anisotropy);
+  // `coat_normal` (world space, on n's side; zero: n) is a clearcoat's own shading normal.
+  Bsdf(const BsdfMaterial& material, vec3 n, vec3 wo, vec3 tangent = {}, vec3 coat_normal = {});
+  Bsdf(const SurfaceMaterial& m, vec3 n, vec3 wo, vec3 tangent = {}, vec3 coat_normal = {})
+      : Bsdf(BsdfMaterial(m), n, wo, tangent, coat_normal) {}
 
   // f(wo, wi) * |dot(n, wi)| for the non-delta lobes. The Lambertian branch, the commonest and
   // a few instructions, is forced inline: called, its wi came in registers, was stored on the

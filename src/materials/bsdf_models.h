@@ -139,10 +139,17 @@ struct LayeredLobes : LayeredParams {
   bool valid = false;
   ShadingFrame frame;  // the base's frame: z = the normal on wo's side
   vec3 wo;             // local, wo.z > 0
+  // The coat's frame when it has a normal of its own (KHR_materials_clearcoat's normal texture),
+  // and wo in it; otherwise the base's frame and wo.
+  bool own_coat_frame = false;
+  ShadingFrame coat_frame;
+  vec3 coat_wo;
   float sheen_max = 0, sheen_albedo_o = 0;  // max(sheen colour), E(cosθo)
   float p_coat = 0, p_sheen = 0;            // selection; the base gets the rest
 };
-LayeredLobes make_layered_lobes(const LayeredParams& params, vec3 n, vec3 wo, vec3 tangent = {});
+// `coat_normal` (world, on n's side; zero: n) tilts the coat alone.
+LayeredLobes make_layered_lobes(const LayeredParams& params, vec3 n, vec3 wo, vec3 tangent = {},
+                                vec3 coat_normal = {});
 color3 eval_local(const LayeredLobes& l, vec3 wi);
 float pdf_local(const LayeredLobes& l, vec3 wi);
 std::optional<BsdfSample> sample_local(const LayeredLobes& l, float u_lobe, vec2 u, const vec3* cosine = nullptr);

@@ -19,6 +19,15 @@ float opacity_from_alpha(const MaterialDesc& material, float alpha) {
   return 1;
 }
 
+// A normal map's tangent-space normal: texel × 2 − 1, xy scaled, unit ((0, 0, 1) where that fails).
+vec3 tangent_space_normal(const SceneDesc& scene, const TextureRef& ref, float scale,
+                          const SurfaceAttributes& attributes) {
+  vec4 texel = sample_texture(scene, ref, attributes, false);
+  vec3 n = {(2 * texel.x - 1) * scale, (2 * texel.y - 1) * scale, 2 * texel.z - 1};
+  vec3 unit = normalize(n);
+  return is_finite(unit) && length_squared(unit) > 0.5f ? unit : vec3{0, 0, 1};
+}
+
 // Shared slots: emission, normal map, alpha mode, unlit.
 void resolve_shared(const SceneDesc& scene, const MaterialDesc& material, const SurfaceAttributes& attributes,
                     float alpha, SurfaceMaterial& m) {
@@ -26,12 +35,7 @@ void resolve_shared(const SceneDesc& scene, const MaterialDesc& material, const 
   if (material.emission_texture.valid())
     m.emission *= rgb(sample_texture(scene, material.emission_texture, attributes, true));
   if (material.normal_texture.valid()) {
-    vec4 texel = sample_texture(scene, material.normal_texture, attributes, false);
-    vec3 n = {2 * texel.x - 1, 2 * texel.y - 1, 2 * texel.z - 1};
-    n.x *= material.normal_scale;
-    n.y *= material.normal_scale;
-    vec3 unit = normalize(n);
-    m.normal_map_sample = is_finite(unit) && length_squared(unit) > 0.5f ? unit : vec3{0, 0, 1};
+    m.normal_map_sample = tangent_space_normal(scene, material.normal_texture, material.normal_scale, attributes);
     m.has_normal_map = true;
   }
   if (material.bump_texture.valid()) {
@@ -95,6 +99,11 @@ SurfaceMaterial resolve_metallic_roughness(const SceneDesc& scene, const Materia
     m.iridescence_thickness = material.iridescence_thickness_min +
                               (material.iridescence_thickness_max - material.iridescence_thickness_min) * t;
   }
+  if (material.clearcoat_normal_texture.valid()) {
+    m.clearcoat_normal_sample =
+        tangent_space_normal(scene, material.clearcoat_normal_texture, material.clearcoat_normal_scale, attributes);
+    m.has_clearcoat_normal_map = true;
+  }
   resolve_anisotropy(scene, material, attributes, m);
   resolve_shared(scene, material, attributes, alpha, m);
   phong_from_metallic_roughness(m);
@@ -126,7 +135,8 @@ std::vector<TextureSlot> texture_slots(const MaterialDesc& m) {
           {&m.normal_texture, false},            {&m.bump_texture, false},
           {&m.transmission_texture, false},      {&m.specular_strength_texture, false},
           {&m.specular_color_texture, true},     {&m.clearcoat_texture, false},
-          {&m.clearcoat_roughness_texture, false}, {&m.sheen_color_texture, true},
+          {&m.clearcoat_roughness_texture, false}, {&m.clearcoat_normal_texture, false},
+          {&m.sheen_color_texture, true},
           {&m.sheen_roughness_texture, false},   {&m.anisotropy_texture, false},
           {&m.iridescence_texture, false},       {&m.iridescence_thickness_texture, false},
           {&m.specular_texture, false},          {&m.alpha_texture, false},

@@ -59,6 +59,8 @@ struct SurfaceMaterial {
   bool unlit = false;
   vec3 normal_map_sample = {0, 0, 1};  // tangent-space normal (scaled), when the material has one
   bool has_normal_map = false;
+  vec3 clearcoat_normal_sample = {0, 0, 1};  // the coat's (KHR_materials_clearcoat), in the same frame
+  bool has_clearcoat_normal_map = false;
   // Height map: the displacement's change per unit of u and of v (world units), when it has one.
   vec2 height_slope = {0, 0};
   bool has_bump_map = false;

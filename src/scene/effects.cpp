@@ -67,7 +67,7 @@ EffectSet analyze_effects(const SceneDesc& scene) {
     reflective += is_reflective(m);
     emissive += !is_black(m.emission);
     textured += has_texture(m);
-    normal_mapped += m.normal_texture.valid() || m.bump_texture.valid();
+    normal_mapped += m.normal_texture.valid() || m.bump_texture.valid() || m.clearcoat_normal_texture.valid();
     alpha += m.alpha_mode != AlphaMode::opaque;
     absorbing += !is_black(volume_absorption(m));
   }

@@ -113,6 +113,10 @@ struct MaterialDesc {
   float clearcoat = 0, clearcoat_roughness = 0;
   TextureRef clearcoat_texture;            // linear, R channel
   TextureRef clearcoat_roughness_texture;  // linear, G channel
+  // The coat's own normal map, in the base normal map's tangent frame; without it the coat
+  // keeps the vertex normal even where the base is normal-mapped (the extension's rule).
+  TextureRef clearcoat_normal_texture;
+  float clearcoat_normal_scale = 1;
   // KHR_materials_sheen: a Charlie sheen (cloth, velvet) between the coat and the base.
   color3 sheen_color = {0, 0, 0};
   float sheen_roughness = 0;

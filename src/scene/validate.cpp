@@ -72,7 +72,8 @@ struct Checker {
     for (float f : {m.shininess, m.ior, m.alpha, m.metallic, m.roughness, m.transmission, m.normal_scale,
                     m.alpha_cutoff, m.specular, m.clearcoat, m.clearcoat_roughness,
                     m.sheen_roughness, m.thickness, m.attenuation_distance, m.iridescence, m.iridescence_thickness_min,
-                    m.iridescence_thickness_max, m.anisotropy_strength, m.anisotropy_rotation, m.bump_scale})
+                    m.iridescence_thickness_max, m.anisotropy_strength, m.anisotropy_rotation, m.bump_scale,
+                    m.clearcoat_normal_scale})
       finite(f, where);
     // Beyond these, refraction's eta^2 overflows float and directions stop being numbers.
     constexpr float min_ior = 1e-3f, max_ior = 1e3f;
@@ -92,6 +93,7 @@ struct Checker {
     texture_ref(m.specular_color_texture, where + ".specular_color_texture");
     texture_ref(m.clearcoat_texture, where + ".clearcoat_texture");
     texture_ref(m.clearcoat_roughness_texture, where + ".clearcoat_roughness_texture");
+    texture_ref(m.clearcoat_normal_texture, where + ".clearcoat_normal_texture");
     texture_ref(m.sheen_color_texture, where + ".sheen_color_texture");
     texture_ref(m.sheen_roughness_texture, where + ".sheen_roughness_texture");
     texture_ref(m.iridescence_texture, where + ".iridescence_texture");

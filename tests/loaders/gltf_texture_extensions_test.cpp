@@ -69,25 +69,33 @@ TEST_CASE("gltf textures: EXT_texture_webp is read through OpenImageIO, its PNG 
         "file beside it is");
 }
 
-TEST_CASE("gltf textures: KHR_texture_basisu uses the PNG fallback source, and without one says so") {
+TEST_CASE("gltf textures: KHR_texture_basisu uses the PNG fallback source quietly, and without one says where") {
   ScratchDir dir("gltf-basisu");
   write_texel_bytes(dir.file("red.png"), 1, 1, 3, {255, 0, 0});
   dir.write("red.ktx2", ktx2_bytes);
-  std::string path =
-      dir.write("fallback.gltf", textured_triangle("{\"uri\":\"red.png\"},{\"uri\":\"red.ktx2\"}",
-                                                   "{\"source\":0,\"extensions\":{\"KHR_texture_basisu\":{\"source\":1}}}",
-                                                   "\"extensionsUsed\":[\"KHR_texture_basisu\"],"))
-          .string();
+  const std::string images = "{\"uri\":\"red.png\"},{\"uri\":\"red.ktx2\"}";
+  const std::string with_fallback = "{\"source\":0,\"extensions\":{\"KHR_texture_basisu\":{\"source\":1}}}";
+  std::string path = dir.write("fallback.gltf", textured_triangle(images, with_fallback,
+                                                                  "\"extensionsUsed\":[\"KHR_texture_basisu\"],"))
+                         .string();
   SceneDesc scene = load_scene(path);
   REQUIRE(scene.images.size() == 1);
   CHECK(scene.images[0].texels8 == std::vector<uint8_t>{255, 0, 0});
-  CHECK(has_warning_containing(scene, "extension KHR_texture_basisu is not supported and is ignored"));
+  CHECK(scene.warnings.empty());
+  // Listed as required (the specification asks for that only without fallbacks), the fallback still serves.
+  SceneDesc required = load_scene(
+      dir.write("required.gltf",
+                textured_triangle(images, with_fallback,
+                                  "\"extensionsUsed\":[\"KHR_texture_basisu\"],\"extensionsRequired\":[\"KHR_texture_basisu\"],"))
+          .string());
+  CHECK(required.images.at(0).texels8 == std::vector<uint8_t>{255, 0, 0});
+  CHECK(required.warnings.empty());
   dir.write("none.gltf", textured_triangle("{\"uri\":\"red.ktx2\"}",
                                            "{\"extensions\":{\"KHR_texture_basisu\":{\"source\":0}}}",
-                                           "\"extensionsUsed\":[\"KHR_texture_basisu\"],"));
+                                           "\"extensionsUsed\":[\"KHR_texture_basisu\"],\"extensionsRequired\":[\"KHR_texture_basisu\"],"));
   CHECK(load_error(dir, dir.file("none.gltf")) ==
-        "none.gltf: textures[0]: KHR_texture_basisu images are not supported and the texture has no PNG or JPEG "
-        "fallback source");
+        "none.gltf: textures[0].extensions.KHR_texture_basisu.source: KHR_texture_basisu images are not supported "
+        "and the texture has no PNG or JPEG fallback source");
   dir.write("direct.gltf", textured_triangle("{\"uri\":\"red.ktx2\"}", "{\"source\":0}", ""));
   CHECK(load_error(dir, dir.file("direct.gltf")) ==
         "direct.gltf: images[0]: KTX2 images (KHR_texture_basisu) are not supported");

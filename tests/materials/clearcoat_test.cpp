@@ -60,6 +60,57 @@ TEST_CASE("clearcoat: white furnace, coat plus base never exceed 1 and lose only
       }
 }
 
+TEST_CASE("clearcoat: a coat normal of its own turns the coat's mirror and the Fresnel the base sees") {
+  vec3 coat_normal = normalize(vec3{0.3f, 0, 1});
+  vec3 wo = up;
+  SurfaceMaterial mirror_coat = coated(specular_dielectric({0, 0, 0}, 0, 0, {1, 1, 1}), 1, 0);
+  auto s = Bsdf(mirror_coat, up, wo, {}, coat_normal).sample(0.3f, {0.5f, 0.5f});
+  REQUIRE(s.has_value());
+  CHECK(s->delta);
+  vec3 mirrored = coat_normal * (2 * dot(coat_normal, wo)) - wo;  // about the coat's normal, not the base's
+  CHECK(s->wi.x == doctest::Approx(mirrored.x));
+  CHECK(s->wi.z == doctest::Approx(mirrored.z));
+  CHECK(s->weight.x * s->pdf == doctest::Approx(fresnel_dielectric(dot(coat_normal, wo), 1.5f)));
+  // A smooth coat over Lambert: the base keeps its own normal for the cosine, the coat's
+  // Fresnel is taken against the coat's normal on the way in and out.
+  color3 base = {0.6f, 0.4f, 0.2f};
+  SurfaceMaterial coat = coated(gltf_lambert(base), 1, 0);
+  vec3 wi = spherical_direction(0.5f, 2.5f);
+  color3 f = Bsdf(coat, up, wo, {}, coat_normal).eval(wi);
+  float through = (1 - fresnel_dielectric(dot(coat_normal, wo), 1.5f)) * (1 - fresnel_dielectric(dot(coat_normal, wi), 1.5f));
+  CHECK(f.x == doctest::Approx(0.6f / pi * wi.z * through));
+  // The same normal as the base's is no tilt at all.
+  CHECK(Bsdf(coat, up, wo, {}, up).eval(wi) == Bsdf(coat, up, wo).eval(wi));
+}
+
+TEST_CASE("clearcoat: a tilted rough coat still samples consistently and conserves energy") {
+  vec3 coat_normal = normalize(vec3{-0.4f, 0.2f, 1});
+  SurfaceMaterial m = coated(gltf_lambert({1, 1, 1}), 1, 0.3f);
+  UniformRandom random(5);
+  color3 sum;
+  int samples = 20000;
+  for (float cos_wo : {0.9f, 0.4f}) {
+    vec3 wo = spherical_direction(cos_wo, 0.3f);
+    Bsdf bsdf(m, up, wo, {}, coat_normal);
+    sum = {};
+    for (int k = 0; k < samples; ++k) {
+      float u_lobe = random.next();
+      auto s = bsdf.sample(u_lobe, random.next2());
+      if (!s) continue;
+      sum += s->weight;
+      if (k % 100 != 0) continue;
+      float pdf = bsdf.pdf(s->wi);
+      CHECK(pdf == doctest::Approx(s->pdf).epsilon(1e-3));
+      color3 weight = bsdf.eval(s->wi) / pdf;
+      CHECK(weight.x == doctest::Approx(s->weight.x).epsilon(1e-3));
+    }
+    color3 albedo = sum / float(samples);
+    INFO("cos(wo) ", cos_wo, ": ", albedo.x);
+    CHECK(albedo.x <= 1.005f);
+    CHECK(albedo.x >= 0.6f);
+  }
+}
+
 TEST_CASE("whitted mapping: the coat's F0 joins the highlight and the mirror, taken from the layers below") {
   SurfaceMaterial m = coated(gltf_lambert({0.5f, 0.5f, 0.5f}), 1, 0);
   CHECK(m.kd.x == doctest::Approx(0.5f * 0.96f));
