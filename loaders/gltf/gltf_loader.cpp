@@ -28,7 +28,8 @@ const std::vector<std::string> supported_extensions = {
     "KHR_materials_specular",     "KHR_materials_clearcoat",        "KHR_materials_sheen",
     "KHR_materials_volume",       "KHR_materials_variants",         "KHR_materials_iridescence",
     "KHR_materials_anisotropy",   "KHR_mesh_quantization",          "KHR_draco_mesh_compression",
-    "EXT_texture_webp",           "EXT_meshopt_compression",        "KHR_materials_dispersion"};
+    "EXT_texture_webp",           "EXT_meshopt_compression",        "KHR_materials_dispersion",
+    "EXT_mesh_gpu_instancing"};
 
 bool is_supported(const std::string& name) {
   return std::find(supported_extensions.begin(), supported_extensions.end(), name) != supported_extensions.end();
