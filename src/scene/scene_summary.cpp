@@ -1,5 +1,6 @@
 #include "scene/scene_summary.h"
 
+#include <algorithm>
 #include <limits>
 
 #include "scene/scene_bounds.h"
@@ -73,7 +74,10 @@ SceneSummary summarize_scene(const SceneDesc& scene) {
     s.warnings.push_back(std::to_string(scene.degenerate_triangles_dropped) + " degenerate triangle(s) dropped");
   if (!has_light_sources(scene))
     s.warnings.push_back("no lights, emissive materials or environment: the image will be black unless --env-color or --env is given");
-  if (!scene.instances.empty() || !scene.shapes.empty()) {
+  bool point_lights = std::any_of(scene.lights.begin(), scene.lights.end(), [](const LightDesc& l) {
+    return l.kind == LightKind::point || l.kind == LightKind::spot;
+  });
+  if (point_lights && (!scene.instances.empty() || !scene.shapes.empty())) {  // an accelerator only to test them
     auto accel = build_scene_accel(scene);
     for (size_t i = 0; i < scene.lights.size(); ++i) {
       const LightDesc& l = scene.lights[i];
