@@ -45,7 +45,8 @@ color3 trace(const RenderContext& ctx, const Ray& ray, int depth, int see_throug
     case RayKind::reflection: counts.reflection++; break;
     case RayKind::refraction: counts.refraction++; break;
   }
-  HitId id = known_hit ? *known_hit : intersect_nearest(*ctx.accel, ray);
+  HitId id = known_hit ? *known_hit
+                       : intersect_nearest(*ctx.accel, ray, kind == RayKind::camera ? camera_culling(ctx) : FaceCulling::none);
   if (!id.valid()) {
     // A camera ray (also one through a partly opaque surface) sees no background when transparent.
     if (kind == RayKind::camera && ctx.transparent_background) return {0, 0, 0};
