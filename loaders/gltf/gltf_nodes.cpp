@@ -5,8 +5,10 @@
 #include <set>
 
 #include "gltf/gltf_accessors.h"
+#include "gltf/gltf_instancing.h"
 #include "gltf/gltf_lights_cameras.h"
 #include "gltf/gltf_meshes.h"
+#include "scene/scene_memory.h"
 
 namespace radiant {
 
@@ -30,8 +32,7 @@ mat4 local_transform(const GltfContext& context, const tinygltf::Node& node, con
   if (!is_finite(t)) context.fail(where + ".translation", "non-finite value");
   if (!is_finite(s)) context.fail(where + ".scale", "non-finite value");
   if (!std::isfinite(q_length) || q_length == 0) context.fail(where + ".rotation", "not a rotation quaternion");
-  q = {q.x / q_length, q.y / q_length, q.z / q_length, q.w / q_length};
-  return translation(t) * rotation_quaternion(q) * scaling(s);
+  return compose_trs(t, q, s);
 }
 
 namespace {
@@ -55,6 +56,32 @@ void add_instances(GltfContext& context, const std::vector<int>& parts, const ma
   }
 }
 
+// EXT_mesh_gpu_instancing: the node's mesh once per instance, at world × the instance's T·R·S.
+// The instances are charged before the scene's array grows for them.
+void add_gpu_instances(GltfContext& context, const std::vector<int>& parts, const mat4& world,
+                       const tinygltf::Node& node, const tinygltf::Value& extension, const std::string& where) {
+  GpuInstances instances = read_gpu_instances(context, extension, where);
+  InstanceDesc sample;
+  sample.name = node.name;
+  uint64_t placed = saturating_multiply(instances.count, parts.size());
+  context.charge(saturating_multiply(placed, instance_bytes(sample)), where);
+  std::vector<InstanceDesc>& scene_instances = context.scene.instances;
+  scene_instances.reserve(scene_instances.size() + placed);
+  size_t hidden = 0;
+  for (size_t i = 0; i < instances.count; ++i) {
+    mat4 transform = world * gpu_instance_transform(instances, i), inverse;
+    // A zero scale hides an instance, as it hides a node.
+    if (!is_finite(transform) || !inverse_affine(transform, inverse) || !inverse_survives_float(transform)) {
+      ++hidden;
+      continue;
+    }
+    add_instances(context, parts, transform, node.name);
+  }
+  if (hidden)
+    context.warn(where + ": " + std::to_string(hidden) + " of " + std::to_string(instances.count) +
+                 " instances have a singular transform (a zero scale): they are not rendered");
+}
+
 // What one node contributes, once its world transform is known.
 void place_node(GltfContext& context, PlacedNodes& placed, int index, const mat4& world, const std::string& where) {
   const tinygltf::Node& node = context.model.nodes[size_t(index)];
@@ -70,12 +97,18 @@ void place_node(GltfContext& context, PlacedNodes& placed, int index, const mat4
     } else if (!inverse_survives_float(world)) {
       // A scale animated towards zero passes through such transforms; the mesh is a speck then.
       context.warn(where + ": transform too close to singular to invert in single precision: the mesh is not rendered");
-    } else if (!node.weights.empty() && node.weights != context.model.meshes[size_t(node.mesh)].weights) {
-      MeshPose pose;
-      pose.weights = node.weights;
-      add_instances(context, convert_mesh(context, size_t(node.mesh), pose, " (" + where + " weights)"), world, node.name);
     } else {
-      add_instances(context, context.mesh_parts[node.mesh], world, node.name);
+      std::vector<int> parts = context.mesh_parts[node.mesh];
+      if (!node.weights.empty() && node.weights != context.model.meshes[size_t(node.mesh)].weights) {
+        MeshPose pose;
+        pose.weights = node.weights;
+        parts = convert_mesh(context, size_t(node.mesh), pose, " (" + where + " weights)");
+      }
+      auto instancing = node.extensions.find("EXT_mesh_gpu_instancing");
+      if (instancing != node.extensions.end())
+        add_gpu_instances(context, parts, world, node, instancing->second, where + ".extensions.EXT_mesh_gpu_instancing");
+      else
+        add_instances(context, parts, world, node.name);
     }
   }
   if (node.camera >= 0) add_camera(context, node.camera, world, node.name, where + ".camera");

@@ -17,6 +17,12 @@ struct Ray {
   float tmax = std::numeric_limits<float>::infinity();
 };
 
+// Whether a ray along `direction` meets a surface on its front, the side its geometric normal
+// `normal` (times `orientation`, -1 where a mirroring transform turned it) points to.
+inline bool arrives_on_front(vec3 direction, vec3 normal, float orientation = 1) {
+  return orientation * dot(direction, normal) < 0;
+}
+
 // Bound on the relative rounding error of n floating-point operations (pbrt's gamma(n)).
 constexpr float rounding_gamma(int n) {
   constexpr float epsilon = std::numeric_limits<float>::epsilon() * 0.5f;

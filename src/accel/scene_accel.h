@@ -40,12 +40,15 @@ struct SceneAccel {
   std::vector<float> instance_orientation;  // sign of the transform's determinant
   std::vector<char> instance_identity;      // the transform is the identity (hits skip it)
   unsigned shape_geometry = RTC_INVALID_GEOMETRY_ID;
-  // Alpha-mask filter data, one per mesh (a material in MASK mode only).
-  struct AlphaMask {
-    const SceneDesc* scene;
+  // What the hit filters (accel/embree_callbacks.h) know of a mesh: its geometries' user data.
+  struct MeshFilter {
+    const SceneAccel* accel;
     int mesh;
+    bool single_sided;  // its material is single-sided: camera rays pass its back faces
   };
-  std::vector<AlphaMask> alpha_masks;
+  std::vector<MeshFilter> mesh_filters;  // one per mesh
+  // Some mesh is single-sided: its scenes take Embree's context filter, which camera rays set.
+  bool has_single_sided = false;
   // Every traced ray keeps its origin within this (and its direction within twice this), so that
   // in every instance's object space it stays inside Embree's range (scene/coordinate_range.h).
   // Hits on infinite shapes beyond it are not taken.
@@ -80,8 +83,13 @@ std::unique_ptr<SceneAccel> build_scene_accel(const SceneDesc& scene, AccelLayou
 // two-level (the single-level one rebuilds its whole BVH). Throws as a build.
 void update_scene_accel(SceneAccel& accel, const SceneChanges& changes);
 
+// Which faces a ray meets. Camera rays pass through the back faces of single-sided materials, as
+// glTF's doubleSided false asks (the back face is not seen); shadow rays and bounces meet every
+// face, so that a closed single-sided mesh still casts shadows and holds light in.
+enum class FaceCulling : uint8_t { none, single_sided_back };
+
 // Nearest hit along the ray (from t = 0 to ray.tmax); none for an untraceable ray.
-HitId intersect_nearest(const SceneAccel& accel, const Ray& ray);
+HitId intersect_nearest(const SceneAccel& accel, const Ray& ray, FaceCulling culling = FaceCulling::none);
 // Whether intersect_nearest_many and occluded_many trace streams here (otherwise they trace ray
 // by ray: a scene of a few shapes traced without Embree). Analytic shapes and alpha masks,
 // which Embree calls back for, take its packets.
@@ -93,7 +101,10 @@ enum class RayCoherence { coherent, incoherent };
 // time. Each hit is the one intersect_nearest gives for its ray. The rays are read where they
 // lie (copying a freshly written ray stalls on store forwarding).
 void intersect_nearest_many(const SceneAccel& accel, const Ray* const* rays, int count, HitId* hits,
-                            RayCoherence coherence);
+                            RayCoherence coherence, FaceCulling culling = FaceCulling::none);
+// The same with each ray's own culling: culling[i] for *rays[i].
+void intersect_nearest_many(const SceneAccel& accel, const Ray* const* rays, int count, HitId* hits,
+                            RayCoherence coherence, const FaceCulling* culling);
 // is_occluded for `count` rays traced as one stream: occluded[i] for *rays[i].
 void occluded_many(const SceneAccel& accel, const Ray* const* rays, int count, bool* occluded, RayCoherence coherence);
 // True when anything blocks the ray before ray.tmax, or when the ray is untraceable.

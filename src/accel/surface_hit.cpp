@@ -114,7 +114,7 @@ SurfaceHit make_surface_hit(const SceneAccel& accel, const Ray& ray, const HitId
   SurfaceHit hit;
   if (id.instance >= 0) fill_triangle_hit(accel, id, hit);
   else fill_shape_hit(accel, ray, id, hit);
-  hit.front_face = dot(ray.direction, hit.geometric_normal) < 0;
+  hit.front_face = arrives_on_front(ray.direction, hit.geometric_normal);
   return hit;
 }
 

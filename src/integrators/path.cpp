@@ -243,6 +243,12 @@ struct PathState {
   int channel;  // the colour channel the path carries after a dispersive surface, or -1
 };
 
+// How the path's next ray meets faces: a camera ray that went on past see-through surfaces is
+// still the camera's, and passes single-sided back faces as it did.
+inline FaceCulling culling_of(const RenderContext& ctx, const PathState& path) {
+  return path.ray_kind == &RayCounts::camera ? camera_culling(ctx) : FaceCulling::none;
+}
+
 // A camera sample's first vertex as its first sub-path shaded it, for the other sub-paths
 // (--indirect-paths): they see the same hit of the same ray with the same numbers, so decoding
 // it and building its BSDF again would give the same values. Valid for `owner`'s sub-paths: the
@@ -503,7 +509,7 @@ struct PathVariant {
   static color3 run(const RenderContext& ctx, const Ray& camera_ray, const SampleContext& sample, RayCounts& counts,
                     FirstHit* first_hit, const HitId* camera_hit) {
     ++counts.camera;
-    HitId first = camera_hit ? *camera_hit : intersect_nearest(*ctx.accel, camera_ray);
+    HitId first = camera_hit ? *camera_hit : intersect_nearest(*ctx.accel, camera_ray, camera_culling(ctx));
     VertexScratch scratch;
     LightSampleResult light;
     color3 sum;
@@ -519,7 +525,7 @@ struct PathVariant {
                                : light_past(ctx, light, intersect_nearest(*ctx.accel, light.shadow_ray), counts);
         if (!goes_on) break;
         ++(counts.*path.ray_kind);
-        id = intersect_nearest(*ctx.accel, path.ray);
+        id = intersect_nearest(*ctx.accel, path.ray, culling_of(ctx, path));
       }
       sum = sub_path == 0 ? path.radiance : sum + path.radiance;
     }
@@ -555,6 +561,7 @@ struct PathVariant {
     SurfaceLanes surface[3]{};  // zeroed: a lane's unused fields are read, never chosen
     int lane_of[max_batch_paths];
     std::optional<BsdfMaterial> resolved_bsdf;  // a textured candidate's (resolve_lane_vertex)
+    FaceCulling ray_culling[max_batch_paths];   // each next ray's (culling_of)
   };
 
   // Whether this variant can shade vertices in the surface lanes. Textured variants resolve each
@@ -965,7 +972,7 @@ struct PathVariant {
     static tbb::enumerable_thread_specific<BatchWorkspace> per_thread;
     BatchWorkspace& workspace = per_thread.local();
     auto& [paths, lights, rays, hits, occluded, live, shadowed, scratch, first_vertex, lanes, cosine_x, cosine_y, cosine_z, drawn,
-           lobe_choices, first_lobe_choices, light_choices, surface, lane_of, resolved_bsdf] = workspace;
+           lobe_choices, first_lobe_choices, light_choices, surface, lane_of, resolved_bsdf, ray_culling] = workspace;
     // Without sharing there is one sub-path per camera sample (run_batch): a constant, the
     // loop below is one start per sample. Read from ctx, GCC vectorised it for any split, with
     // run-time alias checks that cost more per camera sample than the start itself.
@@ -1027,8 +1034,9 @@ struct PathVariant {
         PathState& path = paths[live[k]];
         ++(counts.*path.ray_kind);
         rays[k] = &path.ray;
+        ray_culling[k] = culling_of(ctx, path);
       }
-      intersect_nearest_many(*ctx.accel, rays, next_count, hits, RayCoherence::incoherent);
+      intersect_nearest_many(*ctx.accel, rays, next_count, hits, RayCoherence::incoherent, ray_culling);
       live_count = next_count;
     }
     for (int c = 0; c < count; ++c) {

@@ -81,6 +81,12 @@ struct RenderContext {
   color3 background_color;  // for CameraBackground::color
 };
 
+// How camera rays meet faces: past the back faces of single-sided materials when the scene calls
+// for it (accel/scene_accel.h, FaceCulling).
+inline FaceCulling camera_culling(const RenderContext& ctx) {
+  return (ctx.effects & effect_single_sided) ? FaceCulling::single_sided_back : FaceCulling::none;
+}
+
 // Radiance along a camera ray for one sample; `first_hit` (optional) receives AOV values.
 // `camera_hit` (optional) is the ray's nearest hit, already traced with its neighbours'
 // (intersect_nearest_many); without it the integrator traces the ray itself.

@@ -45,7 +45,8 @@ color3 trace(const RenderContext& ctx, const Ray& ray, int depth, int see_throug
     case RayKind::reflection: counts.reflection++; break;
     case RayKind::refraction: counts.refraction++; break;
   }
-  HitId id = known_hit ? *known_hit : intersect_nearest(*ctx.accel, ray);
+  HitId id = known_hit ? *known_hit
+                       : intersect_nearest(*ctx.accel, ray, kind == RayKind::camera ? camera_culling(ctx) : FaceCulling::none);
   if (!id.valid()) {
     if (kind == RayKind::camera) return camera_background<E>(ctx, ray.direction);
     return background_radiance<E>(ctx, ray.direction);

@@ -124,4 +124,9 @@ bool is_identity(const mat4& a) {
   return true;
 }
 
+mat4 compose_trs(vec3 t, vec4 q, vec3 s) {
+  float length = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
+  return translation(t) * rotation_quaternion({q.x / length, q.y / length, q.z / length, q.w / length}) * scaling(s);
+}
+
 }  // namespace radiant

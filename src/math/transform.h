@@ -16,6 +16,9 @@ mat4 translation(vec3 t);
 mat4 scaling(vec3 s);
 // Rotation by unit quaternion (x, y, z, w), the glTF convention.
 mat4 rotation_quaternion(vec4 q);
+// T * R * S, glTF's composition of a translation, a rotation by quaternion q (normalized here;
+// it must have a non-zero length) and a scale.
+mat4 compose_trs(vec3 t, vec4 q, vec3 s);
 // Rotation by `degrees` around unit `axis`.
 mat4 rotation_axis(vec3 axis, float degrees);
 // Inverse of an affine matrix; returns false when singular.

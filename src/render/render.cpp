@@ -254,7 +254,7 @@ struct PassRunner {
               }
             }
           }
-          intersect_nearest_many(*ctx.accel, rays, paths, hits, RayCoherence::coherent);
+          intersect_nearest_many(*ctx.accel, rays, paths, hits, RayCoherence::coherent, camera_culling(ctx));
           for (int k = 0; k < paths; ++k) batch[k].camera_hit = hits[k];
           if (batching == PathBatching::all_rays)
             integrator.batch(ctx, batch, paths, c);

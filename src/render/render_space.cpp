@@ -11,8 +11,11 @@ WorldPlacement record_world_placement(const SceneDesc& world) {
   WorldPlacement placement;
   placement.cameras = world.cameras;
   placement.has_framing_box = framing_box(world, placement.framing_lower, placement.framing_upper);
-  placement.instance_transforms.reserve(world.instances.size());
-  for (const InstanceDesc& instance : world.instances) placement.instance_transforms.push_back(instance.transform);
+  placement.instance_translations.reserve(world.instances.size());
+  for (const InstanceDesc& instance : world.instances) {
+    const mat4& m = instance.transform;
+    placement.instance_translations.push_back({m.m[0][3], m.m[1][3], m.m[2][3]});
+  }
   placement.shape_centers.reserve(world.shapes.size());
   for (const ShapeDesc& shape : world.shapes) placement.shape_centers.push_back(shape.center);
   placement.light_positions.reserve(world.lights.size());
@@ -41,9 +44,7 @@ void place_at_render_origin(SceneDesc& scene, const WorldPlacement& world, dvec3
     scene.cameras[i].position = to_render_space(world.cameras[i].position, origin);
   for (size_t i = 0; i < scene.instances.size(); ++i) {
     mat4& transform = scene.instances[i].transform;
-    transform = world.instance_transforms[i];
-    vec3 translation = {transform.m[0][3], transform.m[1][3], transform.m[2][3]};
-    vec3 moved = to_render_space(translation, origin);
+    vec3 moved = to_render_space(world.instance_translations[i], origin);
     transform.m[0][3] = moved.x, transform.m[1][3] = moved.y, transform.m[2][3] = moved.z;
   }
   for (size_t i = 0; i < scene.shapes.size(); ++i) scene.shapes[i].center = to_render_space(world.shape_centers[i], origin);

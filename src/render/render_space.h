@@ -21,7 +21,7 @@ struct WorldPlacement {
   std::vector<CameraDesc> cameras;
   bool has_framing_box = false;  // what a framing camera frames (render/camera.h framing_box)
   vec3 framing_lower, framing_upper;
-  std::vector<mat4> instance_transforms;
+  std::vector<vec3> instance_translations;  // placing moves only an instance's translation column
   std::vector<vec3> shape_centers;
   std::vector<vec3> light_positions;
   bool has_bounds = false;  // finite geometry exists; then `lower`/`upper` bound it

@@ -15,7 +15,7 @@ const std::vector<EffectInfo>& effect_catalog() {
       {effect_emission, "emission"},         {effect_environment, "environment"},
       {effect_textures, "textures"},         {effect_normal_maps, "normal-maps"},
       {effect_alpha, "alpha"},               {effect_indirect, "indirect"},
-      {effect_absorption, "absorption"},
+      {effect_absorption, "absorption"},     {effect_single_sided, "single-sided"},
   };
   return catalog;
 }
@@ -37,15 +37,16 @@ bool has_texture(const MaterialDesc& m) {
          m.iridescence_texture.valid() || m.iridescence_thickness_texture.valid() || m.anisotropy_texture.valid();
 }
 
-// Materials actually used by some geometry.
-std::vector<bool> used_materials(const SceneDesc& scene) {
+// Materials actually used by some placed mesh, and by the shapes when `with_shapes`.
+std::vector<bool> used_materials(const SceneDesc& scene, bool with_shapes) {
   std::vector<bool> used(scene.materials.size(), false);
   auto mark = [&](int m) {
     if (m >= 0 && m < int(used.size())) used[m] = true;
   };
   for (const InstanceDesc& i : scene.instances)
     if (i.mesh >= 0 && i.mesh < int(scene.meshes.size())) mark(scene.meshes[i.mesh].material);
-  for (const ShapeDesc& s : scene.shapes) mark(s.material);
+  if (with_shapes)
+    for (const ShapeDesc& s : scene.shapes) mark(s.material);
   return used;
 }
 
@@ -58,7 +59,7 @@ EffectSet analyze_effects(const SceneDesc& scene) {
     if (l.kind == LightKind::ambient) ++ambient_lights;
     else if (!is_black(l.intensity)) ++delta_lights;
   }
-  std::vector<bool> used = used_materials(scene);
+  std::vector<bool> used = used_materials(scene, true), used_by_meshes = used_materials(scene, false);
   int transmissive = 0, reflective = 0, emissive = 0, textured = 0, normal_mapped = 0, alpha = 0, absorbing = 0;
   for (size_t i = 0; i < scene.materials.size(); ++i) {
     if (!used[i]) continue;
@@ -71,6 +72,8 @@ EffectSet analyze_effects(const SceneDesc& scene) {
     alpha += m.alpha_mode != AlphaMode::opaque;
     absorbing += !is_black(volume_absorption(m));
   }
+  int single_sided = 0;  // only triangles have a back face: shapes are seen from every side
+  for (size_t i = 0; i < scene.materials.size(); ++i) single_sided += used_by_meshes[i] && !scene.materials[i].double_sided;
   for (const InstanceDesc& i : scene.instances)
     if (!scene.meshes[i.mesh].colors.empty()) {
       ++textured;  // vertex colors are read per hit like a texture
@@ -100,6 +103,8 @@ EffectSet analyze_effects(const SceneDesc& scene) {
   if (delta_lights || emissive || environment)
     add(effect_indirect, "light bounces between surfaces (path tracer)");
   if (absorbing) add(effect_absorption, count(absorbing, "material(s) with an absorbing volume (KHR_materials_volume)"));
+  if (single_sided)
+    add(effect_single_sided, count(single_sided, "single-sided material(s): camera rays pass through their back faces"));
   return set;
 }
 

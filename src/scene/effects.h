@@ -25,8 +25,9 @@ enum Effect : uint32_t {
   effect_alpha = 1u << 10,               // alpha cut-outs and blending
   effect_indirect = 1u << 11,            // indirect (global) illumination (path tracer)
   effect_absorption = 1u << 12,          // Beer-Lambert absorption inside transmissive volumes (path tracer)
+  effect_single_sided = 1u << 13,        // camera rays pass through single-sided materials' back faces
 };
-constexpr uint32_t effect_all = (1u << 13) - 1;
+constexpr uint32_t effect_all = (1u << 14) - 1;
 
 struct EffectInfo {
   Effect effect;

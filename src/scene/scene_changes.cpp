@@ -22,6 +22,10 @@ bool alpha_masked(const SceneDesc& scene, const MeshDesc& mesh) {
   return mesh.material >= 0 && scene.materials[mesh.material].alpha_mode == AlphaMode::mask;
 }
 
+bool single_sided(const SceneDesc& scene, const MeshDesc& mesh) {
+  return mesh.material >= 0 && !scene.materials[mesh.material].double_sided;
+}
+
 bool same_shape(const ShapeDesc& a, const ShapeDesc& b) {
   return a.kind == b.kind && a.material == b.material && same_bits(a.center, b.center) && same_bits(a.axis, b.axis) &&
          same_bits(a.radius, b.radius) && same_bits(a.height, b.height);
@@ -44,7 +48,7 @@ std::optional<SceneChanges> scene_changes(const SceneDesc& before, const SceneDe
   for (size_t m = 0; m < after.meshes.size(); ++m) {
     const MeshDesc &a = before.meshes[m], &b = after.meshes[m];
     if (a.positions.size() != b.positions.size() || !same_bits(a.indices, b.indices) ||
-        alpha_masked(before, a) != alpha_masked(after, b))
+        alpha_masked(before, a) != alpha_masked(after, b) || single_sided(before, a) != single_sided(after, b))
       return std::nullopt;
     changes.deformed_meshes[m] = !same_bits(a.positions, b.positions);
   }

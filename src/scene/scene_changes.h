@@ -20,7 +20,8 @@ struct SceneChanges {
 
 // The changes from `before` to `after`, or none when the two differ in what an accelerator is
 // built around: the number of meshes, instances or shapes, a mesh's triangles or vertex count, an
-// instance's mesh, or which meshes have alpha-masked materials. Values compare bit for bit.
+// instance's mesh, or which meshes have alpha-masked or single-sided materials. Values compare
+// bit for bit.
 std::optional<SceneChanges> scene_changes(const SceneDesc& before, const SceneDesc& after);
 
 }  // namespace radiant

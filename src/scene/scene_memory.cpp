@@ -29,13 +29,15 @@ uint64_t mesh_bytes(const MeshDesc& mesh) {
          array_bytes(mesh.colors) + array_bytes(mesh.indices);
 }
 
+uint64_t instance_bytes(const InstanceDesc& instance) { return sizeof(InstanceDesc) + string_bytes(instance.name); }
+
 uint64_t scene_memory_bytes(const SceneDesc& scene) {
   uint64_t bytes = sizeof(SceneDesc);
   for (const MeshDesc& mesh : scene.meshes) bytes += mesh_bytes(mesh);
   for (const ImageDesc& image : scene.images)
     bytes += sizeof(ImageDesc) + string_bytes(image.name) + array_bytes(image.texels8) + array_bytes(image.texels_float);
   for (const MaterialDesc& material : scene.materials) bytes += sizeof(MaterialDesc) + string_bytes(material.name);
-  for (const InstanceDesc& instance : scene.instances) bytes += sizeof(InstanceDesc) + string_bytes(instance.name);
+  for (const InstanceDesc& instance : scene.instances) bytes += instance_bytes(instance);
   for (const ShapeDesc& shape : scene.shapes) bytes += sizeof(ShapeDesc) + string_bytes(shape.name);
   for (const CameraDesc& camera : scene.cameras) bytes += sizeof(CameraDesc) + string_bytes(camera.name);
   for (const LightDesc& light : scene.lights) bytes += sizeof(LightDesc) + string_bytes(light.name);

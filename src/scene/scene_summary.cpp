@@ -1,5 +1,6 @@
 #include "scene/scene_summary.h"
 
+#include <algorithm>
 #include <limits>
 
 #include "scene/scene_bounds.h"
@@ -75,7 +76,10 @@ SceneSummary summarize_scene(const SceneDesc& scene) {
     s.warnings.push_back(std::string(s.emissive_materials ? "no lights or environment, and no emissive material bright enough to light it"
                                                           : "no lights, emissive materials or environment") +
                          ": rendered under the built-in studio environment unless --env is given");
-  if (!scene.instances.empty() || !scene.shapes.empty()) {
+  bool point_lights = std::any_of(scene.lights.begin(), scene.lights.end(), [](const LightDesc& l) {
+    return l.kind == LightKind::point || l.kind == LightKind::spot;
+  });
+  if (point_lights && (!scene.instances.empty() || !scene.shapes.empty())) {  // an accelerator only to test them
     auto accel = build_scene_accel(scene);
     for (size_t i = 0; i < scene.lights.size(); ++i) {
       const LightDesc& l = scene.lights[i];

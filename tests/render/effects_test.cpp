@@ -99,7 +99,7 @@ TEST_CASE("effects: a normal map alone (no other texture) perturbs shading, -nor
   // Regression: with normal maps but no color textures the material was resolved once per
   // render, so every pixel used the normal-map texel at uv (0, 0).
   SceneDesc scene = load_scene(source_path("assets/models/normal-mapped-quad.gltf").string());
-  CHECK(effect_names(analyze_effects(scene).mask) == "direct,shadows,reflection,normal-maps,indirect");
+  CHECK(effect_names(analyze_effects(scene).mask) == "direct,shadows,reflection,normal-maps,indirect,single-sided");
   RenderOptions o;
   o.width = 48, o.height = 48, o.spp = 1, o.mode = RenderMode::whitted;
   Film bumpy = render_scene(scene, o).film;
@@ -115,7 +115,9 @@ TEST_CASE("effects: a normal map alone (no other texture) perturbs shading, -nor
 }
 
 TEST_CASE("effects: glTF and OBJ assets call for the effects their content needs") {
-  CHECK(effect_names(asset_effects("assets/cornell.gltf")) == "shadows,emission,indirect");
-  CHECK(effect_names(asset_effects("assets/models/checker-cube.gltf")) == "direct,shadows,reflection,textures,indirect");
+  // glTF materials are single-sided unless they say doubleSided; OBJ ones are double-sided.
+  CHECK(effect_names(asset_effects("assets/cornell.gltf")) == "shadows,emission,indirect,single-sided");
+  CHECK(effect_names(asset_effects("assets/models/checker-cube.gltf")) ==
+        "direct,shadows,reflection,textures,indirect,single-sided");
   CHECK(effect_names(asset_effects("assets/models/textured-cube.obj")) == "textures");
 }
