@@ -274,7 +274,7 @@ TEST_CASE("render cli: one side from the flags keeps the shape of the scene's im
   }
 }
 
-TEST_CASE("render cli: a mode that leaves out light the scene has says so; auto and a mode that keeps it do not") {
+TEST_CASE("render cli: a mode that leaves out light the scene has says so, auto and a mode that keeps it do not") {
   ScratchDir dir("cli-dropped-light");
   auto notes = [&](const std::string& scene, const std::string& flags) {
     CommandResult r = run_radiant("render " + quoted(source_path(scene)) + " -o " + quoted(dir.file("o.png")) +
