@@ -164,7 +164,7 @@ struct LambertValue {
           l.plastic[i],
           l.specular[i],
           {l.specular_f0_r[i], l.specular_f0_g[i], l.specular_f0_b[i]},
-          {l.albedo_tables, l.albedo_roughness[i], l.albedo_ior[i],
+          {l.albedo_roughness[i], l.albedo_ior[i],
            {l.multiple_r[i], l.multiple_g[i], l.multiple_b[i]}, l.multiple_normalization[i],
            l.coating_reflect[i], l.coating_rise[i], l.coating_multiple[i], l.diffuse_normalization[i]}};
 }

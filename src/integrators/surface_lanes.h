@@ -99,8 +99,7 @@ struct SurfaceLanes {
   // the bounce's random numbers (the GGX lobe warps them itself).
   alignas(32) float alpha[stride], ior[stride], ior_f0[stride], metal[stride], plastic[stride];
   alignas(32) float specular[stride], specular_f0_r[stride], specular_f0_g[stride], specular_f0_b[stride];
-  // Its energy compensation (MicrofacetEnergy; the tables are every lane's).
-  const MicrofacetAlbedoTables* albedo_tables = nullptr;
+  // Its energy compensation (MicrofacetEnergy).
   alignas(32) float albedo_roughness[stride], albedo_ior[stride];
   alignas(32) float multiple_r[stride], multiple_g[stride], multiple_b[stride], multiple_normalization[stride];
   alignas(32) float coating_reflect[stride], coating_rise[stride], coating_multiple[stride];
@@ -166,7 +165,6 @@ inline void set_lane_glossy_material(SurfaceLanes& l, int i, const MetallicRough
   l.metal[i] = p.metal, l.plastic[i] = p.plastic, l.specular[i] = p.specular;
   l.specular_f0_r[i] = p.specular_f0.x, l.specular_f0_g[i] = p.specular_f0.y, l.specular_f0_b[i] = p.specular_f0.z;
   const MicrofacetEnergy& e = p.energy;
-  l.albedo_tables = e.tables;
   l.albedo_roughness[i] = e.roughness, l.albedo_ior[i] = e.ior;
   l.multiple_r[i] = e.multiple_scattering.x, l.multiple_g[i] = e.multiple_scattering.y;
   l.multiple_b[i] = e.multiple_scattering.z, l.multiple_normalization[i] = e.multiple_normalization;

@@ -80,28 +80,32 @@ MicrofacetAlbedoTables integrate_tables() {
 
 }  // namespace
 
+MicrofacetAlbedoTables microfacet_albedo_storage;
+
 const MicrofacetAlbedoTables& microfacet_albedo_tables() {
-  static const MicrofacetAlbedoTables tables = integrate_tables();
-  return tables;
+  static const bool integrated = (microfacet_albedo_storage = integrate_tables(), true);
+  (void)integrated;
+  return microfacet_albedo_storage;
 }
 
 float albedo_roughness_coordinate(float alpha) { return std::sqrt(std::clamp(alpha, 0.0f, 1.0f)); }
 
 float albedo_ior_coordinate(float ior) { return std::clamp(std::abs(ior - 1) / (ior + 1), 0.0f, albedo_ior_max); }
 
-float ggx_rise_albedo_average(const MicrofacetAlbedoTables& tables, float roughness, float ior_coordinate) {
+float ggx_rise_albedo_average(float roughness, float ior_coordinate) {
   using namespace albedo_detail;
   float fy, fz;
   int y = cell(roughness, albedo_roughnesses, 1, fy), z = cell(ior_coordinate, albedo_iors, albedo_ior_max, fz);
-  const auto& r = tables.rise_average;
+  const auto& r = microfacet_albedo_storage.rise_average;
   return lerp1(lerp1(r[z][y], r[z][y + 1], fy), lerp1(r[z + 1][y], r[z + 1][y + 1], fy), fz);
 }
 
-float fresnel_rise_average(const MicrofacetAlbedoTables& tables, float ior_coordinate) {
+float fresnel_rise_average(float ior_coordinate) {
   using namespace albedo_detail;
   float fz;
   int z = cell(ior_coordinate, albedo_iors, albedo_ior_max, fz);
-  return lerp1(tables.fresnel_rise_average[z], tables.fresnel_rise_average[z + 1], fz);
+  const auto& f = microfacet_albedo_storage.fresnel_rise_average;
+  return lerp1(f[z], f[z + 1], fz);
 }
 
 }  // namespace radiant

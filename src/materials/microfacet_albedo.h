@@ -27,9 +27,12 @@ struct MicrofacetAlbedoTables {
   float fresnel_rise_average[albedo_iors];
 };
 
-// Integrated on first use by a fixed midpoint rule over visible normals (~20 ms). Materials keep
-// a pointer to it, so that lookups (and lane loops) need no guard.
+// Integrated on first use by a fixed midpoint rule over visible normals (~20 ms); every material
+// asks for it when it is made, so lookups need no guard.
 const MicrofacetAlbedoTables& microfacet_albedo_tables();
+// Its storage, which the lookups read: at a constant address lane loops vectorise the lookups
+// as gathers, through a pointer they did not.
+extern MicrofacetAlbedoTables microfacet_albedo_storage;
 
 // The table coordinate of a GGX alpha (sqrt, clamped), and of a coating's ior.
 float albedo_roughness_coordinate(float alpha);
@@ -48,32 +51,32 @@ namespace albedo_detail {
 }  // namespace albedo_detail
 
 // E(cosθ, r), bilinear.
-[[gnu::always_inline]] inline float ggx_albedo(const MicrofacetAlbedoTables& tables, float cos, float roughness) {
+[[gnu::always_inline]] inline float ggx_albedo(float cos, float roughness) {
   using namespace albedo_detail;
   float fx, fy;
   int x = cell(cos, albedo_cosines, 1, fx), y = cell(roughness, albedo_roughnesses, 1, fy);
-  const auto& e = tables.ggx;
+  const auto& e = microfacet_albedo_storage.ggx;
   return lerp1(lerp1(e[y][x], e[y][x + 1], fx), lerp1(e[y + 1][x], e[y + 1][x + 1], fx), fy);
 }
-[[gnu::always_inline]] inline float ggx_albedo_average(const MicrofacetAlbedoTables& tables, float roughness) {
+[[gnu::always_inline]] inline float ggx_albedo_average(float roughness) {
   using namespace albedo_detail;
   float fy;
   int y = cell(roughness, albedo_roughnesses, 1, fy);
-  const auto& e = tables.ggx_average;
+  const auto& e = microfacet_albedo_storage.ggx_average;
   return lerp1(e[y], e[y + 1], fy);
 }
 // The albedo weighted by the coating's rescaled Fresnel curve, trilinear.
-[[gnu::always_inline]] inline float ggx_rise_albedo(const MicrofacetAlbedoTables& tables, float cos, float roughness, float ior_coordinate) {
+[[gnu::always_inline]] inline float ggx_rise_albedo(float cos, float roughness, float ior_coordinate) {
   using namespace albedo_detail;
   float fx, fy, fz;
   int x = cell(cos, albedo_cosines, 1, fx), y = cell(roughness, albedo_roughnesses, 1, fy);
   int z = cell(ior_coordinate, albedo_iors, albedo_ior_max, fz);
-  const auto& r = tables.rise;
+  const auto& r = microfacet_albedo_storage.rise;
   float near = lerp1(lerp1(r[z][y][x], r[z][y][x + 1], fx), lerp1(r[z][y + 1][x], r[z][y + 1][x + 1], fx), fy);
   float far = lerp1(lerp1(r[z + 1][y][x], r[z + 1][y][x + 1], fx), lerp1(r[z + 1][y + 1][x], r[z + 1][y + 1][x + 1], fx), fy);
   return lerp1(near, far, fz);
 }
-float ggx_rise_albedo_average(const MicrofacetAlbedoTables& tables, float roughness, float ior_coordinate);
-float fresnel_rise_average(const MicrofacetAlbedoTables& tables, float ior_coordinate);
+float ggx_rise_albedo_average(float roughness, float ior_coordinate);
+float fresnel_rise_average(float ior_coordinate);
 
 }  // namespace radiant

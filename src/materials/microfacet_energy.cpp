@@ -23,13 +23,13 @@ constexpr float min_escape = 1e-6f;
 MicrofacetEnergy make_microfacet_energy(float alpha, bool smooth, float ior, float metal, color3 metal_f0, float plastic,
                                         float specular, color3 specular_f0) {
   MicrofacetEnergy e;
-  e.tables = &microfacet_albedo_tables();
+  microfacet_albedo_tables();  // integrated once, before any lookup
   e.roughness = smooth ? 0 : albedo_roughness_coordinate(alpha);
   e.ior = albedo_ior_coordinate(ior);
-  float e_avg = ggx_albedo_average(*e.tables, e.roughness);
+  float e_avg = ggx_albedo_average(e.roughness);
   // Schlick's curve averages to F0 + (1 − F0)/21 over the cosine-weighted hemisphere.
   color3 metal_avg = metal_f0 + (color3{1, 1, 1} - metal_f0) * (1.0f / 21);
-  float rise_avg = fresnel_rise_average(*e.tables, e.ior);
+  float rise_avg = fresnel_rise_average(e.ior);
   color3 coating_avg = (specular_f0 + (color3{1, 1, 1} - specular_f0) * rise_avg) * specular;
   if (!smooth && 1 - e_avg > min_escape) {
     e.multiple_scattering = multiple_scattering_fresnel(metal_avg, e_avg) * metal +
@@ -40,7 +40,7 @@ MicrofacetEnergy make_microfacet_energy(float alpha, bool smooth, float ior, flo
   e.coating_reflect = specular * f0_max;
   e.coating_rise = specular * (1 - f0_max);
   e.coating_multiple = smooth ? 0 : max_component(multiple_scattering_fresnel(coating_avg, e_avg));
-  float coating_avg_albedo = e.coating_reflect * e_avg + e.coating_rise * ggx_rise_albedo_average(*e.tables, e.roughness, e.ior) +
+  float coating_avg_albedo = e.coating_reflect * e_avg + e.coating_rise * ggx_rise_albedo_average(e.roughness, e.ior) +
                              e.coating_multiple * (1 - e_avg);
   e.diffuse_normalization = 1 - coating_avg_albedo > min_escape ? 1 / (1 - coating_avg_albedo) : 0;
   return e;

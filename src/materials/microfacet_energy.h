@@ -12,7 +12,6 @@ namespace radiant {
 
 // The per-material part: table coordinates and the products' weights.
 struct MicrofacetEnergy {
-  const MicrofacetAlbedoTables* tables = nullptr;
   float roughness = 0;  // table coordinate of the lobes' (effective) alpha
   float ior = 0.2f;     // table coordinate of the coating's ior
   // The multiple-scattering lobe, f·cosθi = colour · (1 − E(μo))(1 − E(μi)) · normalization · μi:
@@ -33,12 +32,12 @@ MicrofacetEnergy make_microfacet_energy(float alpha, bool smooth, float ior, flo
 
 // 1 − E(μ): what single scattering loses along a direction of cosine `cos`.
 [[gnu::always_inline]] inline float ggx_energy_loss(const MicrofacetEnergy& e, float cos) {
-  return 1 - ggx_albedo(*e.tables, cos, e.roughness);
+  return 1 - ggx_albedo(cos, e.roughness);
 }
 
 // 1 − E_s(μ): what the coating lets through along `cos`, given `loss` = ggx_energy_loss there.
 [[gnu::always_inline]] inline float coating_passage(const MicrofacetEnergy& e, float cos, float loss) {
-  float rise = ggx_rise_albedo(*e.tables, cos, e.roughness, e.ior);
+  float rise = ggx_rise_albedo(cos, e.roughness, e.ior);
   return 1 - (e.coating_reflect * (1 - loss) + e.coating_rise * rise + e.coating_multiple * loss);
 }
 
