@@ -30,8 +30,7 @@ struct MicrofacetAlbedoTables {
 // Integrated on first use by a fixed midpoint rule over visible normals (~20 ms); every material
 // asks for it when it is made, so lookups need no guard.
 const MicrofacetAlbedoTables& microfacet_albedo_tables();
-// Its storage, which the lookups read: at a constant address lane loops vectorise the lookups
-// as gathers, through a pointer they did not.
+// Its storage, which the lookups read at a constant address: no pointer per material and lane.
 extern MicrofacetAlbedoTables microfacet_albedo_storage;
 
 // The table coordinate of a GGX alpha (sqrt, clamped), and of a coating's ior.
