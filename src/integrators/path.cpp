@@ -668,7 +668,7 @@ struct PathVariant {
         color3 albedo = material.lambert()->albedo;
         l.albedo_r[i] = albedo.x, l.albedo_g[i] = albedo.y, l.albedo_b[i] = albedo.z;
       } else if (model == LaneModel::glossy) {
-        set_glossy_material(l, i, *material.metallic_roughness());
+        set_lane_glossy_material(l, i, *material.metallic_roughness());
         l.u_lobe[i] = glossy_lobe_choice(*material.metallic_roughness(), path, drawn);
         l.u_x[i] = drawn.direction.x, l.u_y[i] = drawn.direction.y;
       } else {
@@ -777,19 +777,12 @@ struct PathVariant {
     }
     l.orientation[i] = accel.instance_orientation[instance];
   }
-  static void set_glossy_material(SurfaceLanes& l, int i, const MetallicRoughnessParams& p) {
-    l.albedo_r[i] = p.base.x, l.albedo_g[i] = p.base.y, l.albedo_b[i] = p.base.z;
-    l.alpha[i] = p.alpha, l.ior[i] = p.ior, l.ior_f0[i] = p.ior_f0;
-    l.metal[i] = p.metal, l.plastic[i] = p.plastic, l.specular[i] = p.specular;
-    l.specular_f0_r[i] = p.specular_f0.x, l.specular_f0_g[i] = p.specular_f0.y, l.specular_f0_b[i] = p.specular_f0.z;
-    l.specular_f0_max[i] = p.specular_f0_max;
-  }
   // The lobe choice a glossy vertex draws (scatter): only where its BSDF mixes lobes, which a
   // lane material's does wherever its lobes are valid if it has both a specular and a diffuse
   // lobe (elsewhere the vertex does not scatter, and the choice is not read).
   static float glossy_lobe_choice(const MetallicRoughnessParams& p, const PathState& path, VertexDraws& drawn) {
-    bool specular = p.metal > 0 || p.plastic * p.specular > 0, diffuse = p.plastic > 0 && max_component(p.base) > 0;
-    if (!(specular && diffuse)) return 0.5f;
+    bool specular = p.metal > 0 || p.plastic * p.specular > 0;
+    if (!(specular && has_cosine_lobes(p))) return 0.5f;
     drawn.lobe_choice_used = true;
     return drawn.has(lobe_choice) ? drawn.lobe_choice : sample_1d(path.own, dimension(path.depth, lobe_choice));
   }

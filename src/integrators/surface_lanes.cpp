@@ -164,7 +164,9 @@ struct LambertValue {
           l.plastic[i],
           l.specular[i],
           {l.specular_f0_r[i], l.specular_f0_g[i], l.specular_f0_b[i]},
-          l.specular_f0_max[i]};
+          {l.albedo_roughness[i], l.albedo_ior[i],
+           {l.multiple_r[i], l.multiple_g[i], l.multiple_b[i]}, l.multiple_normalization[i],
+           l.coating_reflect[i], l.coating_rise[i], l.coating_multiple[i], l.diffuse_normalization[i]}};
 }
 [[gnu::always_inline]] inline GlossyLaneLobes stored_glossy_lobes(const SurfaceLanes& l, int i) {
   return {{l.lobe_nx[i], l.lobe_ny[i], l.lobe_nz[i]},
@@ -172,6 +174,7 @@ struct LambertValue {
           l.p_specular[i],
           l.p_diffuse[i],
           l.coating_o[i],
+          l.loss_o[i],
           l.lambda_o[i],
           l.valid[i] != 0};
 }
@@ -480,7 +483,7 @@ template <int Hits>
   store_hit(l, i, hit, lobes.normal, lobes.valid);
   l.wo_x[i] = lobes.wo.x, l.wo_y[i] = lobes.wo.y, l.wo_z[i] = lobes.wo.z;
   l.p_specular[i] = lobes.p_specular, l.p_diffuse[i] = lobes.p_diffuse;
-  l.coating_o[i] = lobes.coating_o, l.lambda_o[i] = lobes.lambda_o;
+  l.coating_o[i] = lobes.coating_o, l.loss_o[i] = lobes.loss_o, l.lambda_o[i] = lobes.lambda_o;
   LaneLight light = point_light_lane(l, i, hit.point, GlossyValue<false>{m, lobes});
   l.fallback[i] |= !light.in_range;
   store_light_outputs(l, i, light_outputs(l, i, light, hit.point, {hit.error, hit.error, hit.error}, hit.geometric_normal));

@@ -13,6 +13,7 @@
 #include <cstdint>
 
 #include "integrators/render_context.h"
+#include "materials/bsdf_models.h"
 #include "math/lane_isa.h"
 
 namespace radiant {
@@ -98,7 +99,11 @@ struct SurfaceLanes {
   // the bounce's random numbers (the GGX lobe warps them itself).
   alignas(32) float alpha[stride], ior[stride], ior_f0[stride], metal[stride], plastic[stride];
   alignas(32) float specular[stride], specular_f0_r[stride], specular_f0_g[stride], specular_f0_b[stride];
-  alignas(32) float specular_f0_max[stride];
+  // Its energy compensation (MicrofacetEnergy).
+  alignas(32) float albedo_roughness[stride], albedo_ior[stride];
+  alignas(32) float multiple_r[stride], multiple_g[stride], multiple_b[stride], multiple_normalization[stride];
+  alignas(32) float coating_reflect[stride], coating_rise[stride], coating_multiple[stride];
+  alignas(32) float diffuse_normalization[stride];
   alignas(32) float u_lobe[stride], u_x[stride], u_y[stride];
   // A Phong lane's material (PhongWeights: kd in albedo_*, kr in mirror_*, its lobe
   // probabilities in p_diffuse, p_specular (glossy) and p_mirror) and, between the kernel's
@@ -130,14 +135,15 @@ struct SurfaceLanes {
   alignas(32) int32_t shadow_infinite[stride];
   alignas(32) float light_r[stride], light_g[stride], light_b[stride];
   // Between the kernel's loops: each hit's geometric normal, error bound, lobe normal and
-  // whether the lobes are valid; a glossy lane's local wo, lobe probabilities, the coating's
-  // transmittance and GGX Lambda along wo, and its GGX lobe's direction (local) where chosen;
+  // whether the lobes are valid; a glossy lane's local wo, lobe probabilities, what the coating
+  // lets through, what single scattering loses and GGX Lambda along wo, and its GGX lobe's direction (local) where chosen;
   // a Phong lane's local wo and its bounce's local direction.
   alignas(32) float gnx[stride], gny[stride], gnz[stride], error[stride];
   alignas(32) float lobe_nx[stride], lobe_ny[stride], lobe_nz[stride];
   alignas(32) int32_t valid[stride];
   alignas(32) float wo_x[stride], wo_y[stride], wo_z[stride];
-  alignas(32) float p_specular[stride], p_diffuse[stride], coating_o[stride], lambda_o[stride];
+  alignas(32) float p_specular[stride], p_diffuse[stride], coating_o[stride], loss_o[stride];
+  alignas(32) float lambda_o[stride];
   alignas(32) float specular_x[stride], specular_y[stride], specular_z[stride];
   int count = 0;
   RenderContext::LaneModel model = RenderContext::LaneModel::lambert;  // the lanes' model (not none)
@@ -151,6 +157,20 @@ struct SurfaceLanes {
 
 // Shades lanes [0, count).
 void shade_surface_lanes(SurfaceLanes& lanes, LaneIsa isa = LaneIsa::best);
+
+// Lane i's glossy material: the metallic-roughness parameters a glossy lane reads.
+inline void set_lane_glossy_material(SurfaceLanes& l, int i, const MetallicRoughnessParams& p) {
+  l.albedo_r[i] = p.base.x, l.albedo_g[i] = p.base.y, l.albedo_b[i] = p.base.z;
+  l.alpha[i] = p.alpha, l.ior[i] = p.ior, l.ior_f0[i] = p.ior_f0;
+  l.metal[i] = p.metal, l.plastic[i] = p.plastic, l.specular[i] = p.specular;
+  l.specular_f0_r[i] = p.specular_f0.x, l.specular_f0_g[i] = p.specular_f0.y, l.specular_f0_b[i] = p.specular_f0.z;
+  const MicrofacetEnergy& e = p.energy;
+  l.albedo_roughness[i] = e.roughness, l.albedo_ior[i] = e.ior;
+  l.multiple_r[i] = e.multiple_scattering.x, l.multiple_g[i] = e.multiple_scattering.y;
+  l.multiple_b[i] = e.multiple_scattering.z, l.multiple_normalization[i] = e.multiple_normalization;
+  l.coating_reflect[i] = e.coating_reflect, l.coating_rise[i] = e.coating_rise, l.coating_multiple[i] = e.coating_multiple;
+  l.diffuse_normalization[i] = e.diffuse_normalization;
+}
 
 // Lane i's fields for a shaped delta light (set_lane_delta_light), and sets any_shaped (and
 // any_classic_spot for a classic spot).

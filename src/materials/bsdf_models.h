@@ -6,6 +6,7 @@
 
 #include <optional>
 
+#include "materials/microfacet_energy.h"
 #include "materials/shading_frame.h"
 #include "materials/surface.h"
 #include "materials/thin_film.h"
@@ -96,6 +97,9 @@ struct MetallicRoughnessParams {
   float iridescence = 0;
   ThinFilm film;
   float film_outside_ior = 1;
+  // Multiple scattering of the metal and the coating, and the diffuse's share of what the coating
+  // lets through (microfacet_energy.h).
+  MicrofacetEnergy energy;
 };
 MetallicRoughnessParams make_metallic_roughness_params(const SurfaceMaterial& m);
 struct MetallicRoughnessLobes : MetallicRoughnessParams {
@@ -104,7 +108,8 @@ struct MetallicRoughnessLobes : MetallicRoughnessParams {
   vec3 wo;             // local, wo.z > 0
   float eta = 1.5f;    // of the glass: n_transmitted / n_incident seen from wo
   float p_specular = 0, p_diffuse = 0, p_transmission = 0;
-  float coating_o = 1;  // light crossing the plastic's coating along wo: every diffuse eval needs it
+  float coating_o = 1;  // 1 − the coating's albedo along wo: every diffuse eval needs it
+  float loss_o = 0;     // 1 − the GGX albedo along wo: every multiple-scattering eval needs it
   float lambda_o = 0;   // Smith's GGX Lambda along wo (rough lobes): every masking term needs it
 };
 // `tangent` (world space, any length; zero when unknown) orients an anisotropic lobe's frame.
@@ -116,6 +121,10 @@ float pdf_local(const MetallicRoughnessLobes& l, vec3 wi);
 color3 eval_with_pdf(const MetallicRoughnessLobes& l, vec3 wi, float& pdf);
 std::optional<BsdfSample> sample_local(const MetallicRoughnessLobes& l, float u_lobe, vec2 u,
                                        const vec3* cosine = nullptr);
+// The lobes the cosine hemisphere samples (a diffuse base, multiple scattering) are present.
+inline bool has_cosine_lobes(const MetallicRoughnessParams& p) {
+  return (p.plastic > 0 && max_component(p.base) > 0) || max_component(p.energy.multiple_scattering) > 0;
+}
 // The material has a diffuse base (then it is never pure delta). Inline: asked at every path vertex.
 inline bool has_metallic_roughness_diffuse(const SurfaceMaterial& m) {
   return m.metallic < 1 && m.transmission < 1 && max_component(m.base_color) > 0;

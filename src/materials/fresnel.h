@@ -20,6 +20,12 @@ inline float fresnel_dielectric(float cos_i, float eta) {
   return (parallel * parallel + perpendicular * perpendicular) / 2;
 }
 
+// The dielectric curve of `ior` rescaled to run from 0 at normal incidence to 1 at grazing
+// (KHR_materials_specular's coating), `f0` being the ior's own reflectance at normal incidence.
+inline float fresnel_rise(float cos_i, float ior, float f0) {
+  return f0 < 1 ? std::max((fresnel_dielectric(cos_i, ior) - f0) / (1 - f0), 0.0f) : 1;
+}
+
 // Schlick's approximation with a colored reflectance at normal incidence (metals).
 inline color3 fresnel_schlick(color3 f0, float cos_i) {
   float m = 1 - std::clamp(cos_i, 0.0f, 1.0f);

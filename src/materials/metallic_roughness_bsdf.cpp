@@ -18,7 +18,7 @@ constexpr float min_lobe_weight = 0.05f;
 // The exact Fresnel curve of the coating's ior, rescaled to run from 0 at normal incidence to 1
 // at grazing.
 [[gnu::always_inline]] inline float coating_rise(const MetallicRoughnessLobes& l, float cos) {
-  return l.ior_f0 < 1 ? std::max((fresnel_dielectric(cos, l.ior) - l.ior_f0) / (1 - l.ior_f0), 0.0f) : 1;
+  return fresnel_rise(cos, l.ior, l.ior_f0);
 }
 
 // The plastic's coating reflectance (KHR_materials_specular): that curve (its value `rise` at
@@ -50,18 +50,6 @@ constexpr float min_lobe_weight = 0.05f;
 }
 [[gnu::always_inline]] inline color3 specular_fresnel(const MetallicRoughnessLobes& l, float cos_h) {
   return specular_fresnel(l, cos_h, l.plastic > 0 ? coating_rise(l, cos_h) : 0);
-}
-
-// Light crossing the plastic's coating at cosine `cos`: what its brightest channel does not
-// reflect (the extension's 1 − specular · max(F)); symmetric in wo and wi: reciprocity. Without
-// iridescence the brightest channel is the one with the largest F0, whatever the cosine, so
-// only that channel is worked out.
-[[gnu::always_inline]] inline float coating_transmittance(const MetallicRoughnessLobes& l, float cos, float rise) {
-  if (l.iridescence > 0) return 1 - max_component(coating_fresnel(l, cos, rise));
-  return 1 - (l.specular_f0_max + (1 - l.specular_f0_max) * rise) * l.specular;
-}
-[[gnu::always_inline]] inline float coating_transmittance(const MetallicRoughnessLobes& l, float cos) {
-  return coating_transmittance(l, cos, coating_rise(l, cos));
 }
 
 // The GGX terms, anisotropic (KHR_materials_anisotropy) only where the material is. Lambda along
@@ -104,11 +92,6 @@ bool refraction_half_vector(const MetallicRoughnessLobes& l, vec3 wi, vec3& h) {
   h = normalize(h);
   if (h.z < 0) h = -h;
   return dot(l.wo, h) > 0 && dot(wi, h) < 0;
-}
-
-[[gnu::always_inline]] inline color3 eval_diffuse(const MetallicRoughnessLobes& l, vec3 wi) {
-  float coating = l.coating_o * coating_transmittance(l, wi.z);
-  return l.base * (l.plastic * coating * inv_pi * wi.z);
 }
 
 // The rough lobes add their f(wo, wi) * |cos| to `f` and their share of the pdf to `pdf`, each
@@ -163,7 +146,7 @@ color3 evaluate(const MetallicRoughnessLobes& l, vec3 wi, float& pdf) {
   pdf = 0;
   if (!l.valid || std::abs(wi.z) < 1e-7f) return f;
   if (wi.z > 0) {
-    if (WithF && l.p_diffuse > 0) f += eval_diffuse(l, wi);
+    if (WithF && l.p_diffuse > 0) f += eval_cosine_lobes(l.energy, l.base, l.plastic, l.coating_o, l.loss_o, wi.z);
     if (WithPdf) pdf += l.p_diffuse * wi.z * inv_pi;
     if (!l.smooth && l.p_specular > 0) add_rough_reflection<WithF, WithPdf>(l, wi, f, pdf);
     if (WithPdf && !transmission_is_delta(l) && l.p_transmission > 0) pdf += l.p_transmission * glass_reflection_pdf(l, wi);
@@ -224,6 +207,10 @@ MetallicRoughnessParams make_metallic_roughness_params(const SurfaceMaterial& m)
   p.film = {m.iridescence_ior, std::max(m.iridescence_thickness, 0.0f)};
   // The clearcoat extension puts its coat (ior 1.5) above the film.
   p.film_outside_ior = m.clearcoat > 0 ? 1.5f : 1.0f;
+  // The albedo tables are isotropic: an anisotropic lobe takes the mean of its alphas. Its
+  // loss is nearer the lobe's than the geometric mean's (a brushed metal kept 0.65 of the light).
+  float alpha = p.anisotropic ? (p.anisotropic_alpha.x + p.anisotropic_alpha.y) / 2 : p.alpha;
+  p.energy = make_microfacet_energy(alpha, p.smooth, p.ior, p.metal, p.base, p.plastic, p.specular, p.specular_f0);
   return p;
 }
 
@@ -236,14 +223,14 @@ MetallicRoughnessLobes make_metallic_roughness_lobes(const MetallicRoughnessPara
   if (!(l.wo.z > 1e-7f) || !is_finite(l.wo)) return l;
   bool colored = max_component(l.base) > 0;
   float cos_o = l.wo.z;
-  // The coating's curve at wo, worked out once: its transmittance and its reflectance both read it.
-  float rise_o = coating_rise(l, cos_o);
-  l.coating_o = coating_transmittance(l, cos_o, rise_o);
+  l.loss_o = ggx_energy_loss(l.energy, cos_o);
+  l.coating_o = coating_passage(l.energy, cos_o, l.loss_o);
   if (!l.smooth) l.lambda_o = microfacet_lambda(l, l.wo);
   float specular = selection_weight(l.metal > 0 || l.plastic * l.specular > 0 || (l.glass > 0 && !is_index_matched(l.ior)),
-                                    mean(specular_fresnel(l, cos_o, rise_o)), l.smooth);
-  float diffuse = selection_weight(l.plastic > 0 && colored,
-                                   l.plastic * mean(l.base) * l.coating_o, false);
+                                    mean(specular_fresnel(l, cos_o)), l.smooth);
+  // The diffuse and the multiple scattering share the cosine hemisphere.
+  float diffuse = selection_weight(has_cosine_lobes(l), cosine_lobes_albedo(l.energy, l.base, l.plastic, l.coating_o, l.loss_o),
+                                   false);
   // A rough glass lobe reflects too, where its microfacets choose to: its estimate counts both.
   float glass_f = fresnel_dielectric(cos_o, l.eta), glass_reflects = transmission_is_delta(l) ? 0 : glass_f;
   float transmitted = l.glass > 0 && colored ? l.glass * (mean(l.base) * (1 - glass_f) + glass_reflects) : 0;

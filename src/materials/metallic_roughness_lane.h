@@ -15,6 +15,7 @@
 #include "materials/bsdf_models.h"
 #include "materials/fresnel.h"
 #include "materials/metallic_roughness.h"
+#include "materials/microfacet_energy.h"
 #include "materials/shading_frame.h"
 
 namespace radiant {
@@ -93,9 +94,9 @@ struct GlossyLaneMaterial {
   color3 base;
   float alpha, ior, ior_f0;
   float metal, plastic;
-  float specular;  // the coating's strength, its tinted F0 and that F0's largest channel
+  float specular;  // the coating's strength and its tinted F0
   color3 specular_f0;
-  float specular_f0_max;
+  MicrofacetEnergy energy;
 };
 
 // The lobes seen from wo (MetallicRoughnessLobes' fields), meaningful where `valid`.
@@ -103,17 +104,14 @@ struct GlossyLaneLobes {
   vec3 normal;  // the frame's z, make_shading_frame's input: the shading normal on wo's side
   vec3 wo;      // local
   float p_specular, p_diffuse;
-  float coating_o, lambda_o;
+  float coating_o, loss_o, lambda_o;
   bool valid;
 };
 
-// coating_rise, coating_fresnel and coating_transmittance without iridescence.
+// coating_rise and coating_fresnel without iridescence.
 [[gnu::always_inline]] inline float glossy_coating_rise(const GlossyLaneMaterial& m, float cos) {
   float rise = std::max((lane::fresnel_dielectric(cos, m.ior) - m.ior_f0) / (1 - m.ior_f0), 0.0f);
   return m.ior_f0 < 1 ? rise : 1.0f;
-}
-[[gnu::always_inline]] inline float glossy_coating_transmittance(const GlossyLaneMaterial& m, float rise) {
-  return 1 - (m.specular_f0_max + (1 - m.specular_f0_max) * rise) * m.specular;
 }
 // specular_fresnel without glass and iridescence, given the coating's curve at `cos_h`.
 [[gnu::always_inline]] inline color3 glossy_specular_fresnel(const GlossyLaneMaterial& m, float cos_h, float rise) {
@@ -135,15 +133,16 @@ struct GlossyLaneLobes {
   bool colored = max_component(m.base) > 0;
   float cos_o = l.wo.z;
   float rise_o = glossy_coating_rise(m, cos_o);
-  l.coating_o = glossy_coating_transmittance(m, rise_o);
+  l.loss_o = ggx_energy_loss(m.energy, cos_o);
+  l.coating_o = coating_passage(m.energy, cos_o, l.loss_o);
   l.lambda_o = lane::ggx_lambda(l.wo, m.alpha);
   // selection_weight of the present lobes, with its floor.
   constexpr float min_lobe_weight = 0.05f;
   bool specular_present = (m.metal > 0) | (m.plastic * m.specular > 0);
   float specular = std::max(mean(glossy_specular_fresnel(m, cos_o, rise_o)), min_lobe_weight);
   specular = specular_present ? specular : 0.0f;
-  bool diffuse_present = (m.plastic > 0) & colored;
-  float diffuse = std::max(m.plastic * mean(m.base) * l.coating_o, min_lobe_weight);
+  bool diffuse_present = ((m.plastic > 0) & colored) | (max_component(m.energy.multiple_scattering) > 0);
+  float diffuse = std::max(cosine_lobes_albedo(m.energy, m.base, m.plastic, l.coating_o, l.loss_o), min_lobe_weight);
   diffuse = diffuse_present ? diffuse : 0.0f;
   float transmitted = 0;
   float total = specular + diffuse + transmitted;
@@ -160,9 +159,8 @@ template <bool WithPdf>
 [[gnu::always_inline]] inline color3 eval_glossy_lane(const GlossyLaneMaterial& m, const GlossyLaneLobes& l, vec3 wi,
                                                       float& pdf, bool& in_range) {
   bool upper = l.valid & !(std::abs(wi.z) < 1e-7f) & (wi.z > 0);
-  // The coated Lambert.
-  float coating = l.coating_o * glossy_coating_transmittance(m, glossy_coating_rise(m, wi.z));
-  color3 diffuse = m.base * (m.plastic * coating * inv_pi * wi.z);
+  // The coated Lambert and the multiple scattering (wi.z is masked off below the surface).
+  color3 diffuse = eval_cosine_lobes(m.energy, m.base, m.plastic, l.coating_o, l.loss_o, wi.z);
   color3 f = color3{0, 0, 0} + lane::select(upper & (l.p_diffuse > 0), diffuse, color3{0, 0, 0});
   pdf = 0;
   if constexpr (WithPdf) pdf = upper ? pdf + l.p_diffuse * wi.z * inv_pi : pdf;

@@ -32,20 +32,17 @@ float white_metal_albedo(const SurfaceMaterial& m, float cos_wo) {
   return sum.x / 20000;
 }
 
-TEST_CASE("anisotropy: white furnace, an anisotropic white metal lies between the isotropic ones at its two alphas") {
-  // Roughness 0.3: alpha 0.09 across; along, 0.09 + 0.91 s^2 (0.17 at s = 0.3, 1 at s = 1).
+TEST_CASE("anisotropy: white furnace, an anisotropic white metal keeps nearly all light") {
+  // Roughness 0.3: alpha 0.09 across; along, 0.09 + 0.91 s^2 (0.17 at s = 0.3, 1 at s = 1). The
+  // multiple scattering is tabulated for isotropic lobes and taken at the mean of the two alphas:
+  // close, not exact. Single scattering alone kept 0.65 head on at s = 1.
   for (float strength : {0.3f, 1.0f})
     for (float cos_wo : {1.0f, 0.5f, 0.1f}) {
       SurfaceMaterial m = anisotropic(metallic_roughness({1, 1, 1}, 1, 0.3f), strength);
-      float along_alpha = 0.09f + 0.91f * strength * strength;
       float albedo = white_metal_albedo(m, cos_wo);
-      float rougher = white_metal_albedo(metallic_roughness({1, 1, 1}, 1, std::sqrt(along_alpha)), cos_wo);
-      float smoother = white_metal_albedo(metallic_roughness({1, 1, 1}, 1, 0.3f), cos_wo);
-      INFO("strength ", strength, " cos(wo) ", cos_wo, ": ", rougher, " <= ", albedo, " <= ", smoother);
-      CHECK(albedo <= 1.005f);
-      if (cos_wo < 0.5f) continue;  // at grazing angles single scattering's loss is not monotonic in alpha
-      CHECK(albedo >= rougher - 0.01f);
-      CHECK(albedo <= smoother + 0.01f);
+      INFO("strength ", strength, " cos(wo) ", cos_wo, ": ", albedo);
+      CHECK(albedo <= 1.02f);
+      CHECK(albedo >= 0.85f);
     }
 }
 

@@ -59,7 +59,7 @@ TEST_CASE("specular layer: strength and F0 tint scale a smooth dielectric's refl
   CHECK(mirror_reflectance(specular_dielectric({0, 0, 0}, 0, 1, {40, 40, 40}), up).x == doctest::Approx(1));
 }
 
-TEST_CASE("specular layer: white furnace, the coating trades diffuse for specular without gain") {
+TEST_CASE("specular layer: white furnace, the coating trades diffuse for specular without gain or loss") {
   // A white base under its coating: whatever the layer reflects the diffuse base does not get.
   for (float roughness : {0.0f, 0.3f, 1.0f})
     for (float specular : {0.0f, 0.5f, 1.0f})
@@ -69,9 +69,11 @@ TEST_CASE("specular layer: white furnace, the coating trades diffuse for specula
           color3 a = albedo(m, spherical_direction(cos_wo, 0.3f), 20000);
           INFO("roughness ", roughness, " specular ", specular, " cos(wo) ", cos_wo, ": ", a.x, " ", a.y, " ", a.z);
           CHECK(max_component(a) <= 1.005f);
-          // Single scattering loses what the coating reflects back down and GGX's interreflection:
-          // little head on, much at grazing angles on rough surfaces (0.36 at roughness 1, cos 0.1).
-          if (cos_wo == 1) CHECK(min_component(a) >= 0.7f);
+          // The diffuse gets what the coating's brightest channel does not reflect, multiple
+          // scattering included (microfacet_energy.h): that channel reflects everything. Single
+          // scattering with the glTF BRDF's layering kept 0.36 at roughness 1, cos 0.1.
+          CHECK(max_component(a) >= 0.98f);
+          if (tint.z == 1) CHECK(min_component(a) >= 0.98f);
           if (specular == 0) CHECK(a.x == doctest::Approx(1).epsilon(1e-5));
         }
 }

@@ -142,11 +142,7 @@ void set_lane(SurfaceLanes& l, int i, const LaneCase& c) {
     const MetallicRoughnessParams* p = material.metallic_roughness();
     REQUIRE(p);
     REQUIRE(is_metallic_roughness_lane_case(*p));
-    l.albedo_r[i] = p->base.x, l.albedo_g[i] = p->base.y, l.albedo_b[i] = p->base.z;
-    l.alpha[i] = p->alpha, l.ior[i] = p->ior, l.ior_f0[i] = p->ior_f0;
-    l.metal[i] = p->metal, l.plastic[i] = p->plastic, l.specular[i] = p->specular;
-    l.specular_f0_r[i] = p->specular_f0.x, l.specular_f0_g[i] = p->specular_f0.y, l.specular_f0_b[i] = p->specular_f0.z;
-    l.specular_f0_max[i] = p->specular_f0_max;
+    set_lane_glossy_material(l, i, *p);
     l.u_lobe[i] = c.u_lobe, l.u_x[i] = c.u.x, l.u_y[i] = c.u.y;
   } else if (l.model == RenderContext::LaneModel::phong) {
     BsdfMaterial material(c.material);

@@ -1,0 +1,60 @@
+// Energy compensation of the metallic-roughness lobes, as Cycles and OpenPBR do it (Kulla and
+// Conty 2017): a multiple-scattering lobe gives back what single-scattering GGX loses, and the
+// diffuse under the dielectric coating receives what the coating does not reflect. Both are
+// reciprocal products f(μo)·f(μi), normalised so that a white surface reflects exactly 1.
+// Shared by the scalar model and its SIMD lanes (metallic_roughness_lane.h), to the bit.
+#pragma once
+
+#include "materials/microfacet_albedo.h"
+#include "math/vec.h"
+
+namespace radiant {
+
+// The per-material part: table coordinates and the products' weights.
+struct MicrofacetEnergy {
+  float roughness = 0;  // table coordinate of the lobes' (effective) alpha
+  float ior = 0.2f;     // table coordinate of the coating's ior
+  // The multiple-scattering lobe, f·cosθi = colour · (1 − E(μo))(1 − E(μi)) · normalization · μi:
+  // the metal's and the coating's F_ms by their mix shares, and 1/(π(1 − E_avg)).
+  color3 multiple_scattering;
+  float multiple_normalization = 0;
+  // The coating's albedo along μ (brightest channel) is reflect·E(μ) + rise·R(μ) + multiple·(1 − E(μ)),
+  // R the albedo under its rescaled Fresnel curve; the diffuse below it is scaled by
+  // (1 − E_s(μo))(1 − E_s(μi)) / (1 − E_s_avg).
+  float coating_reflect = 0, coating_rise = 0, coating_multiple = 0;
+  float diffuse_normalization = 1;
+};
+
+// `alpha` is the lobes' GGX alpha (sqrt(αx·αy) when anisotropic, 0 when smooth); the coating is
+// KHR_materials_specular's: strength `specular`, tinted F0 `specular_f0` of `ior`.
+MicrofacetEnergy make_microfacet_energy(float alpha, bool smooth, float ior, float metal, color3 metal_f0, float plastic,
+                                        float specular, color3 specular_f0);
+
+// 1 − E(μ): what single scattering loses along a direction of cosine `cos`.
+[[gnu::always_inline]] inline float ggx_energy_loss(const MicrofacetEnergy& e, float cos) {
+  return 1 - ggx_albedo(cos, e.roughness);
+}
+
+// 1 − E_s(μ): what the coating lets through along `cos`, given `loss` = ggx_energy_loss there.
+[[gnu::always_inline]] inline float coating_passage(const MicrofacetEnergy& e, float cos, float loss) {
+  float rise = ggx_rise_albedo(cos, e.roughness, e.ior);
+  return 1 - (e.coating_reflect * (1 - loss) + e.coating_rise * rise + e.coating_multiple * loss);
+}
+
+// f·cosθi of the lobes the cosine hemisphere samples, the plastic's diffuse (base × its share
+// `plastic`) and the multiple scattering, at cos_i > 0; `passage_o` and `loss_o` are along wo.
+[[gnu::always_inline]] inline color3 eval_cosine_lobes(const MicrofacetEnergy& e, color3 base, float plastic,
+                                                       float passage_o, float loss_o, float cos_i) {
+  float loss = ggx_energy_loss(e, cos_i);
+  float passage = passage_o * coating_passage(e, cos_i, loss) * e.diffuse_normalization;
+  color3 diffuse = base * (plastic * passage * inv_pi * cos_i);
+  return diffuse + e.multiple_scattering * (loss_o * loss * e.multiple_normalization * cos_i);
+}
+
+// Their mean albedo along wo (lobe selection): exactly (1 − E_s(μo))·share·base + F_ms·(1 − E(μo)).
+[[gnu::always_inline]] inline float cosine_lobes_albedo(const MicrofacetEnergy& e, color3 base, float plastic,
+                                                        float passage_o, float loss_o) {
+  return plastic * mean(base) * passage_o + mean(e.multiple_scattering) * loss_o;
+}
+
+}  // namespace radiant
