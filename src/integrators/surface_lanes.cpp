@@ -178,16 +178,28 @@ struct LambertValue {
           l.lambda_o[i],
           l.valid[i] != 0};
 }
-// The metallic-roughness lobes' value towards the world direction `wi` (Bsdf::eval_framed).
+// The metallic-roughness lobes' value towards the world direction `wi` (Bsdf::eval_framed),
+// the albedo tables' values there looked up ahead (GlossyRecord, glossy_light_albedos).
 template <bool WithPdf>
 struct GlossyValue {
   GlossyLaneMaterial m;
   GlossyLaneLobes lobes;
+  MicrofacetAlbedos at_i;
   [[gnu::always_inline]] LaneBsdfValue operator()(vec3 wi) const {
     float pdf = 0;
     bool in_range;
-    color3 f = eval_glossy_lane<WithPdf>(m, lobes, to_local(make_shading_frame(lobes.normal), wi), pdf, in_range);
+    color3 f = eval_glossy_lane<WithPdf>(m, lobes, to_local(make_shading_frame(lobes.normal), wi), at_i, pdf, in_range);
     return {f, pdf, !lane::black(f), in_range};
+  }
+};
+// In a light loop's first pass over glossy lanes: records the local cosine of the light's
+// direction into `cosine`, for glossy_light_albedos; the pass's light sample is discarded.
+struct GlossyRecord {
+  vec3 normal;  // the lobes' frame's z
+  float* cosine;
+  [[gnu::always_inline]] LaneBsdfValue operator()(vec3 wi) const {
+    *cosine = to_local(make_shading_frame(normal), wi).z;
+    return {{0, 0, 0}, 0, false};
   }
 };
 
@@ -256,7 +268,7 @@ template <RenderContext::LaneModel Model, bool WithPdf>
 [[gnu::always_inline]] inline auto lane_bsdf(const SurfaceLanes& l, int i) {
   using LaneModel = RenderContext::LaneModel;
   if constexpr (Model == LaneModel::glossy) {
-    return GlossyValue<WithPdf>{glossy_material(l, i), stored_glossy_lobes(l, i)};
+    return GlossyValue<WithPdf>{glossy_material(l, i), stored_glossy_lobes(l, i), {l.albedo_i[i], l.rise_i[i]}};
   } else if constexpr (Model == LaneModel::phong) {
     return PhongValue{l, i, stored_phong_lobes(l, i), l.phong_power[i]};
   } else {
@@ -474,30 +486,63 @@ template <int Hits>
   store_light_outputs(l, i, light_outputs(l, i, light, hit.point, {hit.error, hit.error, hit.error}, hit.geometric_normal));
 }
 
-// A glossy lane's first loop: its hit, the metallic-roughness lobes and the point light's sample.
+// A glossy lane's first loops. The first records the local cosines of wo and of the point
+// light's direction, for glossy_albedos.
+template <int Hits>
+[[gnu::always_inline]] inline void record_glossy_lane(SurfaceLanes& l, int i) {
+  LaneHit hit = decode_lane<Hits>(l, i);
+  vec3 normal;
+  l.energy_cos_o[i] = glossy_lane_frame(hit.normal, hit.wo, normal).z;
+  point_light_lane(l, i, hit.point, GlossyRecord{normal, &l.energy_cos_i[i]});
+}
+
+// The albedo tables' values along the recorded cosines: along wo where `along_wo`, and along
+// the light's direction where `which` (every lane when null). One lane at a time: the tables'
+// reads are not loads a vector loop can make.
+void glossy_albedos(SurfaceLanes& l, bool along_wo, const int32_t* which) {
+  for (int i = 0; i < l.count; ++i) {
+    MicrofacetEnergy e = glossy_material(l, i).energy;
+    if (along_wo) {
+      MicrofacetAlbedos at_o = microfacet_albedos(e, l.energy_cos_o[i]);
+      l.albedo_o[i] = at_o.albedo, l.rise_o[i] = at_o.rise;
+    }
+    if (which && !which[i]) continue;
+    MicrofacetAlbedos at_i = microfacet_albedos(e, l.energy_cos_i[i]);
+    l.albedo_i[i] = at_i.albedo, l.rise_i[i] = at_i.rise;
+  }
+}
+void glossy_light_albedos(SurfaceLanes& l, const int32_t* which) { glossy_albedos(l, false, which); }
+
+// The loop proper: its hit, the metallic-roughness lobes and the point light's sample.
 template <int Hits>
 [[gnu::always_inline]] inline void glossy_lane(SurfaceLanes& l, int i) {
   LaneHit hit = decode_lane<Hits>(l, i);
   GlossyLaneMaterial m = glossy_material(l, i);
-  GlossyLaneLobes lobes = make_glossy_lane_lobes(m, hit.normal, hit.wo);
+  GlossyLaneLobes lobes = make_glossy_lane_lobes(m, hit.normal, hit.wo, {l.albedo_o[i], l.rise_o[i]});
   store_hit(l, i, hit, lobes.normal, lobes.valid);
   l.wo_x[i] = lobes.wo.x, l.wo_y[i] = lobes.wo.y, l.wo_z[i] = lobes.wo.z;
   l.p_specular[i] = lobes.p_specular, l.p_diffuse[i] = lobes.p_diffuse;
   l.coating_o[i] = lobes.coating_o, l.loss_o[i] = lobes.loss_o, l.lambda_o[i] = lobes.lambda_o;
-  LaneLight light = point_light_lane(l, i, hit.point, GlossyValue<false>{m, lobes});
+  LaneLight light = point_light_lane(l, i, hit.point, GlossyValue<false>{m, lobes, {l.albedo_i[i], l.rise_i[i]}});
   l.fallback[i] |= !light.in_range;
   store_light_outputs(l, i, light_outputs(l, i, light, hit.point, {hit.error, hit.error, hit.error}, hit.geometric_normal));
 }
 
 // The GGX lobe's directions where a glossy lane chose it (sample_specular): one lane at a time,
 // in the one-path code's own function, whose sine and cosine no vector loop reproduces to the
-// bit. Most lanes choose the diffuse lobe.
+// bit. Most lanes choose the diffuse lobe. Then the albedo tables' values along the bounce's
+// direction, the chosen lobe's (glossy_albedos' reasons).
 void sample_glossy_specular(SurfaceLanes& l) {
   for (int i = 0; i < l.count; ++i) {
-    if (!l.valid[i] || !(l.u_lobe[i] < l.p_specular[i])) continue;
-    vec3 wo = {l.wo_x[i], l.wo_y[i], l.wo_z[i]};
-    vec3 wi = reflect(wo, sample_ggx_visible_normal(wo, l.alpha[i], {l.u_x[i], l.u_y[i]}));
-    l.specular_x[i] = wi.x, l.specular_y[i] = wi.y, l.specular_z[i] = wi.z;
+    float cos_i = l.cosine_z[i];
+    if (l.valid[i] && l.u_lobe[i] < l.p_specular[i]) {
+      vec3 wo = {l.wo_x[i], l.wo_y[i], l.wo_z[i]};
+      vec3 wi = reflect(wo, sample_ggx_visible_normal(wo, l.alpha[i], {l.u_x[i], l.u_y[i]}));
+      l.specular_x[i] = wi.x, l.specular_y[i] = wi.y, l.specular_z[i] = wi.z;
+      cos_i = wi.z;
+    }
+    MicrofacetAlbedos at_i = microfacet_albedos(glossy_material(l, i).energy, cos_i);
+    l.albedo_i[i] = at_i.albedo, l.rise_i[i] = at_i.rise;
   }
 }
 
@@ -512,7 +557,7 @@ void sample_glossy_specular(SurfaceLanes& l) {
                       {l.cosine_x[i], l.cosine_y[i], l.cosine_z[i]});
   float pdf;
   bool in_range;
-  color3 f = eval_glossy_lane<true>(m, lobes, local, pdf, in_range);
+  color3 f = eval_glossy_lane<true>(m, lobes, local, {l.albedo_i[i], l.rise_i[i]}, pdf, in_range);
   color3 weight = f / pdf;
   bool scatters = (specular & !(local.z <= 0)) | diffuse;
   scatters = scatters & (pdf > 0) & !lane::black(f) & lane::finite(weight) & !lane::black(weight);
@@ -628,6 +673,14 @@ void draw_lane_lights(SurfaceLanes& l) {
     l.drawn_distance[i] = std::numeric_limits<float>::infinity();
     l.drawn_r[i] = radiance.x, l.drawn_g[i] = radiance.y, l.drawn_b[i] = radiance.z;
   }
+  if (l.model == RenderContext::LaneModel::glossy) {
+    for (int i = 0; i < l.count; ++i) {  // a glossy lane's albedo tables towards the light drawn
+      if (!l.drawn[i]) continue;
+      vec3 normal = {l.lobe_nx[i], l.lobe_ny[i], l.lobe_nz[i]};
+      l.energy_cos_i[i] = to_local(make_shading_frame(normal), {l.drawn_x[i], l.drawn_y[i], l.drawn_z[i]}).z;
+    }
+    glossy_light_albedos(l, l.drawn);
+  }
   if (l.model != RenderContext::LaneModel::phong) return;
   for (int i = 0; i < l.count; ++i) {  // a Phong lane's lobe power towards the light drawn
     if (!l.drawn[i]) continue;
@@ -702,14 +755,25 @@ void phong_powers(SurfaceLanes& l, const int32_t* which) {
   for (int i = 0; i < l.count; ++i)
     if (!which || which[i]) l.phong_power[i] = phong_lobe_power(l.phong_cos[i], l.exponent[i]);
 }
+// Glossy lanes' light loops likewise: GlossyRecord, glossy_light_albedos, GlossyValue.
+[[gnu::always_inline]] inline void record_shaped_glossy(SurfaceLanes& l, int i) {
+  vec3 normal = {l.lobe_nx[i], l.lobe_ny[i], l.lobe_nz[i]};
+  shaped_delta_light_lane(l, i, {l.px[i], l.py[i], l.pz[i]}, GlossyRecord{normal, &l.energy_cos_i[i]});
+}
+[[gnu::always_inline]] inline void record_triangle_glossy(SurfaceLanes& l, int i) {
+  vec3 normal = {l.lobe_nx[i], l.lobe_ny[i], l.lobe_nz[i]};
+  triangle_light_lane(l, i, {l.px[i], l.py[i], l.pz[i]}, GlossyRecord{normal, &l.energy_cos_i[i]});
+}
 
 // The kernel's loops, compiled once per instruction set. Each is a loop of its own: GCC
 // vectorises these one at a time, not together.
 template <RenderContext::LaneModel Model, bool AnyArea, int Hits>
 [[gnu::always_inline]] inline void shade_lanes(SurfaceLanes& l) {
   using LaneModel = RenderContext::LaneModel;
-  constexpr bool phong = Model == LaneModel::phong;
-  if constexpr (Model == LaneModel::glossy) {
+  constexpr bool phong = Model == LaneModel::phong, glossy = Model == LaneModel::glossy;
+  if constexpr (glossy) {
+    for (int i = 0; i < l.count; ++i) record_glossy_lane<Hits>(l, i);
+    glossy_albedos(l, true, nullptr);
     for (int i = 0; i < l.count; ++i) glossy_lane<Hits>(l, i);
     sample_glossy_specular(l);
     for (int i = 0; i < l.count; ++i) glossy_bounce_lane(l, i);
@@ -726,6 +790,9 @@ template <RenderContext::LaneModel Model, bool AnyArea, int Hits>
     if constexpr (phong) {
       for (int i = 0; i < l.count; ++i) record_shaped_phong(l, i);
       phong_powers(l, l.shaped);
+    } else if constexpr (glossy) {
+      for (int i = 0; i < l.count; ++i) record_shaped_glossy(l, i);
+      glossy_light_albedos(l, l.shaped);
     }
     for (int i = 0; i < l.count; ++i) shaped_delta_lane<Model>(l, i);
   }
@@ -737,6 +804,9 @@ template <RenderContext::LaneModel Model, bool AnyArea, int Hits>
     if constexpr (phong) {
       for (int i = 0; i < l.count; ++i) record_triangle_phong(l, i);
       phong_powers(l, l.area);
+    } else if constexpr (glossy) {
+      for (int i = 0; i < l.count; ++i) record_triangle_glossy(l, i);
+      glossy_light_albedos(l, l.area);
     }
     for (int i = 0; i < l.count; ++i) triangle_lane<Model>(l, i);
   }

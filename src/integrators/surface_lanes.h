@@ -105,6 +105,11 @@ struct SurfaceLanes {
   alignas(32) float coating_reflect[stride], coating_rise[stride], coating_multiple[stride];
   alignas(32) float diffuse_normalization[stride];
   alignas(32) float u_lobe[stride], u_x[stride], u_y[stride];
+  // Between the kernel's loops, the local cosines of wo and of a light's or the bounce's
+  // direction, and the albedo tables' values there (microfacet_albedos, one lane at a time:
+  // table reads keep a loop from vectorising).
+  alignas(32) float energy_cos_o[stride], energy_cos_i[stride];
+  alignas(32) float albedo_o[stride], rise_o[stride], albedo_i[stride], rise_i[stride];
   // A Phong lane's material (PhongWeights: kd in albedo_*, kr in mirror_*, its lobe
   // probabilities in p_diffuse, p_specular (glossy) and p_mirror) and, between the kernel's
   // loops, the cosine of the angle between a light's direction and wo's mirror direction, and

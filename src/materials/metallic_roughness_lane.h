@@ -122,19 +122,25 @@ struct GlossyLaneLobes {
   return metal + plastic + color3{glass, glass, glass};
 }
 
-// make_metallic_roughness_lobes for `n` the shading normal (any side) and wo the unit direction
-// towards the viewer.
-[[gnu::always_inline]] inline GlossyLaneLobes make_glossy_lane_lobes(const GlossyLaneMaterial& m, vec3 n, vec3 wo) {
+// The lobes' frame (facing_frame) for `n` the shading normal (any side) and wo the unit
+// direction towards the viewer: its z in `normal`, and wo in it.
+[[gnu::always_inline]] inline vec3 glossy_lane_frame(vec3 n, vec3 wo, vec3& normal) {
+  normal = dot(n, wo) < 0 ? -n : n;
+  return to_local(make_shading_frame(normal), wo);
+}
+
+// make_metallic_roughness_lobes for `n` and `wo` as glossy_lane_frame's, given the tables'
+// values `at_o` along wo (microfacet_albedos at its local z).
+[[gnu::always_inline]] inline GlossyLaneLobes make_glossy_lane_lobes(const GlossyLaneMaterial& m, vec3 n, vec3 wo,
+                                                                     MicrofacetAlbedos at_o) {
   GlossyLaneLobes l;
-  l.normal = dot(n, wo) < 0 ? -n : n;  // facing_frame
-  ShadingFrame frame = make_shading_frame(l.normal);
-  l.wo = to_local(frame, wo);
+  l.wo = glossy_lane_frame(n, wo, l.normal);
   bool valid = (l.wo.z > 1e-7f) & lane::finite(l.wo);
   bool colored = max_component(m.base) > 0;
   float cos_o = l.wo.z;
   float rise_o = glossy_coating_rise(m, cos_o);
-  l.loss_o = ggx_energy_loss(m.energy, cos_o);
-  l.coating_o = coating_passage(m.energy, cos_o, l.loss_o);
+  l.loss_o = 1 - at_o.albedo;
+  l.coating_o = coating_passage_of(m.energy, l.loss_o, at_o.rise);
   l.lambda_o = lane::ggx_lambda(l.wo, m.alpha);
   // selection_weight of the present lobes, with its floor.
   constexpr float min_lobe_weight = 0.05f;
@@ -152,15 +158,16 @@ struct GlossyLaneLobes {
   return l;
 }
 
-// evaluate<true, WithPdf>: f(wo, wi) * |cos| at the local direction `wi`, and the pdf that the
-// lobes sample it with (0 where not finite). `in_range` turns false where the half vector's
-// normalize() would have rescaled: the lane must fall back.
+// evaluate<true, WithPdf>: f(wo, wi) * |cos| at the local direction `wi`, given the tables'
+// values `at_i` there (microfacet_albedos at wi.z), and the pdf that the lobes sample it with
+// (0 where not finite). `in_range` turns false where the half vector's normalize() would have
+// rescaled: the lane must fall back.
 template <bool WithPdf>
 [[gnu::always_inline]] inline color3 eval_glossy_lane(const GlossyLaneMaterial& m, const GlossyLaneLobes& l, vec3 wi,
-                                                      float& pdf, bool& in_range) {
+                                                      MicrofacetAlbedos at_i, float& pdf, bool& in_range) {
   bool upper = l.valid & !(std::abs(wi.z) < 1e-7f) & (wi.z > 0);
   // The coated Lambert and the multiple scattering (wi.z is masked off below the surface).
-  color3 diffuse = eval_cosine_lobes(m.energy, m.base, m.plastic, l.coating_o, l.loss_o, wi.z);
+  color3 diffuse = eval_cosine_lobes(m.energy, m.base, m.plastic, l.coating_o, l.loss_o, wi.z, at_i);
   color3 f = color3{0, 0, 0} + lane::select(upper & (l.p_diffuse > 0), diffuse, color3{0, 0, 0});
   pdf = 0;
   if constexpr (WithPdf) pdf = upper ? pdf + l.p_diffuse * wi.z * inv_pi : pdf;

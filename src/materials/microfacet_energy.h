@@ -30,25 +30,44 @@ struct MicrofacetEnergy {
 MicrofacetEnergy make_microfacet_energy(float alpha, bool smooth, float ior, float metal, color3 metal_f0, float plastic,
                                         float specular, color3 specular_f0);
 
+// The tables' values along a direction of cosine μ: E(μ) and R(μ), looked up once so that a
+// loop over SIMD lanes can take them from arrays (its table reads would not vectorise).
+struct MicrofacetAlbedos {
+  float albedo, rise;
+};
+[[gnu::always_inline]] inline MicrofacetAlbedos microfacet_albedos(const MicrofacetEnergy& e, float cos) {
+  return {ggx_albedo(cos, e.roughness), ggx_rise_albedo(cos, e.roughness, e.ior)};
+}
+
 // 1 − E(μ): what single scattering loses along a direction of cosine `cos`.
 [[gnu::always_inline]] inline float ggx_energy_loss(const MicrofacetEnergy& e, float cos) {
   return 1 - ggx_albedo(cos, e.roughness);
 }
 
-// 1 − E_s(μ): what the coating lets through along `cos`, given `loss` = ggx_energy_loss there.
-[[gnu::always_inline]] inline float coating_passage(const MicrofacetEnergy& e, float cos, float loss) {
-  float rise = ggx_rise_albedo(cos, e.roughness, e.ior);
+// 1 − E_s(μ): what the coating lets through, given `loss` = ggx_energy_loss and `rise` = R(μ).
+[[gnu::always_inline]] inline float coating_passage_of(const MicrofacetEnergy& e, float loss, float rise) {
   return 1 - (e.coating_reflect * (1 - loss) + e.coating_rise * rise + e.coating_multiple * loss);
+}
+// The same along `cos`.
+[[gnu::always_inline]] inline float coating_passage(const MicrofacetEnergy& e, float cos, float loss) {
+  return coating_passage_of(e, loss, ggx_rise_albedo(cos, e.roughness, e.ior));
 }
 
 // f·cosθi of the lobes the cosine hemisphere samples, the plastic's diffuse (base × its share
-// `plastic`) and the multiple scattering, at cos_i > 0; `passage_o` and `loss_o` are along wo.
+// `plastic`) and the multiple scattering, at cos_i > 0 with the tables' values `at_i` there;
+// `passage_o` and `loss_o` are along wo.
 [[gnu::always_inline]] inline color3 eval_cosine_lobes(const MicrofacetEnergy& e, color3 base, float plastic,
-                                                       float passage_o, float loss_o, float cos_i) {
-  float loss = ggx_energy_loss(e, cos_i);
-  float passage = passage_o * coating_passage(e, cos_i, loss) * e.diffuse_normalization;
+                                                       float passage_o, float loss_o, float cos_i,
+                                                       MicrofacetAlbedos at_i) {
+  float loss = 1 - at_i.albedo;
+  float passage = passage_o * coating_passage_of(e, loss, at_i.rise) * e.diffuse_normalization;
   color3 diffuse = base * (plastic * passage * inv_pi * cos_i);
   return diffuse + e.multiple_scattering * (loss_o * loss * e.multiple_normalization * cos_i);
+}
+// The same, looking the tables up.
+[[gnu::always_inline]] inline color3 eval_cosine_lobes(const MicrofacetEnergy& e, color3 base, float plastic,
+                                                       float passage_o, float loss_o, float cos_i) {
+  return eval_cosine_lobes(e, base, plastic, passage_o, loss_o, cos_i, microfacet_albedos(e, cos_i));
 }
 
 // Their mean albedo along wo (lobe selection): exactly (1 − E_s(μo))·share·base + F_ms·(1 − E(μo)).
