@@ -65,7 +65,13 @@ static int older_material(BuildContext& context, const Attributes& attributes) {
   color3 color = {255, 255, 255};
   float emittance = 0;
   bool smooth = true;
-  if (auto* a = find(attributes, "c")) color = read_color(context, *a);
+  if (auto* a = find(attributes, "c")) {
+    color = read_color(context, *a);
+    // A 0-255 colour above 255 would reflect more light than arrives.
+    for (size_t i = 0; i < a->arguments.size(); ++i)
+      if (color[int(a->arguments.size() == 1 ? 0 : i)] > 255)
+        fail(context, a->arguments[i], "'c' is a colour from 0 to 255, got " + shortened(a->arguments[i].text));
+  }
   if (auto* a = find(attributes, "e")) emittance = read_non_negative(context, *a);
   if (auto* a = find(attributes, "s")) smooth = read_boolean(context, *a);
   color3 reflectance = color / 255.0f;

@@ -101,6 +101,9 @@ TEST_CASE("material errors: names, unknown references, mixing the older and the 
       {"@sphere\nr 1\np 0 0 0\nmaterial a b\n", "t.scene:4:1: 'material' expects 1 word, got 2"},
       {"@sphere\nr 1\np 0 0 0\nc 255 0 0\nkd 0.5\n",
        "t.scene:4:1: older-format 'c' cannot be combined with 'kd' on one shape"},
+      {"@sphere\nr 1\np 0 0 0\nc 300 0 0\n", "t.scene:4:3: 'c' is a colour from 0 to 255, got 300"},
+      {"@sphere\nr 1\np 0 0 0\nc 0 0 255.5\n", "t.scene:4:7: 'c' is a colour from 0 to 255, got 255.5"},
+      {"@sphere\nr 1\np 0 0 0\nc 256\n", "t.scene:4:3: 'c' is a colour from 0 to 255, got 256"},
   });
 }
 
