@@ -32,6 +32,15 @@ std::string flag_name(std::string name) {
 
 void SessionSettings::set(std::string name, std::vector<std::string> values) {
   name = flag_name(name);
+  if (values.empty()) {
+    // Alone on a command line, a flag that needs a value says so itself (among the other
+    // settings, it would take the next flag as its value).
+    try {
+      parse_render_line({"render", "-o", "session.png", "--" + name}, ".");
+    } catch (const CLI::ParseError& e) {
+      throw std::invalid_argument("set " + name + " needs a value: " + e.what());
+    }
+  }
   SessionSettings trial = *this;
   trial.flags_[name] = std::move(values);
   try {

@@ -143,3 +143,14 @@ TEST_CASE("session: without a scene, commands that need one say so, the end of i
   CHECK(r.err.find("line 1: no scene yet") != std::string::npos);
   CHECK(fs::exists(dir.file("view.png")));
 }
+
+TEST_CASE("session: set without a value names the setting and what it needs, and a flag that takes none is set") {
+  ScratchDir dir("session-set-empty");
+  RadiantProcess session(session_args(dir, {"--spp", "1", "--view", "filmic"}), piped());
+  session.write_stdin("set spp\nset env\nset no-metadata\nwait\nquit\n");
+  CommandResult r = session.wait(120);
+  CHECK(r.err.find("line 1: set spp needs a value: --spp") != std::string::npos);
+  CHECK(r.err.find("line 2: set env needs a value: --env") != std::string::npos);
+  CHECK(r.err.find("--view") == std::string::npos);  // not the next setting's name
+  CHECK(r.err.find("line 3") == std::string::npos);
+}
