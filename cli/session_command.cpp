@@ -274,6 +274,7 @@ int session_main(int argc, char** argv) {
     app.parse(argc, argv);  // the render flags among them are checked as settings
     if (is_standard_output(output)) throw std::invalid_argument("-o -: a session rewrites its image after every pass; name a file");
     if (!max_memory.empty()) max_memory_bytes = parse_memory_limit("--max-memory", max_memory);
+    settings.set_output(output);
     settings.set_from_arguments(app.remaining());
     check_render_job_outputs(settings.job(output, fs::current_path()));
   } catch (const CLI::ParseError& e) {

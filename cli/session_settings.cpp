@@ -36,7 +36,7 @@ void SessionSettings::set(std::string name, std::vector<std::string> values) {
     // Alone on a command line, a flag that needs a value says so itself (among the other
     // settings, it would take the next flag as its value).
     try {
-      parse_render_line({"render", "-o", "session.png", "--" + name}, ".");
+      parse_render_line({"render", "-o", trial_output_, "--" + name}, ".");
     } catch (const CLI::ParseError& e) {
       throw std::invalid_argument("set " + name + " needs a value: " + e.what());
     }
@@ -44,11 +44,15 @@ void SessionSettings::set(std::string name, std::vector<std::string> values) {
   SessionSettings trial = *this;
   trial.flags_[name] = std::move(values);
   try {
-    trial.job("session.png", ".");
+    trial.job(trial_output_, ".");
   } catch (const CLI::ParseError& e) {
     throw std::invalid_argument(e.what());
   }
   *this = std::move(trial);
+}
+
+void SessionSettings::set_output(const std::string& output) {
+  trial_output_ = "session" + std::filesystem::path(output).extension().string();
 }
 
 bool SessionSettings::unset(std::string name) { return flags_.erase(flag_name(name)) > 0; }

@@ -21,6 +21,9 @@ class SessionSettings {
   // `unset NAME`: back to the default. False when it was not set.
   bool unset(std::string name);
 
+  // The session's image, whose format decides what may be set (--aov needs an EXR).
+  void set_output(const std::string& output);
+
   // Flags as a command line gives them ("--spp", "64", "--quiet", ...) become settings.
   void set_from_arguments(const std::vector<std::string>& arguments);
 
@@ -32,6 +35,7 @@ class SessionSettings {
 
  private:
   std::map<std::string, std::vector<std::string>> flags_;  // name without dashes -> values
+  std::string trial_output_ = "session.png";             // what `set` checks the settings against
 };
 
 }  // namespace radiant::cli

@@ -154,3 +154,18 @@ TEST_CASE("session: set without a value names the setting and what it needs, and
   CHECK(r.err.find("--view") == std::string::npos);  // not the next setting's name
   CHECK(r.err.find("line 3") == std::string::npos);
 }
+
+TEST_CASE("session: set aov is taken when the session writes an EXR, refused for a PNG") {
+  ScratchDir dir("session-aov");
+  std::vector<std::string> args = {"session", copy_scene(dir).string(), "-o", dir.file("view.exr").string(),
+                                   "--width", "8", "--height", "8", "--spp", "1"};
+  RadiantProcess exr(args, piped());
+  exr.write_stdin("set aov albedo\nwait\nquit\n");
+  CommandResult r = exr.wait(120);
+  CHECK(r.exit_code == 0);
+  CHECK(read_image(dir.file("view.exr")).channel_names.size() == 6);  // R, G, B and albedo.R/G/B
+  args[3] = dir.file("view.png").string();
+  RadiantProcess png(args, piped());
+  png.write_stdin("set aov albedo\nquit\n");
+  CHECK(png.wait(120).err.find("line 1: ") != std::string::npos);
+}
