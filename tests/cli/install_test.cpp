@@ -35,3 +35,25 @@ TEST_CASE("install: an installed radiant renders PNG and EXR (its module found r
     CHECK(fs::exists(moved / "share" / "zsh" / "vendor-completions" / "_radiant"));
   }
 }
+
+TEST_CASE("install: the man page's synopsis has every command, bash completes merge and the words of enum flags") {
+  if (built_with_address_sanitizer) return;  // the sanitizer builds make no manual
+  fs::path manual = fs::path(RADIANT_BINARY_DIR) / "manual";
+  std::string page = read_bytes(manual / "radiant.1");
+  for (const char* command : {"render", "info", "compare", "converge", "batch", "session", "merge"})
+    CHECK_MESSAGE(page.find(std::string(".B radiant ") + command + "\n") != std::string::npos, command);
+  // Ask the generated completion what it offers, as bash would.
+  auto complete = [&](const std::string& line) {
+    ScratchDir dir("completion");
+    fs::path script = dir.write("ask.sh", "source '" + (manual / "radiant.bash").string() + "'\n"
+                                          "COMP_WORDS=(" + line + ")\nCOMP_CWORD=$((${#COMP_WORDS[@]} - 1))\n"
+                                          "_radiant\necho \"${COMPREPLY[*]}\"\n");
+    std::string run = "bash '" + script.string() + "' > '" + dir.file("out").string() + "'";
+    REQUIRE(std::system(run.c_str()) == 0);
+    return read_bytes(dir.file("out"));
+  };
+  CHECK(complete("radiant me").find("merge") != std::string::npos);
+  CHECK(complete("radiant render --mode p") == "path\n");
+  CHECK(complete("radiant render --view ne") == "neutral\n");
+  CHECK(complete("radiant render --env st").find("studio") != std::string::npos);
+}
