@@ -14,6 +14,7 @@
 #   RADIANT       the radiant executable (default: radiant)
 set -euo pipefail
 (($# >= 4)) || { echo "usage: $0 SCENE K OUTDIR IMAGE [render flags...]" >&2; exit 2; }
+command -v parallel >/dev/null || { echo "$0: GNU parallel is not installed (apt-get install parallel)" >&2; exit 2; }
 scene=$1 count=$2 outdir=$3 image=$4
 shift 4
 radiant=${RADIANT:-radiant}
