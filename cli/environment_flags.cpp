@@ -4,6 +4,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <vector>
 
 #include "option_parsing.h"
 
@@ -14,28 +15,6 @@ namespace {
 std::string lower_case(std::string text) {
   for (char& c : text) c = char(std::tolower(static_cast<unsigned char>(c)));
   return text;
-}
-
-// The comma-separated numbers of `text`, each finite (parse_vec3's rules for one to three).
-std::vector<float> parse_numbers(const std::string& flag, const std::string& text) {
-  std::vector<float> numbers;
-  size_t start = 0;
-  while (true) {
-    size_t comma = text.find(',', start);
-    std::string part = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    size_t used = 0;
-    double value = 0;
-    try {
-      value = std::stod(part, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (part.empty() || used != part.size() || !(std::abs(value) <= 3.4e38))
-      throw CLI::ValidationError(flag, "'" + part + "' is not a finite number");
-    numbers.push_back(float(value));
-    if (comma == std::string::npos) return numbers;
-    start = comma + 1;
-  }
 }
 
 }  // namespace

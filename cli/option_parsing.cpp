@@ -75,6 +75,12 @@ CLI::Validator positive_number(double high) {
                           "a number in (0, " + number_text(high) + "]");
 }
 
+std::vector<float> parse_numbers(const std::string& flag, const std::string& text) {
+  std::vector<float> numbers;
+  for (const std::string& part : split(text, ',')) numbers.push_back(float(parse_number(flag, part)));
+  return numbers;
+}
+
 vec3 parse_vec3(const std::string& flag, const std::string& text) {
   auto parts = split(text, ',');
   if (parts.size() != 3) throw CLI::ValidationError(flag, "expected X,Y,Z (three comma-separated numbers), got '" + text + "'");

@@ -30,6 +30,8 @@ void parse_arguments(CLI::App& app, std::vector<std::string> words);
 
 // Each throws CLI::ValidationError naming `flag` on bad input. Numbers must be finite as floats.
 vec3 parse_vec3(const std::string& flag, const std::string& text);
+// Comma-separated numbers, as many as given.
+std::vector<float> parse_numbers(const std::string& flag, const std::string& text);
 RenderMode parse_mode(const std::string& flag, const std::string& text);
 SamplerKind parse_sampler(const std::string& flag, const std::string& text);
 LightSampler parse_light_sampler(const std::string& flag, const std::string& text);
