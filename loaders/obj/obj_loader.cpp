@@ -145,28 +145,14 @@ uint64_t pack(const tinyobj::index_t& i) {
 }
 
 // The `f` lines tinyobjloader keeps (three corners or more), to report errors as file:line:col.
-struct FaceLine {
-  size_t line = 0;
-  std::string text;
-};
-
-std::vector<FaceLine> face_lines(const std::string& path) {
-  std::ifstream in(path);
-  std::vector<FaceLine> faces;
-  std::string text;
-  for (size_t line = 1; std::getline(in, text); ++line) {
-    std::istringstream tokens(text);
-    std::string keyword, corner;
-    int corners = 0;
-    if (!(tokens >> keyword) || keyword != "f") continue;
-    while (tokens >> corner) ++corners;
-    if (corners >= 3) faces.push_back({line, text});
-  }
+std::vector<FaceStatement> kept_face_lines(const std::string& path) {
+  std::vector<FaceStatement> faces = face_statements(path);
+  std::erase_if(faces, [](const FaceStatement& f) { return f.corners < 3; });
   return faces;
 }
 
 // "file:line:col" of corner `corner` of face `face` (counted over the whole file).
-std::string corner_location(const std::string& path, const std::vector<FaceLine>& faces, size_t face, size_t corner) {
+std::string corner_location(const std::string& path, const std::vector<FaceStatement>& faces, size_t face, size_t corner) {
   if (face >= faces.size()) return path;
   const std::string& text = faces[face].text;
   size_t at = text.find('f');
@@ -247,9 +233,9 @@ struct BuiltMeshes {
 // Polygons are triangulated by ear clipping (concave ones too; triangles stay triangles).
 BuiltMeshes build_meshes(const std::string& path, const ObjData& data, const LoadOptions& options) {
   BuiltMeshes built;
-  std::vector<FaceLine> lines;  // read only when a message needs a location
+  std::vector<FaceStatement> lines;  // read only when a message needs a location
   auto location = [&](size_t face, size_t corner) {
-    if (lines.empty()) lines = face_lines(path);
+    if (lines.empty()) lines = kept_face_lines(path);
     return corner_location(path, lines, face, corner);
   };
   size_t face_in_file = 0;

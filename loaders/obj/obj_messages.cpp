@@ -1,5 +1,6 @@
 #include "obj/obj_messages.h"
 
+#include <algorithm>
 #include <fstream>
 #include <map>
 #include <regex>
@@ -45,10 +46,14 @@ std::string trimmed(const std::string& text) {
   return text.substr(first, text.find_last_not_of(" \t\r") + 1 - first);
 }
 
-// The lines of `f` statements with fewer than three corners, which tinyobjloader skips.
-std::vector<size_t> short_face_lines(const std::string& path) {
+
+std::string at_line(const std::string& file, const std::string& line) { return file + ":" + line + ": "; }
+
+}  // namespace
+
+std::vector<FaceStatement> face_statements(const std::string& path) {
   std::ifstream in(path);
-  std::vector<size_t> lines;
+  std::vector<FaceStatement> faces;
   std::string text;
   for (size_t line = 1; std::getline(in, text); ++line) {
     std::istringstream tokens(text);
@@ -56,14 +61,10 @@ std::vector<size_t> short_face_lines(const std::string& path) {
     int corners = 0;
     if (!(tokens >> keyword) || keyword != "f") continue;
     while (tokens >> corner) ++corners;
-    if (corners < 3) lines.push_back(line);
+    faces.push_back({line, text, corners});
   }
-  return lines;
+  return faces;
 }
-
-std::string at_line(const std::string& file, const std::string& line) { return file + ":" + line + ": "; }
-
-}  // namespace
 
 std::vector<std::string> placed_messages(const std::string& text, const ObjMessageSource& source) {
   std::vector<std::string> placed;
@@ -114,8 +115,9 @@ std::vector<std::string> placed_messages(const std::string& text, const ObjMessa
       placed.push_back(source.file + ": " + message);
   }
   if (short_faces > 0) {
-    std::vector<size_t> faces = short_face_lines(source.file);
-    std::string place = faces.empty() ? source.file + ": " : at_line(source.file, std::to_string(faces[0]));
+    std::vector<FaceStatement> faces = face_statements(source.file);
+    auto first = std::find_if(faces.begin(), faces.end(), [](const FaceStatement& f) { return f.corners < 3; });
+    std::string place = first == faces.end() ? source.file + ": " : at_line(source.file, std::to_string(first->line));
     placed.push_back(place + std::to_string(short_faces) + " faces with fewer than 3 corners are skipped" +
                      (short_faces > 1 ? " (this one first)" : ""));
   }

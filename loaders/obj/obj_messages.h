@@ -19,6 +19,16 @@ struct ObjMessageSource {
   bool report_unknown_materials = true;
 };
 
+// An OBJ's `f` statement: its line number, its text and how many corners it lists.
+struct FaceStatement {
+  size_t line = 0;
+  std::string text;
+  int corners = 0;
+};
+// Every `f` statement of the file at `path`, in order: tinyobjloader keeps those of three
+// corners or more and skips the others, so both errors and warnings find their lines here.
+std::vector<FaceStatement> face_statements(const std::string& path);
+
 // tinyobjloader's message text (lines ending in '\n') as placed one-line messages.
 std::vector<std::string> placed_messages(const std::string& text, const ObjMessageSource& source);
 
