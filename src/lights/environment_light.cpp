@@ -21,6 +21,16 @@ float map_pdf(const LightTable& lights, vec3 d) {
   return continuous_2d_pdf(lights.environment_map.distribution, uv) / (2 * pi * pi * sin_theta);
 }
 
+// The uniform part plus the map as `lookup` reads it, along unit world direction `d`.
+template <color3 (*lookup)(const EnvironmentMap&, vec2)>
+color3 environment_radiance(const LightTable& lights, vec3 d) {
+  color3 radiance = lights.environment_color;
+  const EnvironmentMap& map = lights.environment_map;
+  if (map.width > 0)
+    radiance += lookup(map, environment_uv(to_environment(lights.environment_frame, d))) * lights.environment_scale;
+  return radiance;
+}
+
 }  // namespace
 
 float sample_environment(const LightTable& lights, vec3 normal, float u_choice, vec2 u, vec3& direction) {
@@ -43,22 +53,10 @@ float environment_pdf(const LightTable& lights, vec3 normal, vec3 direction) {
   return pdf;
 }
 
-color3 eval_environment(const LightTable& lights, vec3 d) {
-  color3 radiance = lights.environment_color;
-  const EnvironmentMap& map = lights.environment_map;
-  if (map.width > 0)
-    radiance += environment_texel(map, environment_uv(to_environment(lights.environment_frame, d))) *
-                lights.environment_scale;
-  return radiance;
-}
+color3 eval_environment(const LightTable& lights, vec3 d) { return environment_radiance<environment_texel>(lights, d); }
 
 color3 eval_environment_backdrop(const LightTable& lights, vec3 d) {
-  color3 radiance = lights.environment_color;
-  const EnvironmentMap& map = lights.environment_map;
-  if (map.width > 0)
-    radiance += environment_backdrop(map, environment_uv(to_environment(lights.environment_frame, d))) *
-                lights.environment_scale;
-  return radiance;
+  return environment_radiance<environment_backdrop>(lights, d);
 }
 
 }  // namespace radiant
