@@ -32,11 +32,9 @@ SceneDesc quad_seen_from_behind(bool double_sided, const std::string& node_extra
 
 // The centre pixel of `scene` rendered in `mode` with every way of tracing camera rays; checks
 // they agree bit for bit and returns the colour.
-color3 centre_colour(const SceneDesc& scene, RenderMode mode) {
-  RenderOptions o;
-  o.width = 9, o.height = 9, o.spp = 2, o.mode = mode, o.env_color = color3{0, 0, 1};
-  o.path_batching = PathBatching::none;
-  RenderResult alone = render_scene(scene, o);
+// Camera-ray packets and the full batch sum each pixel to the bits of paths traced one by one
+// (`alone`, rendered with o.path_batching none).
+void check_batchings_agree(const SceneDesc& scene, RenderOptions o, const RenderResult& alone) {
   for (PathBatching batching : {PathBatching::camera_rays, PathBatching::all_rays}) {
     CAPTURE(int(batching));
     o.path_batching = batching;
@@ -44,6 +42,14 @@ color3 centre_colour(const SceneDesc& scene, RenderMode mode) {
     for (size_t i = 0; i < alone.film.pixels.size(); ++i)
       for (int c = 0; c < 3; ++c) CHECK(together.film.pixels[i].sum[c] == alone.film.pixels[i].sum[c]);
   }
+}
+
+color3 centre_colour(const SceneDesc& scene, RenderMode mode) {
+  RenderOptions o;
+  o.width = 9, o.height = 9, o.spp = 2, o.mode = mode, o.env_color = color3{0, 0, 1};
+  o.path_batching = PathBatching::none;
+  RenderResult alone = render_scene(scene, o);
+  check_batchings_agree(scene, o, alone);
   return pixel_mean(alone.film.at(4, 4));
 }
 
@@ -107,12 +113,6 @@ TEST_CASE("single-sided: shadow rays and see-through camera rays meet faces as t
     color3 veiled = pixel_mean(alone.film.at(12, 18));
     CHECK(veiled.x > 0);
     CHECK(veiled.y == doctest::Approx(veiled.x).epsilon(1e-5));
-    for (PathBatching batching : {PathBatching::camera_rays, PathBatching::all_rays}) {
-      CAPTURE(int(batching));
-      o.path_batching = batching;
-      RenderResult together = render_scene(scene, o);
-      for (size_t i = 0; i < alone.film.pixels.size(); ++i)
-        for (int c = 0; c < 3; ++c) CHECK(together.film.pixels[i].sum[c] == alone.film.pixels[i].sum[c]);
-    }
+    check_batchings_agree(scene, o, alone);
   }
 }
