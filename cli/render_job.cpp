@@ -77,12 +77,11 @@ TemporaryFile& output_file(OutputSet& outputs, const std::string& target, const 
 std::string dropped_light(const SceneDesc& scene, const ResolvedSettings& s) {
   bool ambient = false, delta = false, emitters = false;
   for (const LightDesc& l : scene.lights) (l.kind == LightKind::ambient ? ambient : delta) = true;
-  for (const MaterialDesc& m : scene.materials) emitters |= max_component(m.emission) > lamp_radiance;
-  bool environment = !is_black(s.environment.color) || !s.environment.map_path.empty() || s.environment.studio;
+  for (const MaterialDesc& m : scene.materials) emitters |= is_lamp(m);
   std::vector<std::string> lost;
   if (s.mode == RenderMode::whitted) {
     if (emitters) lost.push_back("emissive surfaces are only seen, they light nothing");
-    if (environment) lost.push_back("the environment is only seen behind the scene, it lights nothing");
+    if (s.environment.exists()) lost.push_back("the environment is only seen behind the scene, it lights nothing");
   } else {
     if (ambient) lost.push_back("the ambient light is ignored (only the Whitted model defines it)");
     if (delta && s.mode == RenderMode::naive)

@@ -43,6 +43,8 @@ struct EnvironmentSpec {
   bool studio = false;
   float map_scale = 1;       // the map's radiance factor (the scene's, times the intensity)
   EnvironmentFrame frame;
+  bool has_map() const { return studio || !map_path.empty(); }
+  bool exists() const { return has_map() || !is_black(color); }
 };
 
 struct LightTable {

@@ -41,8 +41,7 @@ CameraBackground camera_background_of(const ResolvedSettings& s) {
   if (s.transparent) return CameraBackground::none;
   switch (s.background) {
     case BackgroundKind::blur:
-      return s.environment.studio || !s.environment.map_path.empty() ? CameraBackground::backdrop
-                                                                      : CameraBackground::environment;
+      return s.environment.has_map() ? CameraBackground::backdrop : CameraBackground::environment;
     case BackgroundKind::environment: return CameraBackground::environment;
     case BackgroundKind::color: return CameraBackground::color;
     case BackgroundKind::transparent: break;

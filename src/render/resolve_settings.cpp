@@ -117,8 +117,6 @@ void resolve_environment(const RenderOptions& options, const SceneDesc& scene, R
   e.frame = make_environment_frame(r.world_up, options.env_rotation_degrees);
 }
 
-bool has_environment(const EnvironmentSpec& e) { return !is_black(e.color) || !e.map_path.empty() || e.studio; }
-
 }  // namespace
 
 ResolvedSettings resolve_settings(const PreparedScene& prepared, const RenderOptions& options) {
@@ -132,7 +130,7 @@ ResolvedSettings resolve_settings(const PreparedScene& prepared, const RenderOpt
 
   resolve_environment(options, scene, r);
   RenderMode mode = options.mode ? *options.mode : scene.settings.mode.value_or(RenderMode::auto_select);
-  if (mode == RenderMode::auto_select) mode = choose_auto_mode(scene, has_environment(r.environment), r.mode_reason);
+  if (mode == RenderMode::auto_select) mode = choose_auto_mode(scene, r.environment.exists(), r.mode_reason);
   r.mode = mode;
   bool whitted = mode == RenderMode::whitted;
   r.spp = options.spp ? *options.spp : scene.settings.spp.value_or(whitted ? default_whitted_spp : default_path_spp);
@@ -161,7 +159,7 @@ ResolvedSettings resolve_settings(const PreparedScene& prepared, const RenderOpt
     throw std::invalid_argument("--filter-width must be in (0, " + std::to_string(int(max_filter_width)) + "] pixels");
 
   uint32_t needed = prepared.effects.mask;
-  if (has_environment(r.environment)) needed |= effect_environment | effect_shadows | effect_indirect;
+  if (r.environment.exists()) needed |= effect_environment | effect_shadows | effect_indirect;
   else if (options.env_color || options.env_preset) needed &= ~effect_environment;
   r.effects = options.effects.empty() ? needed : apply_effects_override(needed, options.effects);
   r.compiled_variant = options.effects.find("all") != std::string::npos ? effect_all : smallest_variant(r.effects);

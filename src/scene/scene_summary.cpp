@@ -47,7 +47,7 @@ bool light_is_enclosed(const SceneAccel& accel, vec3 position) {
 bool lights_itself(const SceneDesc& scene) {
   if (!scene.lights.empty() || !is_black(scene.environment.color) || !scene.environment.map_path.empty()) return true;
   for (const MaterialDesc& m : scene.materials)
-    if (max_component(m.emission) > lamp_radiance) return true;
+    if (is_lamp(m)) return true;
   return false;
 }
 

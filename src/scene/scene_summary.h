@@ -23,6 +23,7 @@ struct SceneSummary {
 // brighter surface is a lamp (KHR_materials_emissive_strength, a .scene emitter), while a
 // dimmer one is a glowing detail (a screen, a label) that cannot light a model by itself.
 constexpr float lamp_radiance = 1.0f;
+inline bool is_lamp(const MaterialDesc& m) { return max_component(m.emission) > lamp_radiance; }
 
 // True when the file lights itself: a light, an environment, or an emissive material brighter
 // than lamp_radiance. Files that do not get the built-in studio environment by default.
