@@ -8,6 +8,7 @@
 #include "animation_flags.h"
 #include "command_line.h"
 #include "commands.h"
+#include "display_flag.h"
 #include "load_scene.h"
 #include "option_parsing.h"
 #include "render_frames.h"
@@ -87,11 +88,15 @@ int render_main(int argc, char** argv) {
   app.add_option("--split", flags.split, "How --shard cuts the work: tiles (default), samples or both");
   app.add_option("--sample-range", flags.sample_range, "Render samples A:B of each pixel (of --spp) to a shard EXR");
   app.add_flag("--skip-existing", skip_existing, "Exit at once when -o already holds this shard, complete");
+  std::string display_address;
+  add_display_server_flag(app, display_address);
   app.set_version_flag("--version", "radiant " RADIANT_VERSION);
+  std::shared_ptr<DisplayServer> display;
   try {
     parse_arguments(app, argc, argv);
     flags.finish();
     animation.finish(load_options);
+    display = make_display_server(display_address);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);
     std::cerr << "radiant render: " << e.what() << "\n";
@@ -107,6 +112,7 @@ int render_main(int argc, char** argv) {
   job.stats_path = stats_path;
   job.command_line = command_line_text(argc, argv);
   job.write_metadata = !flags.no_metadata;
+  job.display = display;
   if (!format.empty()) {
     if (!is_standard_output(output)) {
       std::cerr << "radiant render: --format is for -o - (the extension of '" << output << "' names its format)\n";

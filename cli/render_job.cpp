@@ -6,6 +6,7 @@
 #include <chrono>
 #include <iostream>
 
+#include "display_flag.h"
 #include "image/image_io.h"
 #include "interrupts.h"
 #include "option_parsing.h"
@@ -122,7 +123,14 @@ void run_render_job(const std::string& scene_path, PreparedScene& prepared, cons
     }
   }
   if (!job.options.quiet && job.notes) print_render_notes(scene_path, prepared, resolve_settings(prepared, job.options));
+  if (job.display)
+    options.on_pass = [&](const Film& film, uint32_t) {
+      show_film(*job.display, display_name(job.output), film, options.quiet);
+    };
   RenderResult result = render_prepared(prepared, options);
+  // A stopped render ends before its pass is reported: the viewer still gets what was rendered.
+  if (job.display && (result.stats.interrupted || result.stats.stopped_by_time_limit))
+    show_film(*job.display, display_name(job.output), result.film, options.quiet);
   if (!job.options.quiet)
     for (const std::string& warning : result.warnings) std::cerr << "radiant: warning: " << warning << "\n";
   if (result.stats.interrupted && result.stats.samples == 0) throw_if_interrupted();  // nothing to save

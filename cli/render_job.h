@@ -2,10 +2,12 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "image/display_server.h"
 #include "output/output_paths.h"
 #include "render/render.h"
 #include "render_report.h"
@@ -27,6 +29,8 @@ struct RenderJob {
   // A batch line's moment of the scene's animation (--time, --frame): unset = the loaded scene.
   std::optional<double> animation_time;
   std::string animation;
+  // --display-server: the viewer each pass is shown in, shared by the command's renders.
+  std::shared_ptr<DisplayServer> display;
 };
 
 // A name whose extension names the image format: the output, or for `-o -` "-.FORMAT".

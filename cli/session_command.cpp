@@ -25,6 +25,7 @@
 
 #include "command_line.h"
 #include "commands.h"
+#include "display_flag.h"
 #include "load_scene.h"
 #include "option_parsing.h"
 #include "output/output_set.h"
@@ -73,6 +74,7 @@ vec3 parse_numbers(const std::vector<std::string>& words) {
 
 class Session {
  public:
+  void show_renders_in(std::shared_ptr<DisplayServer> display) { display_ = std::move(display); }
   Session(std::string output, SessionSettings settings, uint64_t memory_limit, std::string memory_source,
           bool allow_external)
       : output_(std::move(output)),
@@ -184,6 +186,7 @@ class Session {
     RenderJob job = settings_.job(output_, fs::current_path());
     job.options.memory = &budget_;
     job.options.progress = false;  // stdout reports each render; stderr stays for errors
+    job.display = display_;
     // The image records the `render` command that makes it again.
     std::vector<std::string> words = {"render", scene_path_, "-o", output_};
     for (const std::string& word : settings_.flag_words()) words.push_back(word);
@@ -248,6 +251,7 @@ class Session {
   std::string scene_path_;
   MemoryCharge scene_memory_;  // what loading the scene charged to the budget
   std::optional<SessionView> view_;  // set once a command moved or turned the camera
+  std::shared_ptr<DisplayServer> display_;  // --display-server: every view shown as it converges
   std::mutex print_mutex_;
   std::atomic<int> last_failure_{exit_ok};
   SessionRenderer renderer_;  // last: its thread stops before the rest goes
@@ -267,11 +271,15 @@ int session_main(int argc, char** argv) {
   app.add_option("-o,--output", output, "The image each render rewrites (.png, .exr, ...)")->required();
   app.add_option("--max-memory", max_memory, "Memory cap in GiB for the session (default 1/4 of RAM)");
   app.add_flag("--allow-external-files", allow_external, "Let scene files refer to files outside their folder");
+  std::string display_address;
+  add_display_server_flag(app, display_address);
   app.allow_extras();
   SessionSettings settings;
   std::optional<uint64_t> max_memory_bytes;
+  std::shared_ptr<DisplayServer> display;
   try {
     app.parse(argc, argv);  // the render flags among them are checked as settings
+    display = make_display_server(display_address);
     if (is_standard_output(output)) throw std::invalid_argument("-o -: a session rewrites its image after every pass; name a file");
     if (!max_memory.empty()) max_memory_bytes = parse_memory_limit("--max-memory", max_memory);
     settings.set_output(output);
@@ -291,6 +299,7 @@ int session_main(int argc, char** argv) {
 
   Session session(output, settings, max_memory_bytes.value_or(default_memory_limit()),
                   max_memory_bytes ? "--max-memory" : default_memory_limit_source, allow_external);
+  session.show_renders_in(display);
   std::vector<std::string> first;
   if (!scene_path.empty()) first = {"render", scene_path};
   bool interactive = isatty(STDIN_FILENO);

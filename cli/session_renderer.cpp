@@ -3,6 +3,7 @@
 #include <chrono>
 #include <new>
 
+#include "display_flag.h"
 #include "output/output_set.h"
 #include "render_report.h"
 
@@ -92,7 +93,9 @@ void SessionRenderer::render(const SessionRequest& request) {
     // Each pass short of the last replaces the image, so a viewer that reloads shows it sharpen;
     // the finished render is written below, with its statistics.
     options.on_pass = [&](const Film& film, uint32_t samples) {
-      if (samples >= total || stop_) return;
+      if (stop_) return;
+      if (job.display) show_film(*job.display, display_name(job.output), film, job.options.quiet);
+      if (samples >= total) return;
       RenderResult so_far;  // rays are counted when the render ends: a pass records none
       so_far.settings = settings;
       so_far.settings.spp = int(samples);
