@@ -23,11 +23,11 @@
 #include "batch_script.h"
 #include "command_line.h"
 #include "commands.h"
-#include "display_flag.h"
 #include "lights/light_table.h"
 #include "load_scene.h"
 #include "option_parsing.h"
 #include "render_job.h"
+#include "watch_flags.h"
 #include "render_frames.h"
 #include "render_line.h"
 
@@ -291,16 +291,16 @@ int batch_main(int argc, char** argv) {
                  "Memory cap in GiB for the scenes loaded and every render (default 1/4 of RAM)");
   std::string shard_text;
   app.add_option("--shard", shard_text, "Render only render lines I, I+K, I+2K, ... (from 0) of the script: I/K");
-  std::string display_address;
-  add_display_server_flag(app, display_address);
+  WatchFlags watch;
+  watch.bind(app, false);
   std::optional<uint64_t> max_memory_bytes;
   std::optional<ShardSpec> shard;
-  std::shared_ptr<DisplayServer> display;
+  Watchers watchers;
   try {
     parse_arguments(app, argc, argv);
     if (!max_memory.empty()) max_memory_bytes = parse_memory_limit("--max-memory", max_memory);
     if (!shard_text.empty()) shard = parse_shard("--shard", shard_text);
-    display = make_display_server(display_address);
+    watchers = make_watchers(watch);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);
     std::cerr << "radiant batch: " << e.what() << "\n";
@@ -324,12 +324,12 @@ int batch_main(int argc, char** argv) {
 
   if (shard) steps = shard_steps(steps, *shard);
   try {
-    std::function<RenderJob(RenderJob)> show_in_display;
-    if (display) show_in_display = [&](RenderJob job) {
-      job.display = display;
+    std::function<RenderJob(RenderJob)> watch_each;
+    if (watchers.any()) watch_each = [&](RenderJob job) {
+      job.watchers = watchers;
       return job;
     };
-    run_script(steps, script_path, {quiet, allow_external, max_memory_bytes, show_in_display});
+    run_script(steps, script_path, {quiet, allow_external, max_memory_bytes, watch_each});
   } catch (const std::exception& e) {
     std::cerr << "radiant batch: " << e.what() << "\n";
     return exit_failure;

@@ -8,11 +8,11 @@
 #include "animation_flags.h"
 #include "command_line.h"
 #include "commands.h"
-#include "display_flag.h"
 #include "load_scene.h"
 #include "option_parsing.h"
 #include "render_frames.h"
 #include "render_job.h"
+#include "watch_flags.h"
 #include "shard_output.h"
 #include "shard_request.h"
 #include "image/image_io.h"
@@ -88,19 +88,22 @@ int render_main(int argc, char** argv) {
   app.add_option("--split", flags.split, "How --shard cuts the work: tiles (default), samples or both");
   app.add_option("--sample-range", flags.sample_range, "Render samples A:B of each pixel (of --spp) to a shard EXR");
   app.add_flag("--skip-existing", skip_existing, "Exit at once when -o already holds this shard, complete");
-  std::string display_address;
-  add_display_server_flag(app, display_address);
+  WatchFlags watch;
+  watch.bind(app, true);
   app.set_version_flag("--version", "radiant " RADIANT_VERSION);
-  std::shared_ptr<DisplayServer> display;
+  Watchers watchers;
   try {
     parse_arguments(app, argc, argv);
     flags.finish();
     animation.finish(load_options);
-    display = make_display_server(display_address);
+    watchers = make_watchers(watch);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);
     std::cerr << "radiant render: " << e.what() << "\n";
     return exit_usage;
+  } catch (const std::exception& e) {  // the page's port cannot be listened on
+    std::cerr << "radiant render: " << e.what() << "\n";
+    return exit_failure;
   }
   RenderOptions& options = flags.options;
   options.progress = isatty(STDERR_FILENO) && !options.quiet;
@@ -112,7 +115,7 @@ int render_main(int argc, char** argv) {
   job.stats_path = stats_path;
   job.command_line = command_line_text(argc, argv);
   job.write_metadata = !flags.no_metadata;
-  job.display = display;
+  job.watchers = watchers;
   if (!format.empty()) {
     if (!is_standard_output(output)) {
       std::cerr << "radiant render: --format is for -o - (the extension of '" << output << "' names its format)\n";

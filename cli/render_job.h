@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "image/display_server.h"
 #include "output/output_paths.h"
 #include "render/render.h"
 #include "render_report.h"
+#include "watch_flags.h"
 
 namespace radiant::cli {
 
@@ -29,8 +29,8 @@ struct RenderJob {
   // A batch line's moment of the scene's animation (--time, --frame): unset = the loaded scene.
   std::optional<double> animation_time;
   std::string animation;
-  // --display-server: the viewer each pass is shown in, shared by the command's renders.
-  std::shared_ptr<DisplayServer> display;
+  // --display-server and --serve: where each pass is shown, shared by the command's renders.
+  Watchers watchers;
 };
 
 // A name whose extension names the image format: the output, or for `-o -` "-.FORMAT".

@@ -3,9 +3,9 @@
 #include <chrono>
 #include <new>
 
-#include "display_flag.h"
 #include "output/output_set.h"
 #include "render_report.h"
+#include "watch_flags.h"
 
 namespace radiant::cli {
 
@@ -94,7 +94,8 @@ void SessionRenderer::render(const SessionRequest& request) {
     // the finished render is written below, with its statistics.
     options.on_pass = [&](const Film& film, uint32_t samples) {
       if (stop_) return;
-      if (job.display) show_film(*job.display, display_name(job.output), film, job.options.quiet);
+      job.watchers.show(job.output, film, samples, total, std::chrono::duration<double>(Clock::now() - start).count(),
+                        {job.options.exposure, settings.view}, job.options.quiet);
       if (samples >= total) return;
       RenderResult so_far;  // rays are counted when the render ends: a pass records none
       so_far.settings = settings;
@@ -126,6 +127,7 @@ void SessionRenderer::render(const SessionRequest& request) {
       std::lock_guard lock(mutex_);
       last_ = finished;
     }
+    job.watchers.finished();
     report_(request.line, "", &finished);
   } catch (const std::bad_alloc&) {
     report_(request.line, out_of_memory_message(request.scene_path, "rendering", *request.job.options.memory), nullptr);
