@@ -16,8 +16,6 @@ namespace {
 
 // A command is one line; the largest a session takes (a `render` with a long path) fits easily.
 constexpr size_t max_command_bytes = 4096;
-// Requests per second the page answers before it says 429: its own polling takes four.
-constexpr int max_requests_per_second = 100;
 // A client that sends or reads nothing for this long is dropped, so slow clients cannot pile up.
 constexpr time_t socket_timeout_seconds = 5;
 
@@ -50,18 +48,19 @@ struct LivePage::State {
   uint32_t samples = 0, target = 0;
   double elapsed = 0, eta = -1;
   std::chrono::steady_clock::time_point window_start = std::chrono::steady_clock::now();
-  int requests_in_window = 0;
+  int requests_in_window = 0, requests_per_second = 0;
 
   // False when the last second has seen too many requests.
   bool admit() {
     std::lock_guard lock(mutex);
     auto now = std::chrono::steady_clock::now();
     if (now - window_start >= std::chrono::seconds(1)) window_start = now, requests_in_window = 0;
-    return ++requests_in_window <= max_requests_per_second;
+    return ++requests_in_window <= requests_per_second;
   }
 };
 
-LivePage::LivePage(const std::string& address, std::function<void(const std::string&)> on_command)
+LivePage::LivePage(const std::string& address, std::function<void(const std::string&)> on_command,
+                   int requests_per_second)
     : state_(std::make_unique<State>()) {
   std::string host = "127.0.0.1", port_text = address;
   if (size_t colon = address.rfind(':'); colon != std::string::npos) {
@@ -75,6 +74,7 @@ LivePage::LivePage(const std::string& address, std::function<void(const std::str
     throw std::invalid_argument("--serve: '" + address + "' is not PORT or HOST:PORT");
   State& s = *state_;
   s.host = host;
+  s.requests_per_second = requests_per_second;
   s.on_command = std::move(on_command);
   s.server.set_payload_max_length(max_command_bytes);
   s.server.set_read_timeout(socket_timeout_seconds, 0);

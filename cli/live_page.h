@@ -18,7 +18,9 @@ class LivePage {
   // Listens on `address`: "PORT" binds to 127.0.0.1, "HOST:PORT" to that host (0 picks a free
   // port). std::invalid_argument for an address that is not one, std::runtime_error when it
   // cannot be bound. With `on_command`, the page offers a command line whose lines go there.
-  LivePage(const std::string& address, std::function<void(const std::string&)> on_command);
+  // Past `requests_per_second` it answers 429 (its own polling takes four).
+  LivePage(const std::string& address, std::function<void(const std::string&)> on_command,
+           int requests_per_second = 100);
   ~LivePage();
   LivePage(const LivePage&) = delete;
   LivePage& operator=(const LivePage&) = delete;

@@ -9,7 +9,7 @@ build_dir=${1:-build-fuzz}
 seconds=${2:-60}
 shift 2 || shift $#
 targets=("$@")
-((${#targets[@]})) || targets=(scene gltf render obj batch image)
+((${#targets[@]})) || targets=(scene gltf render obj batch image page)
 artifacts="$build_dir/fuzz-artifacts"
 mkdir -p "$artifacts"
 source scripts/sanitizer-env.sh

@@ -39,6 +39,8 @@ FuzzOutcome run_render_target(const std::filesystem::path& folder, const std::st
 FuzzOutcome run_obj_target(const std::filesystem::path& folder, const std::string& bytes);
 FuzzOutcome run_batch_target(const std::filesystem::path& folder, const std::string& bytes);
 FuzzOutcome run_image_target(const std::filesystem::path& folder, const std::string& bytes);
+// The page target's input is a raw HTTP request stream to --serve's page.
+FuzzOutcome run_page_target(const std::filesystem::path& folder, const std::string& bytes);
 
 // Every target, in the order scripts/fuzz.sh runs them.
 const std::vector<FuzzTarget>& fuzz_targets();
