@@ -28,6 +28,12 @@ FileImage read_file_image(const std::string& path, MemoryBudget* budget) {
                  size_t(std::max(image.header.channels, 0));
   if (image.header.depth > 1 || image.header.deep)
     throw CompareError(path + ": volume and deep images cannot be compared");
+  // What is compared must be what a viewer shows: refused rather than compared as stored.
+  if (image.header.more_subimages)
+    throw CompareError(path + ": it has more than one part (or page); compare reads one: extract the part to compare");
+  if (image.header.orientation != 1)
+    throw CompareError(path + ": its Orientation " + std::to_string(image.header.orientation) +
+                       " flips or rotates it for display; compare images stored as they are shown");
   if (count == 0 || count > max_values)
     throw CompareError(path + ": image size " + std::to_string(image.header.width) + "x" +
                        std::to_string(image.header.height) + "x" +
@@ -37,6 +43,23 @@ FileImage read_file_image(const std::string& path, MemoryBudget* budget) {
   if (!source->read(image.header.channels, PixelType::float32, image.pixels.data()))
     throw CompareError(path + ": cannot read pixels: " + source->error());
   return image;
+}
+
+ImageWindow data_window(const ImageHeader& header) { return {header.x, header.y, header.width, header.height}; }
+
+ImageWindow display_window(const ImageHeader& header) {
+  if (header.full_width <= 0 || header.full_height <= 0) return data_window(header);
+  return {header.full_x, header.full_y, header.full_width, header.full_height};
+}
+
+std::string window_text(const ImageWindow& w) {
+  return std::to_string(w.width) + "x" + std::to_string(w.height) + " at (" + std::to_string(w.x) + ", " +
+         std::to_string(w.y) + ")";
+}
+
+// "data window 8x8 at (2, 0) in display window 8x8 at (0, 0)"
+std::string windows_text(const ImageWindow& data, const ImageWindow& display) {
+  return "data window " + window_text(data) + " in display window " + window_text(display);
 }
 
 int channel_index(const ImageHeader& header, const std::string& name) {
@@ -113,6 +136,8 @@ CompareImage read_compare_image(const std::string& path, MemoryBudget* budget) {
   image.path = path;
   image.width = file.header.width;
   image.height = file.header.height;
+  image.data_window = data_window(file.header);
+  image.display_window = display_window(file.header);
   image.color_space = file.header.color_space;
   for (int c : source) image.channel_names.push_back(file.header.channel_names[c]);
   std::vector<int> variance = variance_channels(file.header, image, color_count);
@@ -130,6 +155,9 @@ std::vector<float> read_variance_image(const std::string& path, const CompareIma
     throw CompareError(path + ": variance image is " + std::to_string(file.header.width) + "x" +
                        std::to_string(file.header.height) + " but " + image.path + " is " +
                        std::to_string(image.width) + "x" + std::to_string(image.height));
+  if (data_window(file.header) != image.data_window || display_window(file.header) != image.display_window)
+    throw CompareError(path + ": its " + windows_text(data_window(file.header), display_window(file.header)) +
+                       " differs from " + image.path + "'s " + windows_text(image.data_window, image.display_window));
   int color_count = image.color_channels();
   std::vector<int> source = variance_channels(file.header, image, color_count);
   if (source.empty()) source = color_channels(file.header);
@@ -159,6 +187,10 @@ void check_comparable(const CompareImage& a, const CompareImage& b) {
     throw CompareError("channel counts differ: " + a.path + " has " +
                        std::to_string(a.channels()) + " compared channels, " + b.path + " has " +
                        std::to_string(b.channels()));
+  if (a.data_window != b.data_window || a.display_window != b.display_window)
+    throw CompareError("image windows differ: " + a.path + " has its " + windows_text(a.data_window, a.display_window) +
+                       ", " + b.path + " its " + windows_text(b.data_window, b.display_window) +
+                       " (a viewer shows them in different places)");
 }
 
 }  // namespace radiant
