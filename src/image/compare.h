@@ -35,7 +35,7 @@ struct ImageWindow {
 struct CompareImage {
   std::string path;
   int width = 0, height = 0;
-  // Both {0, 0, width, height} unless the file says otherwise.
+  // As the file says; a window of width 0 (an image made in memory) is {0, 0, width, height}.
   ImageWindow data_window, display_window;
   std::vector<std::string> channel_names;  // the compared channels: R,G,B[,A] or the first ones
   std::vector<float> values;               // width*height*channel_names.size(), row-major

@@ -52,6 +52,11 @@ ImageWindow display_window(const ImageHeader& header) {
   return {header.full_x, header.full_y, header.full_width, header.full_height};
 }
 
+// `window`, or the whole image where none was given.
+ImageWindow window_or_image(const ImageWindow& window, const CompareImage& image) {
+  return window.width > 0 ? window : ImageWindow{0, 0, image.width, image.height};
+}
+
 std::string window_text(const ImageWindow& w) {
   return std::to_string(w.width) + "x" + std::to_string(w.height) + " at (" + std::to_string(w.x) + ", " +
          std::to_string(w.y) + ")";
@@ -155,9 +160,10 @@ std::vector<float> read_variance_image(const std::string& path, const CompareIma
     throw CompareError(path + ": variance image is " + std::to_string(file.header.width) + "x" +
                        std::to_string(file.header.height) + " but " + image.path + " is " +
                        std::to_string(image.width) + "x" + std::to_string(image.height));
-  if (data_window(file.header) != image.data_window || display_window(file.header) != image.display_window)
+  ImageWindow data = window_or_image(image.data_window, image), display = window_or_image(image.display_window, image);
+  if (data_window(file.header) != data || display_window(file.header) != display)
     throw CompareError(path + ": its " + windows_text(data_window(file.header), display_window(file.header)) +
-                       " differs from " + image.path + "'s " + windows_text(image.data_window, image.display_window));
+                       " differs from " + image.path + "'s " + windows_text(data, display));
   int color_count = image.color_channels();
   std::vector<int> source = variance_channels(file.header, image, color_count);
   if (source.empty()) source = color_channels(file.header);
@@ -187,10 +193,11 @@ void check_comparable(const CompareImage& a, const CompareImage& b) {
     throw CompareError("channel counts differ: " + a.path + " has " +
                        std::to_string(a.channels()) + " compared channels, " + b.path + " has " +
                        std::to_string(b.channels()));
-  if (a.data_window != b.data_window || a.display_window != b.display_window)
-    throw CompareError("image windows differ: " + a.path + " has its " + windows_text(a.data_window, a.display_window) +
-                       ", " + b.path + " its " + windows_text(b.data_window, b.display_window) +
-                       " (a viewer shows them in different places)");
+  ImageWindow data_a = window_or_image(a.data_window, a), display_a = window_or_image(a.display_window, a);
+  ImageWindow data_b = window_or_image(b.data_window, b), display_b = window_or_image(b.display_window, b);
+  if (data_a != data_b || display_a != display_b)
+    throw CompareError("image windows differ: " + a.path + " has its " + windows_text(data_a, display_a) + ", " +
+                       b.path + " its " + windows_text(data_b, display_b) + " (a viewer shows them in different places)");
 }
 
 }  // namespace radiant

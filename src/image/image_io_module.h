@@ -35,7 +35,7 @@ struct ImageHeader {
   ImageMetadata metadata;   // every string attribute
   // The TIFF/Exif Orientation: 1 is stored as shown; 2 to 8 are flipped or rotated for display.
   int orientation = 1;
-  // More than subimage 0: a multi-part EXR, a multi-page TIFF.
+  // More than subimage 0: a multi-part EXR, a multi-page TIFF (other formats say false).
   bool more_subimages = false;
 };
 
