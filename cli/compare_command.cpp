@@ -1,8 +1,10 @@
 // `radiant compare A B`: image comparison for CI regression jobs (docs/compare.md).
 #include <CLI/CLI.hpp>
 
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -42,6 +44,7 @@ struct CompareReport {
   std::optional<ZTestResult> z_test;
   Verdict verdict = Verdict::pass;
   std::string nonfinite;  // why a non-finite statistic failed the comparison, or ""
+  std::string implausible;  // the first variance beyond plausible_variance, or ""
 };
 
 void add_options(CLI::App& app, CompareOptions& options) {
@@ -115,6 +118,8 @@ CompareReport compare_files(const CompareOptions& options, MemoryBudget& budget)
   }
   if (report.metrics.nonfinite_pixels > 0 || (report.z_test && report.z_test->nonfinite_values > 0))
     report.nonfinite = first_nonfinite(report.a, report.b);
+  if (report.z_test && report.z_test->implausible_values > 0)
+    report.implausible = first_implausible_variance(report.a, report.b, options.z_test.max_relative_deviation);
   return report;
 }
 
@@ -194,10 +199,13 @@ void print_json(std::ostream& out, const CompareOptions& options, const CompareR
                    {"epsilon", json_number(options.z_test.epsilon)},
                    {"bias_z", json_number(z->bias_z)},
                    {"bias_p_value", json_number(z->bias_p_value)},
-                   {"bias_test", options.z_test.bias_test}};
+                   {"bias_test", options.z_test.bias_test},
+                   {"max_relative_deviation", json_number(options.z_test.max_relative_deviation)},
+                   {"implausible_values", z->implausible_values}};
   else
     j["z_test"] = nullptr;
   j["nonfinite"] = report.nonfinite.empty() ? Json(nullptr) : Json(report.nonfinite);
+  j["implausible_variance"] = report.implausible.empty() ? Json(nullptr) : Json(report.implausible);
   j["verdict"] = verdict_name(report.verdict);
   out << json_text(j, true);
 }
@@ -237,6 +245,8 @@ void print_table(std::ostream& out, const CompareOptions& options, const Compare
         << (options.z_test.bias_test ? ", fail below alpha)\n" : ", not tested: --mc-bias)\n");
   if (!report.nonfinite.empty())
     out << "  non-finite           " << report.nonfinite << ": fails whatever the thresholds\n";
+  if (!report.implausible.empty())
+    out << "  implausible variance " << report.implausible << ": fails whatever the difference\n";
   out << "verdict: " << verdict_name(report.verdict)
       << (report.z_test ? " (Monte Carlo z-test)\n" : " (thresholds)\n");
 }
@@ -271,6 +281,8 @@ int compare_main(int argc, char** argv) {
     if (!options.diff_file.empty()) write_difference(options, report);
     if (options.json) print_json(std::cout, options, report);
     else print_table(std::cout, options, report);
+    // A report that did not arrive is an error, not a verdict (exit 1 would say "images differ").
+    if (!std::cout.flush()) throw std::runtime_error(std::string("cannot write the report to standard output: ") + std::strerror(errno));
     return report.verdict == Verdict::fail ? exit_failure : exit_ok;
   } catch (const std::exception& error) {  // CompareError, and the difference image's errors
     std::cerr << "radiant compare: " << error.what() << "\n";

@@ -7,6 +7,7 @@
 #include "image/image_io.h"
 #include "image/render_metadata.h"
 #include "json_output.h"
+#include "memory/input_file.h"
 #include "option_parsing.h"
 
 namespace radiant::cli {
@@ -15,6 +16,8 @@ namespace {
 
 // The formats radiant's readers know by their first bytes.
 bool has_image_signature(const std::string& path) {
+  uint64_t size = 0;
+  if (!input_file_problem(path, size).empty()) return false;  // a FIFO would block: the opener refuses it
   std::array<char, 4> head{};
   std::ifstream in(path, std::ios::binary);
   if (!in.read(head.data(), head.size())) return false;

@@ -1,11 +1,15 @@
-// SIGINT and SIGTERM. While work whose outputs can be saved is under way (a render and the
-// writing of its outputs), the first signal only asks it to stop: the render ends at its next
-// pixel, what was rendered is written marked partial and committed, and the command exits
-// 128 + the signal (130, 143). At any other time, and at a second signal, the handler removes
-// every temporary (src/output/temporary_registry.h) and exits at once with that code.
+// SIGINT, SIGTERM and every other catchable signal that would end the process (SIGHUP, SIGQUIT,
+// SIGUSR1, SIGALRM, ...; not the faults). While work whose outputs can be saved is under way (a
+// render and the writing of its outputs), the first signal only asks it to stop: the render ends
+// at its next pixel, what was rendered is written marked partial and committed, and the command
+// exits 128 + the signal (130, 143, 129, ...). At any other time, at a second signal, and at
+// SIGPIPE (its reader is gone: nothing more can be delivered), the handler removes every
+// temporary (src/output/temporary_registry.h) and exits at once with that code (SIGPIPE: 141).
+// A signal ignored when radiant starts (nohup) stays ignored.
 #pragma once
 
 #include <atomic>
+#include <string>
 
 namespace radiant::cli {
 
@@ -13,7 +17,7 @@ namespace radiant::cli {
 // error, reported like a full disk, rather than a death that leaves a temporary behind.
 void install_signal_handlers();
 
-// The first SIGINT or SIGTERM received, or 0. RenderOptions::stop_request points here.
+// The first of those signals received, or 0. RenderOptions::stop_request points here.
 const std::atomic<int>& interrupt_signal();
 
 // While one lives, a first signal is deferred to the work, which checks interrupt_signal().
@@ -35,7 +39,7 @@ struct Interrupted {
 // Throws Interrupted when a signal has arrived.
 void throw_if_interrupted();
 
-// "SIGINT", "SIGTERM"
-const char* signal_name(int signal);
+// "SIGINT", "SIGTERM", "SIGHUP", ...
+std::string signal_name(int signal);
 
 }  // namespace radiant::cli

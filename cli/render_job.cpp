@@ -45,6 +45,15 @@ void check_render_job_outputs(const RenderJob& job) {
   for (const NamedFile& output : render_job_outputs(job)) check_output_place(output.path);
 }
 
+void check_outputs_spare_inputs(const std::string& scene_path, const std::string& env_map,
+                                const std::vector<std::string>& scene_files, const std::vector<NamedFile>& outputs) {
+  DistinctFiles files;
+  if (!scene_path.empty()) files.add_input({"the scene", scene_path});
+  if (!env_map.empty()) files.add_input({"--env", env_map});
+  for (const std::string& path : scene_files) files.add_input({"a file the scene reads", path});
+  for (const NamedFile& output : outputs) files.add_output(output);
+}
+
 namespace {
 
 // The record the render's image or shard carries, or nothing with --no-metadata.

@@ -48,6 +48,13 @@ std::string out_of_memory_message(const std::string& scene_path, const std::stri
 // goes (std::runtime_error).
 void check_render_job_outputs(const RenderJob& job);
 
+// No output is another output, the scene file `scene_path` (if not empty), the environment map
+// `env_map` (if not empty), or any of `scene_files` (a loaded scene's input_files): what render
+// and batch check before they render, for a session's every command that writes.
+// std::invalid_argument names the two files.
+void check_outputs_spare_inputs(const std::string& scene_path, const std::string& env_map,
+                                const std::vector<std::string>& scene_files, const std::vector<NamedFile>& outputs);
+
 // What a render prints before it starts, unless quiet: a framing camera, auto mode's choice
 // and reason, and a scene that nothing lights (no light, emission or environment, flags included).
 void print_render_notes(const std::string& scene_path, const PreparedScene& prepared, const ResolvedSettings& settings);

@@ -112,8 +112,11 @@ class Session {
     } else if (command == "set" || command == "unset") {
       if (words.size() < 2) throw std::invalid_argument("expected '" + command + " NAME" + (command == "set" ? " [VALUE...]'" : "'"));
       std::string name = words[1];
-      if (command == "set") settings_.set(name, {words.begin() + 2, words.end()});
-      else if (!settings_.unset(name)) throw std::invalid_argument(name + " is not set");
+      SessionSettings trial = settings_;
+      if (command == "set") trial.set(name, {words.begin() + 2, words.end()});
+      else if (!trial.unset(name)) throw std::invalid_argument(name + " is not set");
+      check_outputs(job_of(trial));  // a refused setting is not kept
+      settings_ = trial;
       if (name == "camera" || name == "--camera") view_.reset();  // another camera: its own view
       if (scene_) render(line);
     } else if (command == "size") {
@@ -121,6 +124,7 @@ class Session {
       SessionSettings trial = settings_;
       trial.set("width", {words[1]});
       trial.set("height", {words[2]});
+      check_outputs(job_of(trial));
       settings_ = trial;
       if (scene_) render(line);
     } else if (command == "save") {
@@ -183,14 +187,25 @@ class Session {
     view_.reset();
   }
 
-  RenderJob current_job() {
-    RenderJob job = settings_.job(output_, fs::current_path());
+  RenderJob current_job() { return job_of(settings_); }
+
+  // Render and batch's checks of a job's outputs, against the loaded scene's every file.
+  void check_outputs(const RenderJob& job) {
+    check_outputs_spare_inputs(scene_path_, job.options.env_map, scene_files(), render_job_outputs(job));
+    check_render_job_outputs(job);
+  }
+
+  std::vector<std::string> scene_files() const { return scene_ ? scene_->scene->input_files : std::vector<std::string>{}; }
+
+  // The job `settings` describe, from the current view.
+  RenderJob job_of(const SessionSettings& settings) {
+    RenderJob job = settings.job(output_, fs::current_path());
     job.options.memory = &budget_;
     job.options.progress = false;  // stdout reports each render; stderr stays for errors
     job.watchers = watchers_;
     // The image records the `render` command that makes it again.
     std::vector<std::string> words = {"render", scene_path_, "-o", output_};
-    for (const std::string& word : settings_.flag_words()) words.push_back(word);
+    for (const std::string& word : settings.flag_words()) words.push_back(word);
     if (view_) {
       CameraOverride placed = camera_override(*view_);
       job.options.camera_override.look_from = placed.look_from;
@@ -216,12 +231,18 @@ class Session {
   void render(int line) {
     if (!scene_) throw std::invalid_argument("no scene yet: 'render FILE' loads one");
     SessionRequest request{line, scene_, scene_path_, current_job()};
-    check_render_job_outputs(request.job);
+    check_outputs(request.job);
     renderer_.start(std::move(request));
   }
 
+  // The last image, also onto -o, never onto the scene's files or the statistics.
   void save(const std::string& path) {
     check_image_output(path);
+    RenderJob job = current_job();
+    std::vector<NamedFile> written = {{"save", path}};
+    if (!job.stats_path.empty()) written.push_back({"--stats", job.stats_path});
+    check_outputs_spare_inputs(scene_path_, job.options.env_map, scene_files(), written);
+    check_output_place(path);
     renderer_.wait_idle();
     std::optional<FinishedRender> last = renderer_.last_finished();
     if (!last) throw std::runtime_error("nothing has finished rendering yet");
@@ -287,7 +308,9 @@ int session_main(int argc, char** argv) {
     if (!max_memory.empty()) max_memory_bytes = parse_memory_limit("--max-memory", max_memory);
     settings.set_output(output);
     settings.set_from_arguments(app.remaining());
-    check_render_job_outputs(settings.job(output, fs::current_path()));
+    RenderJob job = settings.job(output, fs::current_path());
+    check_outputs_spare_inputs(scene_path, job.options.env_map, {}, render_job_outputs(job));
+    check_render_job_outputs(job);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);
     std::cerr << "radiant session: " << e.what() << "\n";

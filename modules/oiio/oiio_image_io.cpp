@@ -62,6 +62,16 @@ class OiioImageSource final : public ImageSource {
     for (const OIIO::ParamValue& attribute : spec.extra_attribs)
       if (attribute.type() == OIIO::TypeDesc::STRING)
         header_.metadata.emplace_back(attribute.name().string(), attribute.get_string());
+    header_.orientation = spec.get_int_attribute("Orientation", 1);
+    // Only where parts are separate pictures: OpenImageIO 2.4's WebP reader cannot seek back
+    // to frame 0 of an animation. Reads ask for subimage 0 by number; the failed seek's message
+    // must not fail them.
+    std::string format = input_->format_name();
+    if (format == "openexr" || format == "tiff") {
+      header_.more_subimages = input_->seek_subimage(1, 0);
+      input_->seek_subimage(0, 0);
+      input_->geterror();
+    }
   }
   const ImageHeader& header() const override { return header_; }
   bool read(int channels, PixelType type, void* out) override { return read_channels(0, channels, type, out); }

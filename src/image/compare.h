@@ -26,9 +26,17 @@ struct CompareError : std::runtime_error {
 
 // The channels of one image that take part in a comparison, as float, in the file's own
 // encoding (8-bit PNG reads as sRGB-encoded [0,1], EXR as linear).
+// Where an image's pixels lie (EXR's data window) and what a viewer shows (its display window).
+struct ImageWindow {
+  int x = 0, y = 0, width = 0, height = 0;
+  bool operator==(const ImageWindow&) const = default;
+};
+
 struct CompareImage {
   std::string path;
   int width = 0, height = 0;
+  // As the file says; a window of width 0 (an image made in memory) is {0, 0, width, height}.
+  ImageWindow data_window, display_window;
   std::vector<std::string> channel_names;  // the compared channels: R,G,B[,A] or the first ones
   std::vector<float> values;               // width*height*channel_names.size(), row-major
   std::vector<float> variance;  // variance of each value's mean estimate, same layout; or empty
@@ -42,7 +50,8 @@ struct CompareImage {
   size_t pixel_count() const { return size_t(width) * height; }
 };
 
-// Reads `path` with OpenImageIO: its color channels (R,G,B by name, else the first three, else
+// Reads `path` with OpenImageIO: only an image stored as a viewer shows it (Orientation 1, one
+// part or page: else CompareError), its color channels (R,G,B by name, else the first three, else
 // all of a one- or two-channel image), its alpha when present, and its variance AOV (channels
 // variance.R, variance.G, variance.B) when it has one. Throws CompareError, or MemoryLimitError
 // when reading it needs more than `budget` (if not null) has left.
@@ -58,7 +67,8 @@ void match_alpha(CompareImage& a, CompareImage& b);
 std::vector<float> read_variance_image(const std::string& path, const CompareImage& image,
                                        int samples_per_pixel, MemoryBudget* budget);
 
-// Throws CompareError unless `a` and `b` have the same size and number of compared channels.
+// Throws CompareError unless `a` and `b` have the same size and number of compared channels, and
+// the same data and display windows (pixels that lie elsewhere are not the same picture).
 void check_comparable(const CompareImage& a, const CompareImage& b);
 
 // Equal numbers, equal infinities, or NaN facing NaN: values that do not differ.
@@ -127,6 +137,9 @@ struct ZTestParams {
   double alpha = 0.01;                 // chance that two renders of the same mean fail
   double allowed_fail_percent = 0.25;  // % of pixels that may fail (fireflies), as Mitsuba
   double epsilon = 5e-4;               // relative floor of the deviation: roundoff, half floats
+  // The largest standard deviation a value's mean estimate may claim, as a multiple of
+  // 1 + |value|: a larger variance excuses any difference, so it fails the test (docs/compare.md).
+  double max_relative_deviation = 4;
   // Also fail when Σz/√N (a whole-image bias, which the per-value test misses under heavy noise)
   // is significant at alpha; sound only when pixels are independent (no wide pixel filter).
   bool bias_test = false;
@@ -145,6 +158,8 @@ struct ZTestResult {
   // Values no z can be computed for: a NaN or infinite variance (which would pass any
   // difference as noise) or a nonfinite_difference. Any of them fails the test.
   size_t nonfinite_values = 0;
+  // Values whose variance is finite but beyond plausible_variance: any of them fails the test.
+  size_t implausible_values = 0;
   std::vector<float> abs_z;     // per pixel, the largest |z| over its channels
   Verdict verdict = Verdict::pass;
 };
@@ -155,6 +170,19 @@ double sidak_level(double alpha, size_t tests);
 
 // The |z| whose two-sided p-value is `p`.
 double two_sided_critical_z(double p);
+
+// Whether `variance` is one the mean estimate `value` can have: its standard deviation at most
+// max_relative_deviation · (1 + |value|). A mean of non-negative samples never has a standard
+// deviation above the mean itself (one sample carrying the whole pixel is the extreme); the
+// factor leaves room for the Mitchell filter's negative lobes and the 1 for dark pixels.
+inline bool plausible_variance(double value, double variance, double max_relative_deviation) {
+  double deviation = max_relative_deviation * (1 + std::abs(value));
+  return !(variance > deviation * deviation);
+}
+
+// The first finite variance that is not plausible_variance, for the message ("a.exr:
+// variance.R at (0, 0) is 3e+38, a deviation no mean of 0.9 has (the bound is 7.6)"); "" if none.
+std::string first_implausible_variance(const CompareImage& a, const CompareImage& b, double max_relative_deviation);
 
 // Needs a variance in at least one of `a` and `b`; a missing one counts as zero.
 ZTestResult run_z_test(const CompareImage& a, const CompareImage& b, const ZTestParams& params);

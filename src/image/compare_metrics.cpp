@@ -83,6 +83,18 @@ std::string first_nonfinite(const CompareImage& a, const CompareImage& b) {
   return "";
 }
 
+std::string first_implausible_variance(const CompareImage& a, const CompareImage& b, double max_relative_deviation) {
+  for (const CompareImage* image : {&a, &b})
+    for (size_t i = 0; i < image->variance.size(); ++i) {
+      double value = image->values[i], variance = image->variance[i];
+      if (std::isfinite(variance) && !plausible_variance(value, variance, max_relative_deviation))
+        return image->path + ": " + place_of(*image, i, "variance.") + " is " + value_text(variance) +
+               ", a deviation no mean of " + value_text(value) + " has (the bound is " +
+               value_text(max_relative_deviation * (1 + std::abs(value))) + ")";
+    }
+  return "";
+}
+
 const char* verdict_name(Verdict verdict) {
   switch (verdict) {
     case Verdict::pass: return "pass";

@@ -28,6 +28,12 @@ FileImage read_file_image(const std::string& path, MemoryBudget* budget) {
                  size_t(std::max(image.header.channels, 0));
   if (image.header.depth > 1 || image.header.deep)
     throw CompareError(path + ": volume and deep images cannot be compared");
+  // What is compared must be what a viewer shows: refused rather than compared as stored.
+  if (image.header.more_subimages)
+    throw CompareError(path + ": it has more than one part (or page); compare reads one: extract the part to compare");
+  if (image.header.orientation != 1)
+    throw CompareError(path + ": its Orientation " + std::to_string(image.header.orientation) +
+                       " flips or rotates it for display; compare images stored as they are shown");
   if (count == 0 || count > max_values)
     throw CompareError(path + ": image size " + std::to_string(image.header.width) + "x" +
                        std::to_string(image.header.height) + "x" +
@@ -37,6 +43,28 @@ FileImage read_file_image(const std::string& path, MemoryBudget* budget) {
   if (!source->read(image.header.channels, PixelType::float32, image.pixels.data()))
     throw CompareError(path + ": cannot read pixels: " + source->error());
   return image;
+}
+
+ImageWindow data_window(const ImageHeader& header) { return {header.x, header.y, header.width, header.height}; }
+
+ImageWindow display_window(const ImageHeader& header) {
+  if (header.full_width <= 0 || header.full_height <= 0) return data_window(header);
+  return {header.full_x, header.full_y, header.full_width, header.full_height};
+}
+
+// `window`, or the whole image where none was given.
+ImageWindow window_or_image(const ImageWindow& window, const CompareImage& image) {
+  return window.width > 0 ? window : ImageWindow{0, 0, image.width, image.height};
+}
+
+std::string window_text(const ImageWindow& w) {
+  return std::to_string(w.width) + "x" + std::to_string(w.height) + " at (" + std::to_string(w.x) + ", " +
+         std::to_string(w.y) + ")";
+}
+
+// "data window 8x8 at (2, 0) in display window 8x8 at (0, 0)"
+std::string windows_text(const ImageWindow& data, const ImageWindow& display) {
+  return "data window " + window_text(data) + " in display window " + window_text(display);
 }
 
 int channel_index(const ImageHeader& header, const std::string& name) {
@@ -113,6 +141,8 @@ CompareImage read_compare_image(const std::string& path, MemoryBudget* budget) {
   image.path = path;
   image.width = file.header.width;
   image.height = file.header.height;
+  image.data_window = data_window(file.header);
+  image.display_window = display_window(file.header);
   image.color_space = file.header.color_space;
   for (int c : source) image.channel_names.push_back(file.header.channel_names[c]);
   std::vector<int> variance = variance_channels(file.header, image, color_count);
@@ -130,6 +160,10 @@ std::vector<float> read_variance_image(const std::string& path, const CompareIma
     throw CompareError(path + ": variance image is " + std::to_string(file.header.width) + "x" +
                        std::to_string(file.header.height) + " but " + image.path + " is " +
                        std::to_string(image.width) + "x" + std::to_string(image.height));
+  ImageWindow data = window_or_image(image.data_window, image), display = window_or_image(image.display_window, image);
+  if (data_window(file.header) != data || display_window(file.header) != display)
+    throw CompareError(path + ": its " + windows_text(data_window(file.header), display_window(file.header)) +
+                       " differs from " + image.path + "'s " + windows_text(data, display));
   int color_count = image.color_channels();
   std::vector<int> source = variance_channels(file.header, image, color_count);
   if (source.empty()) source = color_channels(file.header);
@@ -159,6 +193,11 @@ void check_comparable(const CompareImage& a, const CompareImage& b) {
     throw CompareError("channel counts differ: " + a.path + " has " +
                        std::to_string(a.channels()) + " compared channels, " + b.path + " has " +
                        std::to_string(b.channels()));
+  ImageWindow data_a = window_or_image(a.data_window, a), display_a = window_or_image(a.display_window, a);
+  ImageWindow data_b = window_or_image(b.data_window, b), display_b = window_or_image(b.display_window, b);
+  if (data_a != data_b || display_a != display_b)
+    throw CompareError("image windows differ: " + a.path + " has its " + windows_text(data_a, display_a) + ", " +
+                       b.path + " its " + windows_text(data_b, display_b) + " (a viewer shows them in different places)");
 }
 
 }  // namespace radiant

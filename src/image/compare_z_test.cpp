@@ -17,11 +17,16 @@ double signed_z(double a, double b, double variance, double epsilon) {
   return (a - b) / std::sqrt(variance + floor * floor);
 }
 
+// Whether `image`'s own variance (if any) of value `i` is plausible for its value.
+bool plausible_side(const CompareImage& image, size_t i, const ZTestParams& params) {
+  return image.variance.empty() || plausible_variance(image.values[i], image.variance[i], params.max_relative_deviation);
+}
+
 double two_sided_p_value(double abs_z) { return std::erfc(abs_z / std::sqrt(2.0)); }
 
 Verdict z_test_verdict(const ZTestResult& result, const ZTestParams& params) {
   bool biased = params.bias_test && result.bias_p_value < params.alpha;
-  if (result.nonfinite_values > 0 || result.fail_fraction * 100 > params.allowed_fail_percent || biased)
+  if (result.nonfinite_values > 0 || result.implausible_values > 0 || result.fail_fraction * 100 > params.allowed_fail_percent || biased)
     return Verdict::fail;
   return result.fail_pixels > 0 ? Verdict::warn : Verdict::pass;
 }
@@ -59,6 +64,8 @@ ZTestResult run_z_test(const CompareImage& a, const CompareImage& b, const ZTest
                         (b.variance.empty() ? 0.0 : b.variance[i]);
       if (!std::isfinite(variance) || nonfinite_difference(a.values[i], b.values[i]))
         result.nonfinite_values += 1;
+      else if (!plausible_side(a, i, params) || !plausible_side(b, i, params))
+        result.implausible_values += 1;
       double z_signed = signed_z(a.values[i], b.values[i], variance > 0 ? variance : 0.0,
                                  params.epsilon);
       if (std::isfinite(z_signed)) {

@@ -11,9 +11,11 @@
 
 #include "image/exr_header_check.h"
 #include "image/exr_writer.h"
+#include "image/hdr_header.h"
 #include "image/packed_metadata.h"
 #include "image/png_reader.h"
 #include "image/png_writer.h"
+#include "memory/input_file.h"
 
 namespace radiant {
 
@@ -93,6 +95,12 @@ class ChargedImageSource final : public ImageSource {
 }  // namespace
 
 std::unique_ptr<ImageSource> open_image_file(const std::string& path, std::string& error, MemoryBudget* budget) {
+  // Checked before anything opens it: a FIFO or a device would block or never end.
+  uint64_t size = 0;
+  if (std::string problem = input_file_problem(path, size); !problem.empty()) {
+    error = problem;
+    return nullptr;
+  }
   MemoryCharge decoder;
   std::unique_ptr<ImageSource> source;
   if (is_png_file(path)) {
@@ -140,6 +148,7 @@ void write_image_file(TemporaryFile& file, const ImageWriteSpec& spec, const voi
     if (lowercase_extension(file.target()) != ".exr") stored.metadata = packed_metadata(spec.metadata);
     // The temporary's name keeps the target's extension, which names the format.
     error = image_io_module().write(file.descriptor(), file.path(), stored, pixels);
+    if (error.empty() && lowercase_extension(file.target()) == ".hdr") add_hdr_header_lines(file, spec.metadata);
     // Name the file the user asked for, not the temporary one.
     for (size_t at; (at = error.find(file.path())) != std::string::npos;) error.replace(at, file.path().size(), file.target());
   }

@@ -16,7 +16,9 @@ namespace radiant {
 // found or is stale.
 const ImageIoModule& image_io_module();
 
-// Opens `path` for reading. Returns null with the reason (one line) in `error`. What decoding
+// Opens `path` for reading: every image radiant reads comes through here. Returns null with the
+// reason (one line) in `error`, also for anything but a regular file (input_file.h), refused
+// before it is opened: a FIFO or a device such as /dev/zero would block or never end. What decoding
 // holds is charged to `budget` (if not null) for as long as the source lives: OpenEXR's buffers
 // before it opens the file (which allocates them), then the whole image at four bytes a channel
 // (OpenImageIO's copy while it converts); the caller charges only its own pixels. Throws

@@ -33,6 +33,10 @@ struct ImageHeader {
   std::vector<std::string> channel_names;
   std::string color_space;  // OpenImageIO's "oiio:ColorSpace": "sRGB", "Linear", ... or empty
   ImageMetadata metadata;   // every string attribute
+  // The TIFF/Exif Orientation: 1 is stored as shown; 2 to 8 are flipped or rotated for display.
+  int orientation = 1;
+  // More than subimage 0: a multi-part EXR, a multi-page TIFF (other formats say false).
+  bool more_subimages = false;
 };
 
 // An open image file: its header first, so that callers can refuse absurd sizes before any
@@ -93,7 +97,7 @@ struct ImageIoModule {
 };
 
 // Raised whenever the struct above changes, so that a stale module is refused, not misread.
-constexpr uint32_t image_io_interface_version = 4;
+constexpr uint32_t image_io_interface_version = 5;
 
 }  // namespace radiant
 

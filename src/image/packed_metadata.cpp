@@ -8,12 +8,6 @@ namespace {
 
 constexpr const char* packed_header = "radiant metadata\n";
 
-std::string escaped(const std::string& text) {
-  std::string out;
-  for (char c : text) out += c == '\\' ? "\\\\" : c == '\n' ? "\\n" : std::string(1, c);
-  return out;
-}
-
 std::string unescaped(const std::string& text) {
   std::string out;
   for (size_t i = 0; i < text.size(); ++i) {
@@ -25,13 +19,19 @@ std::string unescaped(const std::string& text) {
 
 }  // namespace
 
+std::string escaped_metadata_value(const std::string& text) {
+  std::string out;
+  for (char c : text) out += c == '\\' ? "\\\\" : c == '\n' ? "\\n" : std::string(1, c);
+  return out;
+}
+
 ImageMetadata packed_metadata(const ImageMetadata& metadata) {
   if (metadata.empty()) return {};
   ImageMetadata packed;
   std::string description = packed_header;
   for (const auto& [name, value] : metadata) {
     if (name == "Software") packed.emplace_back(name, value);
-    description += name + ": " + escaped(value) + "\n";
+    description += name + ": " + escaped_metadata_value(value) + "\n";
   }
   packed.emplace_back("ImageDescription", description);
   return packed;

@@ -13,6 +13,9 @@ namespace radiant {
 // are escaped (\n, \\).
 ImageMetadata packed_metadata(const ImageMetadata& metadata);
 
+// `text` on one line: newlines and backslashes escaped as \n and \\.
+std::string escaped_metadata_value(const std::string& text);
+
 // `metadata` with a description packed_metadata made replaced by the attributes it holds.
 // Anything else, a foreign description included, is kept as it is.
 ImageMetadata unpacked_metadata(const ImageMetadata& metadata);

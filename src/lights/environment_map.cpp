@@ -6,7 +6,6 @@
 #include <stdexcept>
 
 #include "image/image_io.h"
-#include "memory/input_file.h"
 
 namespace radiant {
 
@@ -153,9 +152,6 @@ color3 environment_backdrop(const EnvironmentMap& map, vec2 uv) {
 }
 
 std::unique_ptr<ImageSource> open_environment_map(const std::string& path, MemoryBudget* budget) {
-  uint64_t file_size = 0;
-  std::string problem = input_file_problem(path, file_size);
-  if (!problem.empty()) throw std::runtime_error(path + ": cannot read environment map: " + problem);
   std::string error;
   auto input = open_image_file(path, error, budget);
   if (!input) throw std::runtime_error(path + ": cannot read environment map: " + error);

@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "output/output_target.h"
+
 namespace radiant {
 
 namespace fs = std::filesystem;
@@ -45,9 +47,8 @@ void check_output_place(const std::string& target) {
     if (fcntl(STDOUT_FILENO, F_GETFL) == -1) fail("standard output", "it is closed");
     return;
   }
-  struct stat status;
-  if (stat(target.c_str(), &status) == 0 && S_ISDIR(status.st_mode)) fail(target, "it is a folder");
-  check_writable_folder(target, folder_of(target));
+  OutputTarget resolved = resolve_output_target(target);
+  if (resolved.kind == OutputKind::file) check_writable_folder(target, folder_of(resolved.path));
 }
 
 void check_output_folder(const std::string& folder) {

@@ -14,7 +14,9 @@ inline bool is_standard_output(const std::string& target) { return target == "-"
 
 // Throws std::runtime_error "cannot write 'TARGET': WHY" when no file can be created at
 // `target`: its folder is missing, is not a folder or is not writable by this process, or
-// `target` itself is a folder. Standard output ("-") must be open.
+// `target` itself is refused by resolve_output_target (output_target.h): a folder, a read-only
+// file, a block device... A symlink's folder is that of the file it leads to. Standard output
+// ("-") must be open.
 void check_output_place(const std::string& target);
 
 // The same for a folder that is created when missing (converge --out): `folder`, or else its

@@ -1,13 +1,16 @@
 #include "output/temporary_file.h"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <sys/random.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
+#include <vector>
 
 #include "output/temporary_registry.h"
 
@@ -35,10 +38,23 @@ std::string random_name_part() {
 // Room for the hidden name's additions within a file name's 255 bytes.
 constexpr size_t max_stem_bytes = 200;
 
+// The file that replaces `replaced` takes its permission bits (set-id bits dropped) and, for
+// root, its owner and group; a new file keeps 0666 & ~umask.
+void keep_permissions_of(const std::string& replaced, const std::string& path) {
+  struct stat status;
+  if (stat(replaced.c_str(), &status) != 0 || !S_ISREG(status.st_mode)) return;
+  // Best effort: the bytes matter more than the bits, and a failure leaves the new file's own.
+  if (geteuid() == 0) {
+    [[maybe_unused]] int owned = chown(path.c_str(), status.st_uid, status.st_gid);
+  }
+  [[maybe_unused]] int moded = chmod(path.c_str(), status.st_mode & 0777);
+}
+
 }  // namespace
 
-TemporaryFile::TemporaryFile(std::string target) : target_(std::move(target)) {
-  fs::path p(target_);
+TemporaryFile::TemporaryFile(std::string target, std::string destination)
+    : target_(std::move(target)), destination_(destination.empty() ? target_ : std::move(destination)) {
+  fs::path p(destination_);
   std::string stem = p.stem().string().substr(0, max_stem_bytes);
   // A clash with an existing name (planted or not) is not an error: another name is drawn.
   for (int attempt = 0; attempt < 100 && descriptor_ < 0; ++attempt) {
@@ -88,6 +104,35 @@ void TemporaryFile::write_at(uint64_t offset, const void* data, size_t size) {
   }
 }
 
+size_t TemporaryFile::read_at(uint64_t offset, void* data, size_t size) const {
+  if (descriptor_ < 0) fail("read after it was closed");
+  size_t done = 0;
+  while (done < size) {
+    ssize_t got = ::pread(descriptor_, static_cast<char*>(data) + done, size - done, off_t(offset + done));
+    if (got < 0 && errno == EINTR) continue;
+    if (got < 0) fail(std::strerror(errno));
+    if (got == 0) break;
+    done += size_t(got);
+  }
+  return done;
+}
+
+void TemporaryFile::insert_at(uint64_t offset, const void* data, size_t size) {
+  struct stat status;
+  if (descriptor_ < 0 || fstat(descriptor_, &status) != 0) fail("cannot find its size");
+  uint64_t end = uint64_t(status.st_size);
+  if (offset > end) fail("an insertion past its end");
+  // From the end backwards, so that no byte is overwritten before it has moved.
+  std::vector<char> chunk(1 << 16);
+  while (end > offset) {
+    size_t length = size_t(std::min<uint64_t>(chunk.size(), end - offset));
+    end -= length;
+    if (read_at(end, chunk.data(), length) != length) fail("it changed while being written");
+    write_at(end + size, chunk.data(), length);
+  }
+  write_at(offset, data, size);
+}
+
 void TemporaryFile::finish() {
   if (descriptor_ < 0) return;
   // fsync reports the errors of writes the kernel had only buffered; close those of some file
@@ -101,7 +146,8 @@ void TemporaryFile::finish() {
 
 void TemporaryFile::commit() {
   finish();
-  if (rename(path_.c_str(), target_.c_str()) != 0) fail(std::strerror(errno));
+  keep_permissions_of(destination_, path_);
+  if (rename(path_.c_str(), destination_.c_str()) != 0) fail(std::strerror(errno));
   unregister_temporary(slot_);
   slot_ = -1;
 }

@@ -1,5 +1,5 @@
 // The temporaries that exist right now, in a fixed table that a signal handler can walk: when a
-// second SIGINT/SIGTERM aborts radiant, every one is unlinked with async-signal-safe calls only.
+// signal aborts radiant, every one is unlinked with async-signal-safe calls only.
 #pragma once
 
 #include <string>

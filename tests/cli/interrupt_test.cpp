@@ -5,6 +5,7 @@
 
 #include <signal.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include <chrono>
 #include <filesystem>
@@ -96,6 +97,40 @@ TEST_CASE("interrupt: SIGTERM mid-render to HDR writes the image so far, three c
   CHECK(image.width == 32);
   CHECK(image.channels == 3);
   CHECK(hidden_files(dir.path).empty());
+  // The mark is a line of the Radiance header, before the blank line that ends it.
+  std::string bytes = read_bytes(out);
+  std::string header = bytes.substr(0, bytes.find("\n\n"));
+  CHECK(header.rfind("#?RADIANCE\n", 0) == 0);
+  CHECK(header.find("\nradiant:partial=interrupted by SIGTERM\n") != std::string::npos);
+}
+
+TEST_CASE("interrupt: SIGHUP, SIGUSR1 and SIGALRM end a render as SIGINT does: partial image, no temporary, 128 + signal") {
+  for (int signal : {SIGHUP, SIGUSR1, SIGALRM}) {
+    CAPTURE(signal);
+    ScratchDir dir("other-signals");
+    fs::path scene = dir.write("closed.scene", closed_sphere_scene);
+    fs::path out = dir.file("out.png"), stats = dir.file("stats.json");
+    CommandResult r = interrupt(args_with({"render", scene, "-o", out, "--stats", stats}, slow_render), signal);
+    CHECK(r.exit_code == 128 + signal);
+    std::string name = std::string("SIG") + sigabbrev_np(signal);
+    CHECK(image_attribute(out, "radiant:partial") == "interrupted by " + name);
+    CHECK(hidden_files(dir.path).empty());
+  }
+}
+
+TEST_CASE("interrupt: SIGPIPE on standard output (-o - | head -c 10) ends the render at once and leaves no temporary") {
+  ScratchDir dir("sigpipe");
+  fs::path scene = dir.write("sphere.scene", lit_sphere_scene);
+  fs::create_directory(dir.file("tmp"));
+  // Noise and its variance (about 190 kB of EXR), far more than a pipe's buffer: head has gone
+  // long before the last write.
+  fs::path script = dir.write("pipe.sh", "TMPDIR=" + quoted(dir.file("tmp")) + " '" RADIANT_EXE "' render " + quoted(scene) +
+                                             " -o - --format exr --mode path --env-color 1,1,1 --aov variance --width 256 --height 256 --spp 2 --quiet"
+                                             " | head -c 10 > /dev/null\n"
+                                             "echo \"${PIPESTATUS[0]}\" > " + quoted(dir.file("status.txt")) + "\n");
+  REQUIRE(std::system(("bash " + quoted(script)).c_str()) == 0);
+  CHECK(read_bytes(dir.file("status.txt")) == "141\n");
+  CHECK(fs::is_empty(dir.file("tmp")));
 }
 
 TEST_CASE("interrupt: SIGINT during a batch writes the view in progress as partial and renders no further line") {

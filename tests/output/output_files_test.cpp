@@ -10,6 +10,7 @@
 #include "output/output_paths.h"
 #include "output/output_set.h"
 #include "output/temporary_registry.h"
+#include "support/fifo_reader.h"
 #include "support/test_support.h"
 
 using namespace radiant;
@@ -131,4 +132,80 @@ TEST_CASE("temporary registry: the signal handler's sweep unlinks every live tem
   }
   CHECK(read_bytes(kept) == "committed earlier");
   CHECK(std::distance(fs::directory_iterator(dir.path), fs::directory_iterator()) == 1);
+}
+
+TEST_CASE("output target: a FIFO is streamed through to its reader and stays a FIFO") {
+  ScratchDir dir("output-fifo");
+  fs::path fifo = dir.file("pipe.json");
+  REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
+  FifoReader reader(fifo);
+  {
+    OutputSet outputs;
+    outputs.create(fifo.string()).write("streamed bytes");
+    outputs.commit();
+  }
+  CHECK(reader.finish() == "streamed bytes");
+  struct stat status;
+  REQUIRE(lstat(fifo.c_str(), &status) == 0);
+  CHECK(S_ISFIFO(status.st_mode));
+  CHECK(std::distance(fs::directory_iterator(dir.path), fs::directory_iterator()) == 1);
+}
+
+TEST_CASE("output target: a symlink to /dev/null is written through, the link and the device stay as they are") {
+  ScratchDir dir("output-null-link");
+  fs::path link = dir.file("null.json");
+  fs::create_symlink("/dev/null", link);
+  OutputSet outputs;
+  outputs.create(link.string()).write("discarded");
+  outputs.commit();
+  CHECK(fs::is_symlink(link));
+  CHECK(fs::read_symlink(link) == "/dev/null");
+  struct stat status;
+  REQUIRE(stat("/dev/null", &status) == 0);
+  CHECK(S_ISCHR(status.st_mode));
+  CHECK(std::distance(fs::directory_iterator(dir.path), fs::directory_iterator()) == 1);
+}
+
+TEST_CASE("output target: a symlink to a regular file replaces the file it leads to, the link stays a link") {
+  ScratchDir dir("output-file-link");
+  fs::create_directory(dir.file("real"));
+  fs::path file = dir.write("real/image.png", "old"), link = dir.file("image.png");
+  fs::create_symlink(file, link);
+  OutputSet outputs;
+  TemporaryFile& temporary = outputs.create(link.string());
+  CHECK(fs::path(temporary.path()).parent_path() == dir.file("real"));  // renamed within its folder
+  temporary.write("new");
+  outputs.commit();
+  CHECK(fs::is_symlink(link));
+  CHECK(read_bytes(file) == "new");
+}
+
+TEST_CASE("output target: a read-only file is refused, also for root, and left as it is") {
+  ScratchDir dir("output-read-only");
+  fs::path file = dir.write("golden.png", "golden");
+  REQUIRE(chmod(file.c_str(), 0444) == 0);
+  CHECK_THROWS_WITH(check_output_place(file.string()), ("cannot write '" + file.string() + "': it is read-only").c_str());
+  OutputSet outputs;
+  CHECK_THROWS_WITH(outputs.create(file.string()), ("cannot write '" + file.string() + "': it is read-only").c_str());
+  CHECK(read_bytes(file) == "golden");
+  struct stat status;
+  REQUIRE(stat(file.c_str(), &status) == 0);
+  CHECK((status.st_mode & 0777) == 0444);
+}
+
+TEST_CASE("output target: a dangling symlink is refused, and a replaced file keeps its permission bits") {
+  ScratchDir dir("output-dangling");
+  fs::path link = dir.file("out.png");
+  fs::create_symlink(dir.file("missing/nothing.png"), link);
+  CHECK_THROWS_WITH(check_output_place(link.string()),
+                    ("cannot write '" + link.string() + "': it is a symbolic link to a missing file").c_str());
+  fs::path kept = dir.write("kept.json", "old");
+  REQUIRE(chmod(kept.c_str(), 0640) == 0);
+  OutputSet outputs;
+  outputs.create(kept.string()).write("new");
+  outputs.commit();
+  struct stat status;
+  REQUIRE(stat(kept.c_str(), &status) == 0);
+  CHECK((status.st_mode & 0777) == 0640);
+  CHECK(read_bytes(kept) == "new");
 }
