@@ -12,7 +12,7 @@ namespace radiant {
 namespace {
 
 // NL-means bandwidths of the candidates, from trusting the colour to leaning on the features.
-const std::vector<float> candidate_bandwidths = {0.5f, 1.0f, 2.0f};
+const std::vector<float> candidate_bandwidths = {0.5f, 1.0f};
 
 // Per pixel besides the input: the raw and prefiltered features, the smoothed variance, each
 // candidate's two halves, its error maps (with the box filter's two planes) and choice maps, and
