@@ -18,6 +18,7 @@ int converge_main(int argc, char** argv);
 int batch_main(int argc, char** argv);
 int session_main(int argc, char** argv);
 int merge_main(int argc, char** argv);
+int denoise_main(int argc, char** argv);
 
 struct Command {
   const char* name;
@@ -27,7 +28,7 @@ inline const std::vector<Command>& commands() {
   static const std::vector<Command> list = {{"render", render_main},     {"info", info_main},
                                             {"compare", compare_main},   {"converge", converge_main},
                                             {"batch", batch_main},       {"merge", merge_main},
-                                            {"session", session_main}};
+                                            {"session", session_main},   {"denoise", denoise_main}};
   return list;
 }
 

@@ -20,6 +20,7 @@ void print_usage(std::ostream& out) {
          "  radiant batch FILE|-                    render many views of one loaded scene\n"
          "  radiant merge SHARD... -o OUT           combine shards (render --shard) into one image\n"
          "  radiant session [SCENE] -o OUT          render while taking commands (move, turn, set, ...)\n"
+         "  radiant denoise IN.exr -o OUT           denoise an EXR with albedo, normal, depth and halves\n"
          "  radiant --version\n";
 }
 

@@ -9,6 +9,7 @@
 
 #include "environment_flags.h"
 #include "image/view_transform.h"
+#include "render/render.h"
 #include "sampling/pixel_filter.h"
 #include "lights/light_table.h"
 #include "scene/coordinate_range.h"
@@ -185,8 +186,10 @@ std::vector<std::string> parse_aovs(const std::string& flag, const std::string& 
   std::vector<std::string> aovs;
   for (const std::string& name : split(text, ',')) {
     if (name.empty()) continue;
-    if (name != "albedo" && name != "normal" && name != "depth" && name != "variance" && name != "spp")
-      throw CLI::ValidationError(flag, "unknown AOV '" + name + "' (expected albedo, normal, depth, variance or spp)");
+    if (name != "albedo" && name != "normal" && name != "depth" && name != "variance" && name != "spp" &&
+        name != "noisy" && name != "halves")
+      throw CLI::ValidationError(
+          flag, "unknown AOV '" + name + "' (expected albedo, normal, depth, variance, spp, noisy or halves)");
     aovs.push_back(name);
   }
   return aovs;
@@ -321,6 +324,8 @@ void RenderFlags::bind(CLI::App& app, bool image_flags) {
     app.add_flag("--no-metadata", no_metadata,
                  "Record nothing about the render in the image (version, command, times...): the same render "
                  "then writes the same bytes");
+    app.add_flag("--denoise", options.denoise,
+                 "Denoise the image (feature-guided regression on albedo, normal and depth) before it is written");
     app.add_flag("--transparent", transparent,
                  "RGBA with alpha = coverage of geometry; the background is not seen but still lights the scene "
                  "(EXR premultiplied, PNG/TIFF straight alpha)");
@@ -430,6 +435,12 @@ void RenderFlags::finish() {
   }
   if (!sample_range.empty()) options.sample_range = parse_sample_range("--sample-range", sample_range);
   if (!aovs.empty()) options.aovs = parse_aovs("--aov", aovs);
+  if (wants_aov(options.aovs, "noisy") && !options.denoise)
+    throw CLI::ValidationError("--aov", "noisy is the image before denoising: it needs --denoise");
+  if (options.denoise && (!shard.empty() || !sample_range.empty()))
+    throw CLI::ValidationError("--denoise", "is a step after merge: not with --shard or --sample-range");
+  if (wants_aov(options.aovs, "halves") && (!shard.empty() || !sample_range.empty()))
+    throw CLI::ValidationError("--aov", "a shard keeps no half images: halves is not for --shard or --sample-range");
   if (!look_from.empty()) options.camera_override.look_from = parse_vec3("--look-from", look_from);
   if (!look_at.empty()) options.camera_override.look_at = parse_vec3("--look-at", look_at);
   if (!up.empty()) {

@@ -6,6 +6,8 @@
 #include <chrono>
 #include <iostream>
 
+#include "denoise/denoise.h"
+#include "denoise/denoise_channels.h"
 #include "image/image_io.h"
 #include "interrupts.h"
 #include "option_parsing.h"
@@ -59,18 +61,26 @@ namespace {
 // The record the render's image or shard carries, or nothing with --no-metadata.
 ImageMetadata job_metadata(const std::string& scene_path, const RenderJob& job, const RenderResult& result) {
   if (!job.write_metadata) return {};
-  return render_metadata(render_record(scene_path, job.command_line, job.options.seed, result));
+  RenderRecord record = render_record(scene_path, job.command_line, job.options.seed, result);
+  record.denoised = job.options.denoise;
+  return render_metadata(record);
 }
 
-// The image to write: what the film holds with its record, marked partial when a signal stopped
-// the render, and in EXR with the per-pixel sample counts, which say how far each pixel got (an
-// HDR file has no room for them, and asking would lose the image).
-OutputImage output_image(const std::string& scene_path, const RenderJob& job, const RenderResult& result) {
+// The image to write: what the film holds with its record, denoised with --denoise, marked
+// partial when a signal stopped the render, and in EXR with the per-pixel sample counts, which
+// say how far each pixel got (an HDR file has no room for them, and asking would lose the image).
+OutputImage output_image(const std::string& scene_path, const RenderJob& job, const RenderResult& result,
+                         double& denoise_seconds) {
   std::vector<std::string> aovs = job.options.aovs;
   bool partial = result.stats.interrupted;
   if (partial && is_exr_format(image_format_name(job)) && std::find(aovs.begin(), aovs.end(), "spp") == aovs.end())
     aovs.push_back("spp");
   OutputImage image = film_to_image(result.film, aovs);
+  if (job.options.denoise) {
+    auto start = std::chrono::steady_clock::now();
+    set_image_color(image, denoise_film(result.film, job.options.memory, scene_path));
+    denoise_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
   set_output_encoding(image, job.options, result.settings);
   image.metadata = job_metadata(scene_path, job, result);
   if (partial) image.metadata.emplace_back("radiant:partial", std::string("interrupted by ") + signal_name(interrupt_signal()));
@@ -162,10 +172,10 @@ void run_render_job(const std::string& scene_path, PreparedScene& prepared, cons
       if (result.stats.interrupted) info.partial = std::string("interrupted by ") + signal_name(interrupt_signal());
       write_shard(outputs.create(job.output), result.film, info, job_metadata(scene_path, job, result), options.memory);
     } else {
-      write_image(output_file(outputs, job.output, job.format), output_image(scene_path, job, result));
+      write_image(output_file(outputs, job.output, job.format), output_image(scene_path, job, result, times.denoise));
     }
   });
-  times.write = std::chrono::duration<double>(Clock::now() - write_start).count();
+  times.write = std::chrono::duration<double>(Clock::now() - write_start).count() - times.denoise;
   if (!job.stats_path.empty())
     output_file(outputs, job.stats_path, "json").write(render_stats_json(scene_path, job.output, result, times, job.frame ? &*job.frame : nullptr));
   outputs.commit();

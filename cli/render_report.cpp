@@ -23,7 +23,7 @@ std::string render_summary(const std::string& output, const RenderResult& r, con
   char buffer[512];
   std::snprintf(buffer, sizeof buffer, "wrote %s: %dx%d, %d spp (%s), %s, %.2f s, %.2f M rays/s", output.c_str(),
                 r.film.width, r.film.height, s.spp, sampler_name(s.sampler), mode_name(s.mode),
-                times.load + times.build + times.render + times.write, rays_per_second * 1e-6);
+                times.load + times.build + times.render + times.denoise + times.write, rays_per_second * 1e-6);
   std::string line = buffer;
   if (r.stats.rays.nonfinite_samples)
     line += ", " + std::to_string(r.stats.rays.nonfinite_samples) + " non-finite samples dropped";
@@ -81,8 +81,8 @@ std::string render_stats_json(const std::string& scene_path, const std::string& 
   j["indirect_paths"] = s.indirect_paths;
   j["effects"] = effect_names(s.effects);
   j["compiled_variant"] = effect_names(s.compiled_variant);
-  j["seconds"] = {{"load", t.load}, {"build", t.build}, {"render", t.render}, {"write", t.write},
-                  {"total", t.load + t.build + t.render + t.write}};
+  j["seconds"] = {{"load", t.load},       {"build", t.build}, {"render", t.render}, {"denoise", t.denoise},
+                  {"write", t.write},     {"total", t.load + t.build + t.render + t.denoise + t.write}};
   j["rays"] = {{"camera", rays.camera},         {"shadow", rays.shadow},         {"reflection", rays.reflection},
                {"refraction", rays.refraction}, {"indirect", rays.indirect}, {"total", rays.total()}};
   j["rays_per_second"] = rays_per_second;

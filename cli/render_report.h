@@ -10,6 +10,7 @@ namespace radiant::cli {
 
 struct PhaseTimes {
   double load = 0, build = 0, render = 0, write = 0;
+  double denoise = 0;  // --denoise's step, between the render and the write
 };
 
 // A frame of an animation (--frame, --frames): its number, how many times the command has read

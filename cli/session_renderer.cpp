@@ -1,8 +1,12 @@
 #include "session_renderer.h"
 
+#include <tbb/task_arena.h>
+
 #include <chrono>
 #include <new>
 
+#include "denoise/denoise.h"
+#include "denoise/denoise_channels.h"
 #include "output/output_set.h"
 #include "render_report.h"
 #include "watch_flags.h"
@@ -84,9 +88,17 @@ void SessionRenderer::render(const SessionRequest& request) {
     uint32_t total = uint32_t(settings.spp);
     auto image_of = [&](const Film& film, const RenderResult& so_far) {
       OutputImage image = film_to_image(film, job.options.aovs);
+      // Each pass denoised as it comes: a viewer sees a clean image from the first pass on.
+      if (job.options.denoise)
+        tbb::task_arena(worker_threads(options.threads)).execute([&] {
+          set_image_color(image, denoise_film(film, options.memory, request.scene_path));
+        });
       set_output_encoding(image, job.options, settings);
-      if (job.write_metadata)
-        image.metadata = render_metadata(render_record(request.scene_path, job.command_line, job.options.seed, so_far));
+      if (job.write_metadata) {
+        RenderRecord record = render_record(request.scene_path, job.command_line, job.options.seed, so_far);
+        record.denoised = job.options.denoise;
+        image.metadata = render_metadata(record);
+      }
       return image;
     };
     auto start = Clock::now();

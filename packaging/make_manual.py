@@ -9,7 +9,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-COMMANDS = ["render", "info", "compare", "converge", "batch", "session", "merge"]
+COMMANDS = ["render", "info", "compare", "converge", "batch", "session", "merge", "denoise"]
 # Flags whose value is a file, for completion.
 FILE_FLAGS = {"-o", "--output", "--stats", "--env", "--diff", "--variance", "--reference", "--out"}
 # Flags whose value is one of a few words, for completion. main() checks that each word is in

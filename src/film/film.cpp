@@ -8,7 +8,7 @@
 
 namespace radiant {
 
-Film make_film(int width, int height, bool with_aovs, bool with_alpha) {
+Film make_film(int width, int height, bool with_aovs, bool with_alpha, bool with_halves) {
   Film film;
   film.width = width;
   film.height = height;
@@ -18,6 +18,7 @@ Film make_film(int width, int height, bool with_aovs, bool with_alpha) {
   film.pixels.resize(count);
   if (with_aovs) film.aovs.resize(count);
   if (with_alpha) film.alpha.resize(count);
+  if (with_halves) film.odd_half.resize(count);
   // FilmAllocator left every element unconstructed: each thread constructs (and first touches)
   // rows of pages of its own.
   tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 4096), [&](const tbb::blocked_range<size_t>& range) {
@@ -25,6 +26,7 @@ Film make_film(int width, int height, bool with_aovs, bool with_alpha) {
       ::new (static_cast<void*>(&film.pixels[i])) FilmPixel();
       if (with_aovs) ::new (static_cast<void*>(&film.aovs[i])) FilmAovs();
       if (with_alpha) ::new (static_cast<void*>(&film.alpha[i])) ExactSum();
+      if (with_halves) ::new (static_cast<void*>(&film.odd_half[i])) FilmHalf();
     }
   });
   return film;
@@ -47,10 +49,40 @@ void add_aovs(FilmAovs& to, const FilmAovs& from) {
   to.depth.add(from.depth);
 }
 
+void add_half(FilmHalf& to, const FilmHalf& from) {
+  for (int c = 0; c < 3; ++c) to.sum[c].add(from.sum[c]);
+  to.samples += from.samples;
+  to.negative_samples += from.negative_samples;
+}
+
+void pixel_half_means(const FilmPixel& p, const FilmHalf& odd, color3& even_mean, color3& odd_mean) {
+  color3 whole = pixel_mean(p);
+  double odd_weight = double(odd.samples) - 2.0 * double(odd.negative_samples);
+  double even_weight = pixel_weight(p) - odd_weight;
+  for (int c = 0; c < 3; ++c) {
+    double odd_sum = odd.sum[c].value(), even_sum = p.sum[c].value() - odd_sum;
+    odd_mean[c] = odd_weight != 0 ? float(odd_sum / odd_weight) : whole[c];
+    even_mean[c] = even_weight != 0 ? float(even_sum / even_weight) : whole[c];
+  }
+}
+
 color3 pixel_mean(const FilmPixel& p) {
   double weight = pixel_weight(p);  // the sample count, exactly, without negative weights
   if (weight == 0) return {0, 0, 0};
   return {float(p.sum[0].value() / weight), float(p.sum[1].value() / weight), float(p.sum[2].value() / weight)};
+}
+
+color3 pixel_albedo(const FilmPixel& p, const FilmAovs& a) {
+  double n = p.samples ? double(p.samples) : 1.0;
+  return {float(a.albedo[0].value() / n), float(a.albedo[1].value() / n), float(a.albedo[2].value() / n)};
+}
+
+vec3 pixel_normal(const FilmAovs& a) {
+  return normalize(vec3{float(a.normal[0].value()), float(a.normal[1].value()), float(a.normal[2].value())});
+}
+
+float pixel_depth(const FilmPixel& p, const FilmAovs& a) {
+  return float(a.depth.value() / (p.samples ? double(p.samples) : 1.0));
 }
 
 float pixel_alpha(const Film& film, size_t i) {

@@ -29,7 +29,7 @@ Number parse_number(const std::string& name, const std::string& text) {
 
 ImageMetadata render_metadata(const RenderRecord& r) {
   double rays_per_second = r.render_seconds > 0 ? double(r.rays) / r.render_seconds : 0;
-  return {
+  ImageMetadata metadata = {
       {"Software", software_prefix + r.version},
       {"Comment", r.command_line},
       {"radiant:scene", r.scene},
@@ -41,6 +41,9 @@ ImageMetadata render_metadata(const RenderRecord& r) {
       {"radiant:rays", std::to_string(r.rays)},
       {"radiant:rays_per_second", format_number("%.0f", rays_per_second)},
   };
+  // Only a denoised image says so: every other image keeps the attributes it always had.
+  if (r.denoised) metadata.emplace_back("radiant:denoised", "yes");
+  return metadata;
 }
 
 std::optional<std::string> find_attribute(const ImageMetadata& metadata, const std::string& name) {
@@ -68,6 +71,10 @@ std::optional<RenderRecord> parse_render_metadata(const ImageMetadata& metadata)
   r.render_seconds = parse_number<double>("radiant:render_seconds", required("radiant:render_seconds"));
   if (!(r.render_seconds >= 0)) throw std::runtime_error("radiant:render_seconds is negative");
   r.rays = parse_number<uint64_t>("radiant:rays", required("radiant:rays"));
+  if (std::optional<std::string> denoised = find_attribute(metadata, "radiant:denoised")) {
+    if (*denoised != "yes") throw std::runtime_error("radiant:denoised '" + *denoised + "' is not 'yes'");
+    r.denoised = true;
+  }
   return r;
 }
 

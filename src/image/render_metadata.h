@@ -21,6 +21,7 @@ struct RenderRecord {
   uint32_t spp = 0, seed = 0;
   double render_seconds = 0;  // rendering only: loading, building and writing are not included
   uint64_t rays = 0;          // every ray traced, of any kind
+  bool denoised = false;      // the colour went through the denoiser ("radiant:denoised")
   bool operator==(const RenderRecord&) const = default;
 };
 

@@ -124,6 +124,7 @@ struct PassRunner {
   const PixelFilter& filter;
   bool want_aovs;
   bool want_coverage;  // a transparent render
+  bool want_halves;    // the odd samples summed apart, for the denoiser
   PathBatching batching;
   uint32_t seed;
   Film& film;
@@ -145,14 +146,16 @@ struct PassRunner {
     return {s.sampler, uint32_t(y) * uint32_t(s.width) + uint32_t(x), index, uint32_t(s.spp), seed};
   }
 
-  // One sample's radiance and AOV values added to pixel (x, y); a non-finite sample is dropped.
-  void add_sample_to_film(int x, int y, color3 value, const FirstHit& first_hit, bool negative, RayCounts& c) const {
+  // Sample `index`'s radiance and AOV values added to pixel (x, y); a non-finite sample is dropped.
+  void add_sample_to_film(int x, int y, uint32_t index, color3 value, const FirstHit& first_hit, bool negative,
+                          RayCounts& c) const {
     if (!is_finite(value) || (want_aovs && !is_finite(first_hit))) {
       c.nonfinite_samples++;  // dropped, AOVs and all: never reaches the film
       return;
     }
     size_t film_index = size_t(y - s.window.y0) * film.width + (x - s.window.x0);
     add_sample(film.pixels[film_index], value, negative);
+    if (want_halves && (index & 1)) add_half_sample(film.odd_half[film_index], value, negative);
     if (want_coverage) film.alpha[film_index].add(negative ? -first_hit.coverage : first_hit.coverage);
     if (want_aovs) {
       FilmAovs& a = film.aovs[film_index];
@@ -175,7 +178,7 @@ struct PassRunner {
       FirstHit first_hit;
       color3 value =
           ray ? integrator.one_path(ctx, *ray, sample, c, first_hit_wanted(first_hit), nullptr) : color3{};
-      add_sample_to_film(x, y, value, first_hit, negative, c);
+      add_sample_to_film(x, y, index, value, first_hit, negative, c);
     }
   }
 
@@ -194,6 +197,7 @@ struct PassRunner {
     static_assert(batch_tile_pixels >= 64, "a batch holds the largest tile run() makes: grain 8 x 8");
     struct Pending {
       int x, y;
+      uint32_t index;  // the sample's
       bool negative;
       int path;  // its index in the batch, or -1 where the camera sees nothing
       FirstHit first_hit;
@@ -222,7 +226,7 @@ struct PassRunner {
         int count = 0;
         for (int y = y0; y < std::min(y0 + 8, r.rows().end()); ++y)
           for (int x = x0; x < std::min(x0 + 8, r.cols().end()); ++x)
-            if (is_active(active, x, y)) tile[count++] = {x, y, false, -1, {}};
+            if (is_active(active, x, y)) tile[count++] = {x, y, 0, false, -1, {}};
         for (int i = 0; i < count; ++i) tile_pixel[i] = sample_at(tile[i].x, tile[i].y, 0).pixel;
         for (uint32_t batch_first = first; batch_first < end; batch_first += batch_samples) {
           if (stop()) return;
@@ -240,6 +244,7 @@ struct PassRunner {
             for (int i = 0; i < count; ++i) {
               Pending& p = pending[samples++];
               p = tile[i];
+              p.index = index;
               SampleContext sample = sample_at(p.x, p.y, index);
               vec2 pixel_pair = pairs ? vec2{pixel_pairs.x[i], pixel_pairs.y[i]} : vec2{stratified_x[i], stratified_y[i]};
               std::optional<Ray> ray = camera_ray(p.x, p.y, sample, pixel_pair, p.negative);
@@ -261,7 +266,7 @@ struct PassRunner {
             run_each_path(integrator.one_path, ctx, batch, paths, c);
           for (int i = 0; i < samples; ++i) {
             const Pending& p = pending[i];
-            add_sample_to_film(p.x, p.y, p.path >= 0 ? batch[p.path].radiance : color3{}, p.first_hit, p.negative, c);
+            add_sample_to_film(p.x, p.y, p.index, p.path >= 0 ? batch[p.path].radiance : color3{}, p.first_hit, p.negative, c);
           }
         }
         progress.add(uint64_t(count) * (end - first));
@@ -365,8 +370,11 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
   s = resolve_settings(prepared, options);
   int width = s.window.x1 - s.window.x0, height = s.window.y1 - s.window.y0;
   size_t channels = output_channel_names(options.aovs, s.transparent).size();
-  bool want_aovs = !options.aovs.empty();
-  result.image_memory = MemoryCharge(options.memory, render_image_bytes(width, height, channels, want_aovs, s.transparent),
+  // The denoiser reads the albedo, normal and depth sums and the two half images.
+  bool want_aovs = !options.aovs.empty() || options.denoise;
+  bool want_halves = options.denoise || wants_aov(options.aovs, "halves");
+  result.image_memory = MemoryCharge(options.memory,
+                                     render_image_bytes(width, height, channels, want_aovs, s.transparent, want_halves),
                                      prepared.scene->source_path + ": a " + std::to_string(width) + "x" +
                                          std::to_string(height) + " render with " + std::to_string(channels) +
                                          " channels (film, AOVs and output image)");
@@ -394,7 +402,7 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
   RenderContext ctx = make_context(prepared, s, lights, options, frame, pyramids);
 
   tbb::task_arena arena(worker_threads(options.threads));
-  arena.execute([&] { result.film = make_film(width, height, want_aovs, s.transparent); });
+  arena.execute([&] { result.film = make_film(width, height, want_aovs, s.transparent, want_halves); });
   result.film.x = s.window.x0, result.film.y = s.window.y0;
   result.film.full_width = s.width, result.film.full_height = s.height;
   tbb::enumerable_thread_specific<RayCounts> counts;
@@ -411,7 +419,7 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
   ProgressMeter progress(options.progress && !options.quiet, pixels * uint64_t(s.samples.end - s.samples.begin),
                          stop.deadline);
   PixelFilter filter = make_pixel_filter(s.filter, s.filter_radius);
-  PassRunner runner{ctx, s, select_integrator(s), frame, filter, want_aovs, s.transparent,
+  PassRunner runner{ctx, s, select_integrator(s), frame, filter, want_aovs, s.transparent, want_halves,
                     options.path_batching, options.seed, result.film, counts, stop, progress};
 
   std::vector<uint8_t> active;
@@ -472,20 +480,24 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
   return result;
 }
 
+bool wants_aov(const std::vector<std::string>& aovs, const std::string& name) {
+  return std::find(aovs.begin(), aovs.end(), name) != aovs.end();
+}
+
 int worker_threads(int requested) {
   // More threads than TBB's limit (the cores) are not started anyway, and asking prints a warning.
   int cores = tbb::this_task_arena::max_concurrency();
   return requested > 0 ? std::min(requested, cores) : cores;
 }
 
-uint64_t render_image_bytes(int width, int height, size_t channels, bool with_aovs, bool with_alpha) {
+uint64_t render_image_bytes(int width, int height, size_t channels, bool with_aovs, bool with_alpha, bool with_halves) {
   // A film pixel (with its AOV and coverage sums when kept), a sample count and an activity
   // byte; the output image's floats; for 8-bit formats three more floats a pixel (four with
   // alpha) and three bytes a channel: the PNG encoder's filtered rows, its compressed pieces and
   // the file they make (deflate's output exceeds its input by a fraction of a percent at most,
   // which the pixel's other bytes cover).
   uint64_t display_channels = with_alpha ? 4 : 3;
-  uint64_t per_pixel = film_pixel_bytes(with_aovs, with_alpha) + sizeof(uint32_t) + 1 + channels * sizeof(float) +
+  uint64_t per_pixel = film_pixel_bytes(with_aovs, with_alpha, with_halves) + sizeof(uint32_t) + 1 + channels * sizeof(float) +
                        display_channels * (sizeof(float) + 3);
   return saturating_multiply(uint64_t(std::max(width, 0)) * uint64_t(std::max(height, 0)), per_pixel);
 }
@@ -499,6 +511,8 @@ std::vector<std::string> output_channel_names(const std::vector<std::string>& ao
     else if (aov == "depth") channels.push_back("Z");
     else if (aov == "variance") channels.insert(channels.end(), {"variance.R", "variance.G", "variance.B"});
     else if (aov == "spp") channels.push_back("spp");
+    else if (aov == "noisy") channels.insert(channels.end(), {"noisy.R", "noisy.G", "noisy.B"});
+    else if (aov == "halves") channels.insert(channels.end(), {"even.R", "even.G", "even.B", "odd.R", "odd.G", "odd.B"});
   }
   return channels;
 }
@@ -527,19 +541,27 @@ OutputImage film_to_image(const Film& film, const std::vector<std::string>& aovs
     color3 mean = pixel_mean(p);
     *out++ = mean.x, *out++ = mean.y, *out++ = mean.z;
     if (with_alpha) *out++ = pixel_alpha(film, i);
-    double n = p.samples ? double(p.samples) : 1.0;
     static const FilmAovs no_aovs;  // a film made without AOV sums gives black AOVs
     const FilmAovs& a = film.aovs.empty() ? no_aovs : film.aovs[i];
     for (const std::string& aov : aovs) {
-      if (aov == "albedo") for (int k = 0; k < 3; ++k) *out++ = float(a.albedo[k].value() / n);
-      else if (aov == "normal") {
-        vec3 normal = normalize(vec3{float(a.normal[0].value()), float(a.normal[1].value()), float(a.normal[2].value())});
+      if (aov == "albedo") {
+        color3 albedo = pixel_albedo(p, a);
+        *out++ = albedo.x, *out++ = albedo.y, *out++ = albedo.z;
+      } else if (aov == "normal") {
+        vec3 normal = pixel_normal(a);
         *out++ = normal.x, *out++ = normal.y, *out++ = normal.z;
-      } else if (aov == "depth") *out++ = float(a.depth.value() / n);
+      } else if (aov == "depth") *out++ = pixel_depth(p, a);
       else if (aov == "variance") {
         color3 v = pixel_mean_variance(p);
         *out++ = v.x, *out++ = v.y, *out++ = v.z;
       } else if (aov == "spp") *out++ = float(p.samples);
+      else if (aov == "noisy") *out++ = mean.x, *out++ = mean.y, *out++ = mean.z;
+      else if (aov == "halves") {
+        color3 even = mean, odd = mean;  // a film without halves: both are the whole pixel
+        if (!film.odd_half.empty()) pixel_half_means(p, film.odd_half[i], even, odd);
+        for (int k = 0; k < 3; ++k) *out++ = even[k];
+        for (int k = 0; k < 3; ++k) *out++ = odd[k];
+      }
     }
   });
   return image;

@@ -112,10 +112,14 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
 // What a render of `width` x `height` pixels with `channels` output channels allocates per
 // image: the film (with AOV sums when `with_aovs`, coverage sums when `with_alpha`), the sample
 // counts and activity masks, the output image and its 8-bit conversion for PNG.
-uint64_t render_image_bytes(int width, int height, size_t channels, bool with_aovs, bool with_alpha);
+uint64_t render_image_bytes(int width, int height, size_t channels, bool with_aovs, bool with_alpha,
+                            bool with_halves = false);
+
+// Whether `aovs` names `name`.
+bool wants_aov(const std::vector<std::string>& aovs, const std::string& name);
 
 // The channels film_to_image makes: R, G, B, A when `with_alpha`, then those of each AOV
-// ("albedo.R", "N.X", "Z", ...).
+// ("albedo.R", "N.X", "Z", "noisy.R", "even.R" ... "odd.B", ...).
 std::vector<std::string> output_channel_names(const std::vector<std::string>& aovs, bool with_alpha);
 
 // The film as an image with the requested AOV channels (a cropped render's film is the window).

@@ -96,7 +96,10 @@ struct RenderOptions {
   std::optional<SampleRange> sample_range;  // --sample-range: only these samples of each pixel
   std::optional<ShardSpec> shard;           // --shard: sets the window and sample range
   std::string effects;          // --effects list, applied to the scene's effect set
-  std::vector<std::string> aovs;  // albedo, normal, depth, variance, spp
+  std::vector<std::string> aovs;  // albedo, normal, depth, variance, spp, noisy, halves
+  // --denoise: the film also keeps the albedo, normal and depth sums and the odd samples' half,
+  // which the denoiser (src/denoise/) reads.
+  bool denoise = false;
   double time_limit_seconds = 0;  // 0 = none; at most max_time_limit_seconds
   // When set, the time limit ends here (the CLI starts it before loading the scene).
   std::optional<std::chrono::steady_clock::time_point> deadline;

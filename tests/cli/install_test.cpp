@@ -40,7 +40,7 @@ TEST_CASE("install: the man page's synopsis has every command, bash completes me
   if (built_with_address_sanitizer) return;  // the sanitizer builds make no manual
   fs::path manual = fs::path(RADIANT_BINARY_DIR) / "manual";
   std::string page = read_bytes(manual / "radiant.1");
-  for (const char* command : {"render", "info", "compare", "converge", "batch", "session", "merge"})
+  for (const char* command : {"render", "info", "compare", "converge", "batch", "session", "merge", "denoise"})
     CHECK_MESSAGE(page.find(std::string(".B radiant ") + command + "\n") != std::string::npos, command);
   // Ask the generated completion what it offers, as bash would.
   auto complete = [&](const std::string& line) {
