@@ -234,7 +234,8 @@ void run_script(const std::vector<BatchStep>& steps, const std::string& script_n
     LoadedScene& loaded = scenes[scene_index - 1];
     try {
       RenderJob job = jobs[i];
-      job.options.quiet = job.options.quiet || settings.quiet;
+      job.options.quiet = job.options.quiet || !shows(settings.log_level, LogLevel::info);
+      job.options.quiet_warnings = job.options.quiet_warnings || !shows(settings.log_level, LogLevel::warning);
       job.options.progress = isatty(STDERR_FILENO) && !job.options.quiet;
       // A render line's own cap holds what is loaded and this render.
       std::optional<MemoryBudget> line_budget;
@@ -281,9 +282,10 @@ int batch_main(int argc, char** argv) {
       "  printf 'scene assets/cornell.gltf\\nrender -o a.png --spp 16\\nrender -o b.png --fov 30\\n' | radiant batch -\n"
       "  radiant batch turntable.txt --max-memory 4 --quiet\n");
   std::string script_path;
-  bool quiet = false, allow_external = false;
+  bool allow_external = false;
+  LogLevelFlags log;
   app.add_option("SCRIPT", script_path, "Command script, or - for standard input")->required();
-  app.add_flag("--quiet,-q", quiet, "Print nothing but errors");
+  log.bind(app);
   app.add_flag("--allow-external-files", allow_external, "Let scene files refer to files outside their folder");
   std::string max_memory;
   app.add_option("--max-memory", max_memory,
@@ -292,10 +294,12 @@ int batch_main(int argc, char** argv) {
   app.add_option("--shard", shard_text, "Render only render lines I, I+K, I+2K, ... (from 0) of the script: I/K");
   std::optional<uint64_t> max_memory_bytes;
   std::optional<ShardSpec> shard;
+  LogLevel log_level = LogLevel::info;
   try {
     parse_arguments(app, argc, argv);
     if (!max_memory.empty()) max_memory_bytes = parse_memory_limit("--max-memory", max_memory);
     if (!shard_text.empty()) shard = parse_shard("--shard", shard_text);
+    log_level = log.level();
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);
     std::cerr << "radiant batch: " << e.what() << "\n";
@@ -319,7 +323,7 @@ int batch_main(int argc, char** argv) {
 
   if (shard) steps = shard_steps(steps, *shard);
   try {
-    run_script(steps, script_path, {quiet, allow_external, max_memory_bytes, {}});
+    run_script(steps, script_path, {log_level, allow_external, max_memory_bytes, {}});
   } catch (const std::exception& e) {
     std::cerr << "radiant batch: " << e.what() << "\n";
     return exit_failure;

@@ -384,7 +384,7 @@ void RenderFlags::bind(CLI::App& app, bool image_flags) {
   app.add_option("--max-memory", max_memory,
                  "Memory cap in GiB for loading and rendering: work that would need more is refused before it "
                  "allocates (default 1/4 of RAM)");
-  app.add_flag("--quiet,-q", options.quiet, "Print nothing but errors");
+  log.bind(app);
 }
 
 void RenderFlags::finish() {
@@ -453,6 +453,9 @@ void RenderFlags::finish() {
   if (blades == 1 || blades == 2) throw CLI::ValidationError("--blades", "an aperture needs 0 (round) or at least 3 blades");
   if (blades >= 0) options.camera_override.aperture_blades = blades;
   if (!max_memory.empty()) max_memory_bytes = parse_memory_limit("--max-memory", max_memory);
+  LogLevel level = log.level();
+  options.quiet = !shows(level, LogLevel::info);
+  options.quiet_warnings = !shows(level, LogLevel::warning);
 }
 
 MemoryBudget command_memory_budget(const std::optional<uint64_t>& max_memory_bytes) {

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "log_level.h"
 #include "memory/memory_budget.h"
 #include "render/render_options.h"
 
@@ -75,6 +76,7 @@ struct RenderFlags {
   bool transparent = false;
   std::string max_memory;                   // GiB, as given
   std::optional<uint64_t> max_memory_bytes;  // set by finish() when --max-memory is given
+  LogLevelFlags log;                         // -q, -qq, --quiet, --log-level
   void bind(CLI::App& app, bool image_flags);
   void finish();
   // The command's memory budget: --max-memory, or a quarter of RAM.

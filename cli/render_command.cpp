@@ -168,7 +168,7 @@ int render_main(int argc, char** argv) {
   try {
     SceneDesc scene = load_scene(scene_path, load_options);
     times.load = seconds_since(start);
-    if (!options.quiet)
+    if (!options.quiet_warnings)
       for (const std::string& warning : scene.warnings) std::cerr << "radiant: warning: " << warning << "\n";
 
     doing = "building its accelerator";

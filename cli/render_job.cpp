@@ -94,13 +94,15 @@ std::string dropped_light(const SceneDesc& scene, const ResolvedSettings& s) {
 
 }  // namespace
 
-void print_render_notes(const std::string& scene_path, const PreparedScene& prepared, const ResolvedSettings& s) {
+void print_render_notes(const std::string& scene_path, const PreparedScene& prepared, const ResolvedSettings& s,
+                        const RenderOptions& options) {
+  // A mode the flags or the file chose may leave out light the scene has (auto never does).
+  if (std::string dropped = s.mode_reason.empty() ? dropped_light(*prepared.scene, s) : ""; !dropped.empty() && !options.quiet_warnings)
+    std::cerr << "radiant: warning: mode " << mode_name(s.mode) << ": " << dropped << "\n";
+  if (options.quiet) return;
   if (s.camera_framed && prepared.world.cameras.empty())
     std::cerr << "radiant: the scene has no camera; using one that frames the whole scene\n";
   if (!s.mode_reason.empty()) std::cerr << "radiant: mode " << mode_name(s.mode) << ": " << s.mode_reason << "\n";
-  // A mode the flags or the file chose may leave out light the scene has (auto never does).
-  else if (std::string dropped = dropped_light(*prepared.scene, s); !dropped.empty())
-    std::cerr << "radiant: warning: mode " << mode_name(s.mode) << ": " << dropped << "\n";
   if (s.default_environment)
     std::cerr << "radiant: " << scene_path
               << ": nothing in the file lights it; using the built-in studio environment (--env none for black)\n";
@@ -121,9 +123,9 @@ void run_render_job(const std::string& scene_path, PreparedScene& prepared, cons
       return;
     }
   }
-  if (!job.options.quiet && job.notes) print_render_notes(scene_path, prepared, resolve_settings(prepared, job.options));
+  if (job.notes) print_render_notes(scene_path, prepared, resolve_settings(prepared, job.options), job.options);
   RenderResult result = render_prepared(prepared, options);
-  if (!job.options.quiet)
+  if (!job.options.quiet_warnings)
     for (const std::string& warning : result.warnings) std::cerr << "radiant: warning: " << warning << "\n";
   if (result.stats.interrupted && result.stats.samples == 0) throw_if_interrupted();  // nothing to save
   times.render = result.stats.render_seconds;

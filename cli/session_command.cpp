@@ -171,7 +171,7 @@ class Session {
     budget_.release(scene_memory);
     MemoryCharge loaded(&budget_, scene_memory, path + ": the scene");
     RenderOptions render_options = current_job().options;
-    if (!render_options.quiet)
+    if (!render_options.quiet_warnings)
       for (const std::string& warning : scene.warnings) std::cerr << "radiant: warning: " << warning << "\n";
     auto prepared = std::make_shared<PreparedScene>(prepare_scene(std::move(scene), render_options));
     scene_ = std::move(prepared);
@@ -261,21 +261,24 @@ int session_main(int argc, char** argv) {
              "\nExamples:\n"
              "  radiant session assets/cornell.gltf -o view.png --spp 64\n"
              "  printf 'render assets/cornell.gltf\\nturn 0 10 0\\nsave turned.png\\n' | radiant session -o view.png\n");
-  std::string scene_path, output, max_memory;
-  bool allow_external = false;
+  std::string scene_path, output;
   app.add_option("SCENE", scene_path, "Scene to load and render first (else: 'render FILE')");
   app.add_option("-o,--output", output, "The image each render rewrites (.png, .exr, ...)")->required();
-  app.add_option("--max-memory", max_memory, "Memory cap in GiB for the session (default 1/4 of RAM)");
-  app.add_flag("--allow-external-files", allow_external, "Let scene files refer to files outside their folder");
-  app.allow_extras();
+  // The render flags, parsed as `render` parses them (a value flag takes the next word, wherever
+  // the scene stands); each becomes a setting, checked as `set` checks it.
+  RenderFlags flags;
+  RenderJob parsed_job;
+  bind_render_line_flags(app, flags, parsed_job);
   SessionSettings settings;
   std::optional<uint64_t> max_memory_bytes;
+  bool allow_external = false;
   try {
-    app.parse(argc, argv);  // the render flags among them are checked as settings
+    parse_arguments(app, argc, argv);
     if (is_standard_output(output)) throw std::invalid_argument("-o -: a session rewrites its image after every pass; name a file");
-    if (!max_memory.empty()) max_memory_bytes = parse_memory_limit("--max-memory", max_memory);
+    if (!flags.max_memory.empty()) max_memory_bytes = parse_memory_limit("--max-memory", flags.max_memory);
+    allow_external = flags.allow_external_files;
     settings.set_output(output);
-    settings.set_from_arguments(app.remaining());
+    settings.set_from_command_line(app, {"output", "max-memory", "allow-external-files"});
     check_render_job_outputs(settings.job(output, fs::current_path()));
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);
