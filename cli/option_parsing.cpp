@@ -367,7 +367,10 @@ void RenderFlags::bind(CLI::App& app, bool image_flags) {
                  "its distance as a multiple of the framing one");
   app.add_option("--fov", fov, "Vertical field of view in degrees (a fisheye's whole one, up to 360)")
       ->check(positive_number(360));
-  app.add_option("--camera-type", camera_type, "perspective, orthographic, equirect (360 degrees) or fisheye");
+  app.add_option("--camera-type", camera_type,
+                 "perspective, orthographic (framing the scene unless placed by the flags), equirect (360 degrees) or fisheye");
+  app.add_option("--ortho-height", ortho_height, "An orthographic view's full height in scene units (default: the scene's)")
+      ->check(positive_number(max_scene_coordinate));
   app.add_option("--lens-radius", lens_radius, "Thin-lens aperture radius in scene units (0 = pinhole)")
       ->check(number_in(0, max_scene_coordinate));
   app.add_option("--focus-distance", focus_distance, "Distance in focus along the view (default: to --look-at)")
@@ -447,6 +450,7 @@ void RenderFlags::finish() {
       throw CLI::ValidationError("--background", "contradicts --transparent");
   }
   if (fov != 0) options.camera_override.fov_degrees = fov;
+  if (ortho_height > 0) options.camera_override.ortho_height = ortho_height;
   if (!camera_type.empty()) options.camera_override.projection = parse_camera_type("--camera-type", camera_type);
   if (lens_radius >= 0) options.camera_override.lens_radius = lens_radius;
   if (focus_distance > 0) options.camera_override.focus_distance = focus_distance;

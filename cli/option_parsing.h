@@ -68,6 +68,7 @@ struct RenderFlags {
   std::string shard, split, sample_range, filter;
   int width = 0, height = 0, spp = 0, max_depth = 0, indirect_paths = 0, gltf_scene = -1;
   float fov = 0;
+  float ortho_height = 0;  // unset: 0
   float filter_width = 0;  // unset: 0
   float lens_radius = -1, focus_distance = 0;  // unset: -1, 0
   int blades = -1;                             // unset: -1

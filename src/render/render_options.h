@@ -22,6 +22,7 @@ struct CameraOverride {
   std::optional<vec3> look_from, look_at, up;
   std::optional<float> fov_degrees;
   std::optional<Projection> projection;  // --camera-type
+  std::optional<float> ortho_height;     // --ortho-height: an orthographic view's full height
   std::optional<float> lens_radius, focus_distance;
   std::optional<int> aperture_blades;
 };
