@@ -39,6 +39,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
+const char* prompt = "radiant> ";
+
 const char* session_help =
     "Commands (units are the scene's, angles degrees, axes the world's):\n"
     "  render [FILE]        load FILE (or keep the current scene) and render it\n"
@@ -136,8 +138,19 @@ class Session {
   // A failure of command `line` (0: the command line): reported, and the exit code from now on.
   void fail(int line, int code, const std::string& message) {
     std::lock_guard lock(print_mutex_);
-    std::cerr << "radiant session: " << (line ? "line " + std::to_string(line) + ": " : "") << message << "\n";
+    above_prompt([&] { std::cerr << "radiant session: " << (line ? "line " + std::to_string(line) + ": " : "") << message << "\n"; });
     last_failure_ = code;
+  }
+
+  // On a terminal: the prompt, until a line is read; lines printed meanwhile go above it.
+  void show_prompt() {
+    std::lock_guard lock(print_mutex_);
+    std::cerr << prompt << std::flush;
+    prompt_shown_ = true;
+  }
+  void prompt_answered() {
+    std::lock_guard lock(print_mutex_);
+    prompt_shown_ = false;
   }
 
   // Waits for the render under way (the end of the input).
@@ -147,7 +160,16 @@ class Session {
  private:
   void print_line(const std::string& text) {
     std::lock_guard lock(print_mutex_);
-    std::cout << text << (text.empty() || text.back() != '\n' ? "\n" : "") << std::flush;
+    above_prompt([&] { std::cout << text << (text.empty() || text.back() != '\n' ? "\n" : "") << std::flush; });
+  }
+
+  // Prints what `print` writes on the line of a prompt shown (erased first), then shows it again
+  // below: a render that finishes while the user types does not land after "radiant> ".
+  template <class Print>
+  void above_prompt(Print print) {
+    if (prompt_shown_) std::cerr << "\r\033[K" << std::flush;
+    print();
+    if (prompt_shown_) std::cerr << prompt << std::flush;
   }
 
   // Replaces the scene only once the new one has loaded: a file that fails keeps the old one.
@@ -249,6 +271,7 @@ class Session {
   MemoryCharge scene_memory_;  // what loading the scene charged to the budget
   std::optional<SessionView> view_;  // set once a command moved or turned the camera
   std::mutex print_mutex_;
+  bool prompt_shown_ = false;  // guarded by print_mutex_
   std::atomic<int> last_failure_{exit_ok};
   SessionRenderer renderer_;  // last: its thread stops before the rest goes
 };
@@ -301,11 +324,14 @@ int session_main(int argc, char** argv) {
   for (int line = 0;; ++line) {
     std::vector<std::string> words = first;
     if (line > 0) {
-      if (interactive) std::cerr << "radiant> " << std::flush;
+      if (interactive) session.show_prompt();
       try {
-        if (!read_command_line(std::cin, text)) break;
+        bool read = read_command_line(std::cin, text);
+        session.prompt_answered();
+        if (!read) break;
         words = split_words(text.substr(0, text.find('#')));
       } catch (const std::invalid_argument& e) {
+        session.prompt_answered();
         session.fail(line, exit_usage, e.what());
         continue;
       }
