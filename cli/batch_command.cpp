@@ -278,9 +278,10 @@ int batch_main(int argc, char** argv) {
       "\nA script has 'scene PATH [--scene N] [--variant NAME]' lines and 'render -o OUT [render flags]' lines;\n"
       "# starts a comment.\n"
       "\nExamples:\n"
+      "  printf 'scene assets/cornell.gltf\\nrender -o a.png --width 64 --spp 16\\nrender -o b.png --width 64 --fov 30\\n' > views.txt\n"
       "  radiant batch views.txt\n"
-      "  printf 'scene assets/cornell.gltf\\nrender -o a.png --spp 16\\nrender -o b.png --fov 30\\n' | radiant batch -\n"
-      "  radiant batch turntable.txt --max-memory 4 --quiet\n");
+      "  radiant batch views.txt --max-memory 4 --quiet\n"
+      "  printf 'scene assets/cornell.gltf\\nrender -o a.png --width 64 --spp 16\\n' | radiant batch -\n");
   std::string script_path;
   bool allow_external = false;
   LogLevelFlags log;

@@ -18,9 +18,10 @@ namespace {
 
 const char* merge_examples =
     "\nExamples:\n"
+    "  for i in 0 1 2 3; do radiant render assets/cornell.gltf -o shard-$i.exr --shard $i/4; done\n"
     "  radiant merge shard-*.exr -o image.exr\n"
     "  radiant merge shard-*.exr -o image.png\n"
-    "  radiant merge s0.exr s1.exr -o s01.exr --keep-accum   # one shard again, for a later merge\n";
+    "  radiant merge shard-0.exr shard-1.exr -o half.exr --keep-accum   # one shard again, for a later merge\n";
 
 // What the merged image records: the shards' render (their settings, the merged spp, their render
 // times and rays summed, the first one's command line) and how many were merged. Shards rendered
