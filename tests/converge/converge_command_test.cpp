@@ -168,6 +168,6 @@ TEST_CASE("converge cli: --supersampling says what each step costs and buys in a
   REQUIRE(std::sscanf(r.out.c_str() + at, "grid: 9 samples per pixel cost %lfx the time of one and cut edge error to %lf%%",
                       &multiple, &percent) == 2);
   double table_multiple = std::stod(rows[2][10]);
-  CHECK(std::abs(multiple - table_multiple) <= std::max(0.05, 0.005 * table_multiple));
+  CHECK(std::abs(multiple - table_multiple) <= (table_multiple < 10 ? 0.06 : 0.51));  // one decimal below 10x, none above
   CHECK(percent == doctest::Approx(100 * std::stod(rows[2][9]) / std::stod(rows[1][9])).epsilon(0.05));
 }
