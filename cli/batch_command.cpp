@@ -235,7 +235,8 @@ void run_script(const std::vector<BatchStep>& steps, const std::string& script_n
     LoadedScene& loaded = scenes[scene_index - 1];
     try {
       RenderJob job = jobs[i];
-      job.options.quiet = job.options.quiet || settings.quiet;
+      job.options.quiet = job.options.quiet || !shows(settings.log_level, LogLevel::info);
+      job.options.quiet_warnings = job.options.quiet_warnings || !shows(settings.log_level, LogLevel::warning);
       job.options.progress = isatty(STDERR_FILENO) && !job.options.quiet;
       // A render line's own cap holds what is loaded and this render.
       std::optional<MemoryBudget> line_budget;
@@ -278,13 +279,15 @@ int batch_main(int argc, char** argv) {
       "\nA script has 'scene PATH [--scene N] [--variant NAME]' lines and 'render -o OUT [render flags]' lines;\n"
       "# starts a comment.\n"
       "\nExamples:\n"
+      "  printf 'scene assets/cornell.gltf\\nrender -o a.png --width 64 --spp 16\\nrender -o b.png --width 64 --fov 30\\n' > views.txt\n"
       "  radiant batch views.txt\n"
-      "  printf 'scene assets/cornell.gltf\\nrender -o a.png --spp 16\\nrender -o b.png --fov 30\\n' | radiant batch -\n"
-      "  radiant batch turntable.txt --max-memory 4 --quiet\n");
+      "  radiant batch views.txt --max-memory 4 --quiet\n"
+      "  printf 'scene assets/cornell.gltf\\nrender -o a.png --width 64 --spp 16\\n' | radiant batch -\n");
   std::string script_path;
-  bool quiet = false, allow_external = false;
+  bool allow_external = false;
+  LogLevelFlags log;
   app.add_option("SCRIPT", script_path, "Command script, or - for standard input")->required();
-  app.add_flag("--quiet,-q", quiet, "Print nothing but errors");
+  log.bind(app);
   app.add_flag("--allow-external-files", allow_external, "Let scene files refer to files outside their folder");
   std::string max_memory;
   app.add_option("--max-memory", max_memory,
@@ -296,11 +299,13 @@ int batch_main(int argc, char** argv) {
   std::optional<uint64_t> max_memory_bytes;
   std::optional<ShardSpec> shard;
   Watchers watchers;
+  LogLevel log_level = LogLevel::info;
   try {
     parse_arguments(app, argc, argv);
     if (!max_memory.empty()) max_memory_bytes = parse_memory_limit("--max-memory", max_memory);
     if (!shard_text.empty()) shard = parse_shard("--shard", shard_text);
     watchers = make_watchers(watch);
+    log_level = log.level();
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);
     std::cerr << "radiant batch: " << e.what() << "\n";
@@ -329,7 +334,7 @@ int batch_main(int argc, char** argv) {
       job.watchers = watchers;
       return job;
     };
-    run_script(steps, script_path, {quiet, allow_external, max_memory_bytes, watch_each});
+    run_script(steps, script_path, {log_level, allow_external, max_memory_bytes, watch_each});
   } catch (const std::exception& e) {
     std::cerr << "radiant batch: " << e.what() << "\n";
     return exit_failure;

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "log_level.h"
 #include "render_job.h"
 
 namespace radiant::cli {
@@ -33,7 +34,7 @@ std::vector<BatchStep> shard_steps(const std::vector<BatchStep>& steps, const Sh
 
 // How a script runs: the command's flags, and (for the fuzzer) a change applied to every view.
 struct BatchSettings {
-  bool quiet = false;
+  LogLevel log_level = LogLevel::info;  // -q, -qq, --quiet, --log-level: the quietest of it and a line's own
   bool allow_external_files = false;
   std::optional<uint64_t> max_memory_bytes;      // --max-memory for the whole script
   std::function<RenderJob(RenderJob)> adjust_job;  // none: each view as written

@@ -257,10 +257,13 @@ int compare_main(int argc, char** argv) {
   CLI::App app{"Compare two images for CI: exit 0 pass (or warn), 1 fail, 2 error", "radiant compare"};
   app.footer(
       "\nExamples:\n"
-      "  radiant compare new.png golden.png                       thresholds (docs/compare.md)\n"
-      "  radiant compare new.png golden.png --diff diff.png       and a false-color difference image\n"
-      "  radiant compare new.exr ref.exr --mc --spp 64            z-test (new.exr rendered with --aov variance)\n"
-      "  radiant compare new.exr ref.exr --json > report.json     one JSON object for CI\n");
+      "  radiant render assets/first-render.scene -o golden.png --width 64 --threads 1\n"
+      "  radiant render assets/first-render.scene -o new.png --width 64 --threads 2\n"
+      "  radiant compare new.png golden.png                       # plain thresholds (docs/compare.md)\n"
+      "  radiant compare new.png golden.png --diff diff.png       # and a false-color difference image\n"
+      "  radiant render assets/cornell.gltf -o new.exr --width 64 --height 64 --spp 256 --seed 7 --aov variance\n"
+      "  radiant compare new.exr golden/cornell-path.exr          # the z-test, with new.exr's variance\n"
+      "  radiant compare new.exr golden/cornell-path.exr --json > report.json   # one JSON object for CI\n");
   CompareOptions options;
   add_options(app, options);
   std::optional<uint64_t> max_memory_bytes;

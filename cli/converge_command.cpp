@@ -38,9 +38,11 @@ const char* converge_examples =
     "  radiant converge assets/cornell.gltf --mode path,naive --out report\n"
     "  radiant converge assets/cornell.gltf --spp-ladder 1,4,16,64 --target-error 0.01\n"
     "  radiant converge assets/showcase.scene --supersampling --width 96 --height 54\n"
-    "  radiant converge scene.gltf --reference converged.exr --mode path\n";
+    "  radiant render assets/cornell.gltf -o converged.exr --width 64 --height 64 --spp 4096\n"
+    "  radiant converge assets/cornell.gltf --reference converged.exr --mode path\n";
 
 constexpr int default_max_spp = 256;
+constexpr int supersampling_timing_runs = 3;
 constexpr int max_reference_spp = 4096;  // the default reference's cap (16x the ladder's top)
 constexpr int default_converge_size = 128;  // the larger side when no size is given
 
@@ -305,7 +307,8 @@ void bind_flags(CLI::App& app, ConvergeFlags& flags) {
   app.add_option("--target-error", flags.target_error, "Predict the spp and time that reach this RMSE")->check(positive_number());
   app.add_option("--edge-fraction", flags.edge_fraction, "Fraction of pixels counted as edges (default 0.1)")
       ->check(number_in(0.001, 1.0));
-  app.add_option("--timing-runs", flags.timing.min_runs, "Time each step as the fastest of at least N runs (default 1; short steps run more)")
+  app.add_option("--timing-runs", flags.timing.min_runs,
+                 "Time each step as the median of at least N runs (default 1, 3 with --supersampling; short steps run more)")
       ->check(CLI::Range(1, 100));
   app.add_flag("--supersampling", flags.supersampling, "The anti-aliasing table: 1, 81 and 324 spp for each sampler, edge error");
   app.add_option("--samplers", flags.samplers, "Samplers of --supersampling (default grid,random,jittered,sobol)");
@@ -385,6 +388,8 @@ int converge_main(int argc, char** argv) {
              : flags.supersampling     ? std::vector<int>{1, 81, 324}
                                        : doubling_ladder(flags.max_spp);
     if (!flags.reference_spp) flags.reference_spp = std::min(max_reference_spp, 16 * ladder.back());
+    // Its multiples of the 1-spp time are the answer: one slow run on a busy machine must not move them.
+    if (flags.supersampling && !app.count("--timing-runs")) flags.timing.min_runs = supersampling_timing_runs;
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);
     std::cerr << "radiant converge: " << e.what() << "\n";

@@ -123,6 +123,21 @@ std::string converge_json(const ConvergeReport& report) {
   return json_text(j);
 }
 
+std::string supersampling_sentences(const ConvergeReport& report) {
+  std::string text;
+  for (const ConvergeSeries& s : report.series) {
+    auto one = std::find_if(s.steps.begin(), s.steps.end(), [](const LadderStep& step) { return step.spp == 1; });
+    if (one == s.steps.end() || !(one->error.edge_rmse > 0)) continue;
+    for (const LadderStep& step : s.steps)
+      if (step.spp > 1) {
+        double multiple = time_multiple(s, step);
+        text += format("%s: %d samples per pixel cost %.*fx the time of one and cut edge error to %.2g%%\n", s.name.c_str(),
+                       step.spp, multiple < 10 ? 1 : 0, multiple, 100 * step.error.edge_rmse / one->error.edge_rmse);
+      }
+  }
+  return text;
+}
+
 std::string converge_table(const ConvergeReport& report) {
   std::string text = report.title + " (" + std::to_string(report.width) + "x" + std::to_string(report.height) + ")\n";
   for (const ReferenceNote& r : report.references)
@@ -144,6 +159,7 @@ std::string converge_table(const ConvergeReport& report) {
       text += format("; RMSE %.4g is not reached (the error does not fall with spp)", report.target_error);
     text += "\n";
   }
+  if (report.kind == "supersampling") text += supersampling_sentences(report);
   return text;
 }
 

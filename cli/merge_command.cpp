@@ -18,9 +18,10 @@ namespace {
 
 const char* merge_examples =
     "\nExamples:\n"
+    "  for i in 0 1 2 3; do radiant render assets/cornell.gltf -o shard-$i.exr --shard $i/4; done\n"
     "  radiant merge shard-*.exr -o image.exr\n"
     "  radiant merge shard-*.exr -o image.png\n"
-    "  radiant merge s0.exr s1.exr -o s01.exr --keep-accum   # one shard again, for a later merge\n";
+    "  radiant merge shard-0.exr shard-1.exr -o half.exr --keep-accum   # one shard again, for a later merge\n";
 
 // What the merged image records: the shards' render (their settings, the merged spp, their render
 // times and rays summed, the first one's command line) and how many were merged. Shards rendered
@@ -99,7 +100,8 @@ int merge_main(int argc, char** argv) {
   app.footer(merge_examples);
   std::vector<std::string> paths;
   std::string output, max_memory;
-  bool keep_accum = false, quiet = false, no_metadata = false;
+  bool keep_accum = false, no_metadata = false;
+  LogLevelFlags log;
   app.add_option("SHARD", paths, "Shard EXR files of one render")->required();
   app.add_option("-o,--output", output, "Output image (.png, .exr, ...), or a shard EXR with --keep-accum")->required();
   app.add_flag("--keep-accum", keep_accum,
@@ -108,11 +110,13 @@ int merge_main(int argc, char** argv) {
   app.add_option("--max-memory", max_memory, "Memory cap in GiB (default 1/4 of RAM)");
   app.add_flag("--no-metadata", no_metadata,
                "Record nothing about the render in the image: the same shards then merge to the same bytes");
-  app.add_flag("--quiet,-q", quiet, "Print nothing but errors");
+  log.bind(app);
   std::optional<uint64_t> max_memory_bytes;
+  bool quiet = false;
   try {
     app.parse(argc, argv);
     if (!max_memory.empty()) max_memory_bytes = parse_memory_limit("--max-memory", max_memory);
+    quiet = !shows(log.level(), LogLevel::info);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);
     std::cerr << "radiant merge: " << e.what() << "\n";

@@ -372,7 +372,10 @@ void RenderFlags::bind(CLI::App& app, bool image_flags) {
                  "its distance as a multiple of the framing one");
   app.add_option("--fov", fov, "Vertical field of view in degrees (a fisheye's whole one, up to 360)")
       ->check(positive_number(360));
-  app.add_option("--camera-type", camera_type, "perspective, orthographic, equirect (360 degrees) or fisheye");
+  app.add_option("--camera-type", camera_type,
+                 "perspective, orthographic (framing the scene unless placed by the flags), equirect (360 degrees) or fisheye");
+  app.add_option("--ortho-height", ortho_height, "An orthographic view's full height in scene units (default: the scene's)")
+      ->check(positive_number(max_scene_coordinate));
   app.add_option("--lens-radius", lens_radius, "Thin-lens aperture radius in scene units (0 = pinhole)")
       ->check(number_in(0, max_scene_coordinate));
   app.add_option("--focus-distance", focus_distance, "Distance in focus along the view (default: to --look-at)")
@@ -389,7 +392,7 @@ void RenderFlags::bind(CLI::App& app, bool image_flags) {
   app.add_option("--max-memory", max_memory,
                  "Memory cap in GiB for loading and rendering: work that would need more is refused before it "
                  "allocates (default 1/4 of RAM)");
-  app.add_flag("--quiet,-q", options.quiet, "Print nothing but errors");
+  log.bind(app);
 }
 
 void RenderFlags::finish() {
@@ -458,12 +461,16 @@ void RenderFlags::finish() {
       throw CLI::ValidationError("--background", "contradicts --transparent");
   }
   if (fov != 0) options.camera_override.fov_degrees = fov;
+  if (ortho_height > 0) options.camera_override.ortho_height = ortho_height;
   if (!camera_type.empty()) options.camera_override.projection = parse_camera_type("--camera-type", camera_type);
   if (lens_radius >= 0) options.camera_override.lens_radius = lens_radius;
   if (focus_distance > 0) options.camera_override.focus_distance = focus_distance;
   if (blades == 1 || blades == 2) throw CLI::ValidationError("--blades", "an aperture needs 0 (round) or at least 3 blades");
   if (blades >= 0) options.camera_override.aperture_blades = blades;
   if (!max_memory.empty()) max_memory_bytes = parse_memory_limit("--max-memory", max_memory);
+  LogLevel level = log.level();
+  options.quiet = !shows(level, LogLevel::info);
+  options.quiet_warnings = !shows(level, LogLevel::warning);
 }
 
 MemoryBudget command_memory_budget(const std::optional<uint64_t>& max_memory_bytes) {

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "log_level.h"
 #include "memory/memory_budget.h"
 #include "render/render_options.h"
 
@@ -67,6 +68,7 @@ struct RenderFlags {
   std::string shard, split, sample_range, filter;
   int width = 0, height = 0, spp = 0, max_depth = 0, indirect_paths = 0, gltf_scene = -1;
   float fov = 0;
+  float ortho_height = 0;  // unset: 0
   float filter_width = 0;  // unset: 0
   float lens_radius = -1, focus_distance = 0;  // unset: -1, 0
   int blades = -1;                             // unset: -1
@@ -75,6 +77,7 @@ struct RenderFlags {
   bool transparent = false;
   std::string max_memory;                   // GiB, as given
   std::optional<uint64_t> max_memory_bytes;  // set by finish() when --max-memory is given
+  LogLevelFlags log;                         // -q, -qq, --quiet, --log-level
   void bind(CLI::App& app, bool image_flags);
   void finish();
   // The command's memory budget: --max-memory, or a quarter of RAM.

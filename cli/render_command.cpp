@@ -29,12 +29,13 @@ const char* render_examples =
     "\nExamples:\n"
     "  radiant render assets/cornell.gltf -o cornell.png\n"
     "  radiant render assets/first-render.scene -o sphere.png --spp 81 --sampler jittered\n"
-    "  radiant render model.obj -o model.exr --env-color 1,1,1 --aov albedo,normal,variance\n"
-    "  radiant render scene.gltf -o preview.png --effects=-shadows,-indirect --width 320\n"
-    "  cat room.scene | radiant render - -o room.png --mode path --spp 256 --threads 2\n"
-    "  radiant render scene.gltf -o - --format exr --stats stats.json | oiiotool - -o out.tif\n"
-    "  radiant render scene.gltf -o shard-3.exr --shard 3/8 --split both   # then: radiant merge shard-*.exr -o out.exr\n"
-    "  radiant render walk.glb --frames 0-99 --fps 24 -o out/frame-####.png\n";
+    "  radiant render assets/models/textured-cube.obj -o cube.exr --env-color 1,1,1 --aov albedo,normal,variance\n"
+    "  radiant render assets/showcase.scene -o preview.png --effects=-shadows,-indirect --width 320\n"
+    "  cat assets/room-older-format.scene | radiant render - -o room.png --mode path --spp 256 --threads 2\n"
+    "  radiant render assets/cornell.gltf -o - --format exr --stats stats.json | gzip > cornell.exr.gz\n"
+    "  radiant render assets/models/turntable.gltf -o blue.png --variant blue --time 0.5 --camera-type orthographic\n"
+    "  radiant render assets/cornell.gltf -o shard-3.exr --shard 3/8 --split both   # then the other 7, and radiant merge\n"
+    "  mkdir -p spin && radiant render assets/models/turntable.gltf --frames 0-11 --fps 6 -o spin/frame-##.png\n";
 
 // What is wrong with --frames and the outputs, or "".
 std::string frames_usage_problem(const std::string& output, const std::string& stats_path, const RenderOptions& options) {
@@ -177,7 +178,7 @@ int render_main(int argc, char** argv) {
   try {
     SceneDesc scene = load_scene(scene_path, load_options);
     times.load = seconds_since(start);
-    if (!options.quiet)
+    if (!options.quiet_warnings)
       for (const std::string& warning : scene.warnings) std::cerr << "radiant: warning: " << warning << "\n";
 
     doing = "building its accelerator";

@@ -28,7 +28,7 @@ void render_frame(SceneFile& file, FrameScene& frame, int reads, const FramesReq
   FramePreparation how = frame.prepare_next(file, load, job.options);
   job.frame = FrameNote{number, reads, how == FramePreparation::updated};
   job.notes = number == animation.frames->first;  // every frame would say the same
-  if (!job.options.quiet && job.notes)
+  if (!job.options.quiet_warnings && job.notes)
     for (const std::string& warning : frame.prepared->scene->warnings) std::cerr << "radiant: warning: " << warning << "\n";
   PhaseTimes times;
   times.load = read_seconds + seconds_since(start) - frame.prepared->build_seconds;

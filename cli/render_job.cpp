@@ -113,13 +113,15 @@ std::string dropped_light(const SceneDesc& scene, const ResolvedSettings& s) {
 
 }  // namespace
 
-void print_render_notes(const std::string& scene_path, const PreparedScene& prepared, const ResolvedSettings& s) {
+void print_render_notes(const std::string& scene_path, const PreparedScene& prepared, const ResolvedSettings& s,
+                        const RenderOptions& options) {
+  // A mode the flags or the file chose may leave out light the scene has (auto never does).
+  if (std::string dropped = s.mode_reason.empty() ? dropped_light(*prepared.scene, s) : ""; !dropped.empty() && !options.quiet_warnings)
+    std::cerr << "radiant: warning: mode " << mode_name(s.mode) << ": " << dropped << "\n";
+  if (options.quiet) return;
   if (s.camera_framed && prepared.world.cameras.empty())
     std::cerr << "radiant: the scene has no camera; using one that frames the whole scene\n";
   if (!s.mode_reason.empty()) std::cerr << "radiant: mode " << mode_name(s.mode) << ": " << s.mode_reason << "\n";
-  // A mode the flags or the file chose may leave out light the scene has (auto never does).
-  else if (std::string dropped = dropped_light(*prepared.scene, s); !dropped.empty())
-    std::cerr << "radiant: warning: mode " << mode_name(s.mode) << ": " << dropped << "\n";
   if (s.default_environment)
     std::cerr << "radiant: " << scene_path
               << ": nothing in the file lights it; using the built-in studio environment (--env none for black)\n";
@@ -140,7 +142,7 @@ void run_render_job(const std::string& scene_path, PreparedScene& prepared, cons
       return;
     }
   }
-  if (!job.options.quiet && job.notes) print_render_notes(scene_path, prepared, resolve_settings(prepared, job.options));
+  if (job.notes) print_render_notes(scene_path, prepared, resolve_settings(prepared, job.options), job.options);
   auto render_start = std::chrono::steady_clock::now();
   std::optional<ResolvedSettings> watched;
   if (job.watchers.any()) {
@@ -148,7 +150,7 @@ void run_render_job(const std::string& scene_path, PreparedScene& prepared, cons
     options.on_pass = [&](const Film& film, uint32_t samples) {
       double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - render_start).count();
       job.watchers.show(job.output, film, samples, uint32_t(watched->samples.end), elapsed,
-                        {options.exposure, watched->view}, options.quiet);
+                        {options.exposure, watched->view}, options.quiet_warnings);
     };
   }
   RenderResult result = render_prepared(prepared, options);
@@ -156,10 +158,10 @@ void run_render_job(const std::string& scene_path, PreparedScene& prepared, cons
     // A stopped render ends before its pass is reported: the watchers still get what was rendered.
     if (result.stats.interrupted || result.stats.stopped_by_time_limit)
       job.watchers.show(job.output, result.film, uint32_t(result.stats.max_pixel_samples), uint32_t(watched->samples.end),
-                        result.stats.render_seconds, {options.exposure, watched->view}, options.quiet);
+                        result.stats.render_seconds, {options.exposure, watched->view}, options.quiet_warnings);
     job.watchers.finished();
   }
-  if (!job.options.quiet)
+  if (!job.options.quiet_warnings)
     for (const std::string& warning : result.warnings) std::cerr << "radiant: warning: " << warning << "\n";
   if (result.stats.interrupted && result.stats.samples == 0) throw_if_interrupted();  // nothing to save
   times.render = result.stats.render_seconds;

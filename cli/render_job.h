@@ -55,9 +55,11 @@ void check_render_job_outputs(const RenderJob& job);
 void check_outputs_spare_inputs(const std::string& scene_path, const std::string& env_map,
                                 const std::vector<std::string>& scene_files, const std::vector<NamedFile>& outputs);
 
-// What a render prints before it starts, unless quiet: a framing camera, auto mode's choice
-// and reason, and a scene that nothing lights (no light, emission or environment, flags included).
-void print_render_notes(const std::string& scene_path, const PreparedScene& prepared, const ResolvedSettings& settings);
+// What a render prints before it starts: a mode that leaves out light the scene has (a warning),
+// and unless quiet a framing camera, auto mode's choice and reason, and a scene that nothing
+// lights (no light, emission or environment, flags included).
+void print_render_notes(const std::string& scene_path, const PreparedScene& prepared, const ResolvedSettings& settings,
+                        const RenderOptions& options);
 
 // Renders, writes the image (a shard file for --shard and --sample-range) and the stats and commits them together (neither replaces an
 // existing file unless both were written), prints notes and the summary unless quiet. `times`

@@ -38,6 +38,15 @@ std::vector<std::string> split_words(const std::string& line) {
   return words;
 }
 
+void bind_render_line_flags(CLI::App& app, RenderFlags& flags, RenderJob& job) {
+  flags.bind(app, true);
+  app.add_option("--stats", job.stats_path, "Write render statistics as JSON");
+  app.add_option("--aov", flags.aovs, "Extra EXR channels: albedo,normal,depth,variance,spp");
+  app.add_option("--crop", flags.crop, "Render only pixels X0,Y0,X1,Y1 (half-open)");
+  app.add_option("--noise-threshold", flags.options.noise_threshold, "Adaptive sampling: stop pixels under this relative error")
+      ->check(positive_number());
+}
+
 RenderJob parse_render_line(std::vector<std::string> words, const fs::path& base, bool with_animation) {
   CLI::App app{"render"};
   RenderFlags flags;
@@ -45,11 +54,7 @@ RenderJob parse_render_line(std::vector<std::string> words, const fs::path& base
   RenderJob job;
   if (with_animation) animation.bind(app);
   app.add_option("-o,--output", job.output)->required();
-  flags.bind(app, true);
-  app.add_option("--stats", job.stats_path);
-  app.add_option("--aov", flags.aovs);
-  app.add_option("--crop", flags.crop);
-  app.add_option("--noise-threshold", flags.options.noise_threshold)->check(positive_number());
+  bind_render_line_flags(app, flags, job);
   parse_arguments(app, std::move(words));
   // A view of a scene already loaded cannot change what was loaded.
   for (const char* flag : {"--scene", "--variant"})

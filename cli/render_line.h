@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "option_parsing.h"
 #include "render_job.h"
 
 namespace radiant::cli {
@@ -21,6 +22,10 @@ bool read_command_line(std::istream& in, std::string& line);
 // Splits a line into words; double quotes group words with spaces. Throws std::invalid_argument
 // for an unterminated quote.
 std::vector<std::string> split_words(const std::string& line);
+
+// Binds the flags of a `render` line but -o and the animation's (the render flags, --stats,
+// --aov, --crop, --noise-threshold) to `app`, storing into `flags` and `job`.
+void bind_render_line_flags(CLI::App& app, RenderFlags& flags, RenderJob& job);
 
 // `render -o OUT [flags]` as words (the first is the command name and is skipped). Relative
 // paths resolve against `base`. `with_animation` also takes --time, --frame, --fps, --animation

@@ -41,6 +41,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
+const char* prompt = "radiant> ";
+
 const char* session_help =
     "Commands (units are the scene's, angles degrees, axes the world's):\n"
     "  render [FILE]        load FILE (or keep the current scene) and render it\n"
@@ -143,8 +145,19 @@ class Session {
   // A failure of command `line` (0: the command line): reported, and the exit code from now on.
   void fail(int line, int code, const std::string& message) {
     std::lock_guard lock(print_mutex_);
-    std::cerr << "radiant session: " << (line ? "line " + std::to_string(line) + ": " : "") << message << "\n";
+    above_prompt([&] { std::cerr << "radiant session: " << (line ? "line " + std::to_string(line) + ": " : "") << message << "\n"; });
     last_failure_ = code;
+  }
+
+  // On a terminal: the prompt, until a line is read; lines printed meanwhile go above it.
+  void show_prompt() {
+    std::lock_guard lock(print_mutex_);
+    std::cerr << prompt << std::flush;
+    prompt_shown_ = true;
+  }
+  void prompt_answered() {
+    std::lock_guard lock(print_mutex_);
+    prompt_shown_ = false;
   }
 
   // Waits for the render under way (the end of the input).
@@ -154,7 +167,16 @@ class Session {
  private:
   void print_line(const std::string& text) {
     std::lock_guard lock(print_mutex_);
-    std::cout << text << (text.empty() || text.back() != '\n' ? "\n" : "") << std::flush;
+    above_prompt([&] { std::cout << text << (text.empty() || text.back() != '\n' ? "\n" : "") << std::flush; });
+  }
+
+  // Prints what `print` writes on the line of a prompt shown (erased first), then shows it again
+  // below: a render that finishes while the user types does not land after "radiant> ".
+  template <class Print>
+  void above_prompt(Print print) {
+    if (prompt_shown_) std::cerr << "\r\033[K" << std::flush;
+    print();
+    if (prompt_shown_) std::cerr << prompt << std::flush;
   }
 
   // Replaces the scene only once the new one has loaded: a file that fails keeps the old one.
@@ -178,7 +200,7 @@ class Session {
     budget_.release(scene_memory);
     MemoryCharge loaded(&budget_, scene_memory, path + ": the scene");
     RenderOptions render_options = current_job().options;
-    if (!render_options.quiet)
+    if (!render_options.quiet_warnings)
       for (const std::string& warning : scene.warnings) std::cerr << "radiant: warning: " << warning << "\n";
     auto prepared = std::make_shared<PreparedScene>(prepare_scene(std::move(scene), render_options));
     scene_ = std::move(prepared);
@@ -275,6 +297,7 @@ class Session {
   std::optional<SessionView> view_;  // set once a command moved or turned the camera
   Watchers watchers_;  // --display-server, --serve: every view shown as it converges
   std::mutex print_mutex_;
+  bool prompt_shown_ = false;  // guarded by print_mutex_
   std::atomic<int> last_failure_{exit_ok};
   SessionRenderer renderer_;  // last: its thread stops before the rest goes
 };
@@ -287,27 +310,30 @@ int session_main(int argc, char** argv) {
              "\nExamples:\n"
              "  radiant session assets/cornell.gltf -o view.png --spp 64\n"
              "  printf 'render assets/cornell.gltf\\nturn 0 10 0\\nsave turned.png\\n' | radiant session -o view.png\n");
-  std::string scene_path, output, max_memory;
-  bool allow_external = false;
+  std::string scene_path, output;
   app.add_option("SCENE", scene_path, "Scene to load and render first (else: 'render FILE')");
   app.add_option("-o,--output", output, "The image each render rewrites (.png, .exr, ...)")->required();
-  app.add_option("--max-memory", max_memory, "Memory cap in GiB for the session (default 1/4 of RAM)");
-  app.add_flag("--allow-external-files", allow_external, "Let scene files refer to files outside their folder");
-  WatchFlags watch;
-  watch.bind(app, true);
-  app.allow_extras();
+  // The render flags, parsed as `render` parses them (a value flag takes the next word, wherever
+  // the scene stands); each becomes a setting, checked as `set` checks it.
+  RenderFlags flags;
+  RenderJob parsed_job;
+  bind_render_line_flags(app, flags, parsed_job);
   SessionSettings settings;
   std::optional<uint64_t> max_memory_bytes;
+  bool allow_external = false;
+  WatchFlags watch;
+  watch.bind(app, true);
   std::unique_ptr<SessionInput> input;  // before the page that pushes to it, which stops first
   Watchers watchers;
   try {
-    app.parse(argc, argv);  // the render flags among them are checked as settings
+    parse_arguments(app, argc, argv);
     input = std::make_unique<SessionInput>(!watch.serve.empty());
     watchers = make_watchers(watch, [&input](const std::string& line) { input->push(line); });
     if (is_standard_output(output)) throw std::invalid_argument("-o -: a session rewrites its image after every pass; name a file");
-    if (!max_memory.empty()) max_memory_bytes = parse_memory_limit("--max-memory", max_memory);
+    if (!flags.max_memory.empty()) max_memory_bytes = parse_memory_limit("--max-memory", flags.max_memory);
+    allow_external = flags.allow_external_files;
     settings.set_output(output);
-    settings.set_from_arguments(app.remaining());
+    settings.set_from_command_line(app, {"output", "max-memory", "allow-external-files", "display-server", "serve"});
     RenderJob job = settings.job(output, fs::current_path());
     check_outputs_spare_inputs(scene_path, job.options.env_map, {}, render_job_outputs(job));
     check_render_job_outputs(job);
@@ -333,11 +359,14 @@ int session_main(int argc, char** argv) {
   for (int line = 0;; ++line) {
     std::vector<std::string> words = first;
     if (line > 0) {
-      if (interactive) std::cerr << "radiant> " << std::flush;
+      if (interactive) session.show_prompt();
       try {
-        if (!input->next(text)) break;
+        bool read = input->next(text);
+        session.prompt_answered();
+        if (!read) break;
         words = split_words(text.substr(0, text.find('#')));
       } catch (const std::invalid_argument& e) {
+        session.prompt_answered();
         session.fail(line, exit_usage, e.what());
         continue;
       }

@@ -2,6 +2,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "render_line.h"
@@ -22,7 +23,7 @@ std::string owned_by_session(const std::string& name) {
 
 std::string flag_name(std::string name) {
   if (name.rfind("--", 0) == 0) name.erase(0, 2);
-  else if (name == "-q") name = "quiet";
+  else if (name == "-q" || name == "-qq") name = "log-level";
   if (name.empty()) throw std::invalid_argument("a setting needs a name");
   if (std::string why = owned_by_session(name); !why.empty()) throw std::invalid_argument("--" + name + ": " + why);
   return name;
@@ -31,6 +32,7 @@ std::string flag_name(std::string name) {
 }  // namespace
 
 void SessionSettings::set(std::string name, std::vector<std::string> values) {
+  if (name == "-q" || name == "-qq") values = {name == "-q" ? "warning" : "error"};
   name = flag_name(name);
   if (values.empty()) {
     // Alone on a command line, a flag that needs a value says so itself (among the other
@@ -57,22 +59,17 @@ void SessionSettings::set_output(const std::string& output) {
 
 bool SessionSettings::unset(std::string name) { return flags_.erase(flag_name(name)) > 0; }
 
-void SessionSettings::set_from_arguments(const std::vector<std::string>& arguments) {
-  std::map<std::string, std::string> given;  // name -> the word that gave it
-  for (size_t i = 0; i < arguments.size();) {
-    std::string word = arguments[i++], as_given = word;
-    if (word.rfind("-", 0) != 0) throw std::invalid_argument("unexpected argument '" + word + "'");
-    std::vector<std::string> values;
-    if (size_t equals = word.find('='); equals != std::string::npos) {
-      values.push_back(word.substr(equals + 1));
-      word.resize(equals);
-    } else {
-      // Values follow until the next flag ("-1,2,3" is a value, "--seed" a flag).
-      while (i < arguments.size() && arguments[i].rfind("--", 0) != 0 && arguments[i] != "-q") values.push_back(arguments[i++]);
+void SessionSettings::set_from_command_line(const CLI::App& app, const std::vector<std::string>& owned) {
+  for (const CLI::Option* option : app.get_options()) {
+    if (option->count() == 0 || option->get_positional()) continue;
+    if (option->get_lnames().empty()) {  // -q, -qq
+      set(option->count() > 1 ? "-qq" : "-q", {});
+      continue;
     }
-    if (auto [at, fresh] = given.emplace(flag_name(word), as_given); !fresh)
-      throw std::invalid_argument(word + ": given twice (" + at->second + " and " + as_given + ")");
-    set(word, values);
+    const std::string& name = option->get_lnames().front();
+    if (name == "help" || std::find(owned.begin(), owned.end(), name) != owned.end()) continue;
+    // A flag's results are CLI11's own words for "given"; the flag alone says it.
+    set("--" + name, option->get_expected_min() == 0 ? std::vector<std::string>{} : option->results());
   }
 }
 

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
+
 #include "render_job.h"
 
 namespace radiant::cli {
@@ -24,8 +26,9 @@ class SessionSettings {
   // The session's image, whose format decides what may be set (--aov needs an EXR).
   void set_output(const std::string& output);
 
-  // Flags as a command line gives them ("--spp", "64", "--quiet", ...) become settings.
-  void set_from_arguments(const std::vector<std::string>& arguments);
+  // The render flags given on the session's command line, parsed by `app` as `render` parses
+  // them, become settings; the options named in `owned` (long names) stay the session's.
+  void set_from_command_line(const CLI::App& app, const std::vector<std::string>& owned);
 
   // The render these settings ask for, writing `output`; relative paths resolve against `base`.
   RenderJob job(const std::string& output, const std::filesystem::path& base) const;

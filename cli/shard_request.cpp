@@ -17,7 +17,7 @@ namespace {
 
 // Flags that change where or how loudly a shard is written, or whether it can be, never its
 // bytes. (--exposure, --view, --bit-depth and --half do: the shard records them for merge.)
-const char* const flags_outside_the_shard[] = {"output", "threads", "max-memory", "quiet", "stats", "skip-existing",
+const char* const flags_outside_the_shard[] = {"output", "threads", "max-memory", "quiet", "log-level", "stats", "skip-existing",
                                                 "format"};
 
 }  // namespace

@@ -134,6 +134,10 @@ SceneFile read_scene_file(const std::string& path, const LoadOptions& given) {
   return file;
 }
 
+SceneFileChoices scene_file_choices(const SceneFile& file) {
+  return file.gltf ? gltf_choices(*file.gltf) : SceneFileChoices{};
+}
+
 SceneDesc scene_from_file(SceneFile& file, const LoadOptions& given) {
   BudgetedLoadOptions budgeted(given);
   const LoadOptions& options = budgeted.options;

@@ -78,6 +78,18 @@ struct SceneFile {
 // Reads (and for glTF parses) `path`; options.budget must be set. Throws LoadError.
 SceneFile read_scene_file(const std::string& path, const LoadOptions& options);
 
+// What a file offers to choose from besides cameras and lights, for `radiant info`.
+struct AnimationSummary {
+  std::string name;
+  double seconds = 0;  // the last key time of its channels
+};
+struct SceneFileChoices {
+  std::vector<AnimationSummary> animations;   // --animation, --time, --frame
+  std::vector<std::string> material_variants;  // --variant (KHR_materials_variants)
+};
+// Empty for formats without animations or variants. Throws LoadError for a malformed list.
+SceneFileChoices scene_file_choices(const SceneFile& file);
+
 // The scene of `file` at options.animation_time, validated, as load_scene gives it: afterwards
 // the budget holds this scene's size besides the file's. Throws LoadError.
 SceneDesc scene_from_file(SceneFile& file, const LoadOptions& options);

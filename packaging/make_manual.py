@@ -25,6 +25,7 @@ WORD_FLAGS = {
     "--batching": "all camera none",
     "--background": "blur env transparent",
     "--split": "tiles samples both",
+    "--log-level": "info warning error",
 }
 # --env completes its names and files both.
 ENV_WORDS = "studio white none"

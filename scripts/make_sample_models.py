@@ -313,6 +313,35 @@ def lit_windows():
     write("lit-windows.gltf", json.dumps(gltf, indent=1) + "\n")
 
 
+def turntable():
+    doc = Document()
+    orange = doc.material("orange", (0.9, 0.45, 0.1), roughness=0.5)
+    blue = doc.material("blue", (0.1, 0.3, 0.9), roughness=0.5)
+    box = doc.mesh("box", cube(0.5), orange)
+    # KHR_materials_variants: the box in orange (the default) or in blue.
+    doc.gltf["meshes"][box]["primitives"][0]["extensions"] = {"KHR_materials_variants": {"mappings": [
+        {"material": orange, "variants": [0]}, {"material": blue, "variants": [1]}]}}
+    doc.gltf["extensions"] = {"KHR_materials_variants": {"variants": [{"name": "orange"}, {"name": "blue"}]}}
+    doc.gltf["extensionsUsed"] = ["KHR_materials_variants"]
+    ground = doc.mesh("ground", quad(4), doc.material("ground", (0.6, 0.6, 0.6)))
+    box_node = doc.node(name="box", mesh=box, translation=[0, 0.5, 0])
+    # "spin": one turn about +y in 2 seconds, as five keys a quarter turn apart.
+    times = [0.0, 0.5, 1.0, 1.5, 2.0]
+    turns = [[0, math.sin(math.pi * t / 2), 0, math.cos(math.pi * t / 2)] for t in times]
+    accessors = doc.gltf["accessors"]
+    accessors.append({"bufferView": doc.view(struct.pack("<5f", *times)), "componentType": 5126, "count": 5,
+                      "type": "SCALAR", "min": [0.0], "max": [2.0]})
+    accessors.append({"bufferView": doc.view(b"".join(struct.pack("<4f", *q) for q in turns)), "componentType": 5126,
+                      "count": 5, "type": "VEC4"})
+    doc.gltf["animations"] = [{"name": "spin", "samplers": [
+        {"input": len(accessors) - 2, "output": len(accessors) - 1, "interpolation": "LINEAR"}],
+        "channels": [{"sampler": 0, "target": {"node": box_node, "path": "rotation"}}]}]
+    roots = [doc.node(name="ground", mesh=ground), box_node, doc.camera_node((2.4, 2.2, 3.2), (0, 0.4, 0)),
+             doc.light_node({"name": "sun", "type": "directional", "intensity": 3}, (1, 3, 2))]
+    gltf = doc.finish(roots, "data:application/octet-stream;base64," + base64.b64encode(bytes(doc.data)).decode())
+    write("turntable.gltf", json.dumps(gltf, indent=1) + "\n")
+
+
 if __name__ == "__main__":
     os.makedirs(OUT, exist_ok=True)
     checker_cube()
@@ -320,3 +349,4 @@ if __name__ == "__main__":
     normal_mapped_quad()
     textured_cube_obj()
     lit_windows()
+    turntable()

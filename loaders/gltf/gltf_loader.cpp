@@ -146,6 +146,23 @@ std::shared_ptr<GltfDocument> read_gltf_document(const std::string& path, const 
   return document;
 }
 
+SceneFileChoices gltf_choices(const GltfDocument& document) {
+  const tinygltf::Model& model = document.model;
+  SceneFileChoices choices;
+  for (const tinygltf::Animation& animation : model.animations) {
+    AnimationSummary summary{animation.name, 0};
+    // glTF requires an input accessor's max: the last key time, read without the keys.
+    for (const tinygltf::AnimationSampler& sampler : animation.samplers)
+      if (sampler.input >= 0 && size_t(sampler.input) < model.accessors.size() && !model.accessors[sampler.input].maxValues.empty())
+        summary.seconds = std::max(summary.seconds, model.accessors[sampler.input].maxValues[0]);
+    choices.animations.push_back(summary);
+  }
+  LoadOptions options;
+  SceneDesc unused;
+  choices.material_variants = variant_names(GltfContext{model, document.path, options, unused, {}, {}, -1});
+  return choices;
+}
+
 SceneDesc gltf_scene(GltfDocument& document, const LoadOptions& given) {
   BudgetedLoadOptions budgeted(given);
   const LoadOptions& options = budgeted.options;

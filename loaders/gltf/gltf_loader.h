@@ -28,6 +28,9 @@ std::shared_ptr<GltfDocument> read_gltf_document(const std::string& path, const 
 // them back before returning.
 SceneDesc gltf_scene(GltfDocument& document, const LoadOptions& options);
 
+// The document's animations (name, last key time) and material variants.
+SceneFileChoices gltf_choices(const GltfDocument& document);
+
 // Both at once. Throws LoadError naming the file and the JSON path of the problem.
 SceneDesc load_gltf(const std::string& path, const LoadOptions& options);
 

@@ -6,7 +6,8 @@ namespace {
 
 constexpr const char* variants_extension = "KHR_materials_variants";
 
-// The names of the file's variants (the root extension's `variants[i].name`).
+}  // namespace
+
 std::vector<std::string> variant_names(const GltfContext& context) {
   std::vector<std::string> names;
   auto it = context.model.extensions.find(variants_extension);
@@ -21,8 +22,6 @@ std::vector<std::string> variant_names(const GltfContext& context) {
   }
   return names;
 }
-
-}  // namespace
 
 int selected_variant(const GltfContext& context) {
   const std::string& wanted = context.options.material_variant;

@@ -6,6 +6,9 @@
 
 namespace radiant {
 
+// The names of the file's variants (the root extension's `variants[i].name`), in file order.
+std::vector<std::string> variant_names(const GltfContext& context);
+
 // The index of LoadOptions::material_variant among the file's variants, or -1 when none is asked
 // for; throws LoadError when the file has no variant of that name.
 int selected_variant(const GltfContext& context);

@@ -63,18 +63,22 @@ LadderStep run_step(const PreparedScene& prepared, RenderOptions options, int sp
                     const TimingPolicy& timing) {
   options.spp = spp;
   RenderResult result = render_prepared(prepared, options);
-  double fastest = result.stats.render_seconds, total = fastest;
+  std::vector<double> runs = {result.stats.render_seconds};
+  double total = runs.front();
   int most = std::max(timing.min_runs, timing.max_runs);
   for (int run = 1; run < most && (run < timing.min_runs || total < timing.min_total_seconds); ++run) {
-    double seconds = render_prepared(prepared, options).stats.render_seconds;
-    fastest = std::min(fastest, seconds);
-    total += seconds;
+    runs.push_back(render_prepared(prepared, options).stats.render_seconds);
+    total += runs.back();
   }
+  // The median: a run slowed by the machine's other work moves it less than it moves a mean.
+  std::sort(runs.begin(), runs.end());
+  size_t middle = runs.size() / 2;
+  double median = runs.size() % 2 ? runs[middle] : (runs[middle - 1] + runs[middle]) / 2;
   LadderStep step;
   step.mode = result.settings.mode;
   step.sampler = result.settings.sampler;
   step.spp = spp;
-  step.seconds = fastest;
+  step.seconds = median;
   step.rays = result.stats.rays.total();
   step.error = measure_error(film_to_compare_image(result.film, reference.srgb), reference.image, reference.edges);
   return step;

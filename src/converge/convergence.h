@@ -50,7 +50,7 @@ struct LadderStep {
   RenderMode mode = RenderMode::path;
   SamplerKind sampler = SamplerKind::jittered;
   int spp = 1;
-  double seconds = 0;  // render time (Embree build excluded), the fastest of the timing runs
+  double seconds = 0;  // render time (Embree build excluded), the median of the timing runs
   uint64_t rays = 0;   // rays cast, all kinds
   ErrorMetrics error;
 };

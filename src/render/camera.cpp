@@ -200,6 +200,11 @@ void apply_camera_override(CameraDesc& camera, const CameraOverride& o) {
     if (camera.projection == Projection::fisheye) camera.aspect = 1;
   }
   if (o.fov_degrees) apply_fov(camera, *o.fov_degrees);
+  if (o.ortho_height) {
+    if (camera.projection != Projection::orthographic)
+      throw std::invalid_argument("--ortho-height sizes an orthographic view: add --camera-type orthographic");
+    camera.ortho_height = *o.ortho_height;
+  }
   apply_lens(camera, o);
   vec3 right = cross(camera.forward, up);
   if (!(length(right) > 1e-6f * length(up))) {
@@ -209,6 +214,25 @@ void apply_camera_override(CameraDesc& camera, const CameraOverride& o) {
     right = cross(camera.forward, up);
   }
   camera.up = normalize(cross(normalize(right), camera.forward));
+}
+
+void frame_orthographic(CameraDesc& camera, vec3 lower, vec3 upper, float aspect, bool keep_position, bool keep_height) {
+  vec3 right = normalize(cross(camera.forward, camera.up));
+  vec3 center = (lower + upper) * 0.5f;
+  // The view's axis passes through the box's centre, or the camera's own place when it was given.
+  vec3 axis_point = keep_position ? camera.position : center;
+  float half_up = 0, half_right = 0, depth = 0;
+  for (int corner = 0; corner < 8; ++corner) {
+    vec3 d = vec3{corner & 1 ? upper.x : lower.x, corner & 2 ? upper.y : lower.y, corner & 4 ? upper.z : lower.z} - axis_point;
+    half_up = std::max(half_up, std::abs(dot(d, camera.up)));
+    half_right = std::max(half_right, std::abs(dot(d, right)));
+    depth = std::max(depth, -dot(d, camera.forward));
+  }
+  // Rays start on the camera's plane: it stands before every corner, by a 5% margin.
+  if (!keep_position) camera.position = center - camera.forward * (1.05f * depth + 1e-6f * std::max(1.0f, max_component(abs(center))));
+  // Every corner inside the view, with the framing camera's 5% margin.
+  float height = 2 * 1.05f * std::max(half_up, half_right / std::max(aspect, 1e-3f));
+  if (!keep_height && height > 0) camera.ortho_height = height;
 }
 
 CameraDesc select_camera(const std::vector<CameraDesc>& cameras, const CameraDesc& framing, const std::string& which,

@@ -47,6 +47,12 @@ inline constexpr const char* framing_camera_name = "frame";
 // std::invalid_argument on a degenerate view or a lens without a focus distance.
 void apply_camera_override(CameraDesc& camera, const CameraOverride& override_);
 
+// An orthographic camera that shows all of the box [lower, upper] in an image of width / height
+// `aspect`, looking along its own direction: moved (unless `keep_position`) so that the box's
+// centre is on its axis and every corner before its plane, and sized (unless `keep_height`) so
+// that every corner is in view with a 5% margin.
+void frame_orthographic(CameraDesc& camera, vec3 lower, vec3 upper, float aspect, bool keep_position, bool keep_height);
+
 // Picks the camera by name or index among `cameras` ("" = the first, or `framing` when there is
 // none; "frame" = `framing`; both set `framed`); throws std::invalid_argument when not found.
 CameraDesc select_camera(const std::vector<CameraDesc>& cameras, const CameraDesc& framing, const std::string& which,

@@ -332,7 +332,13 @@ CameraDesc world_view_camera(const WorldPlacement& world, const SceneSettings& s
   CameraDesc camera = select_camera(world.cameras, framing, which, framed);
   if (options.orbit && !framed)
     throw std::invalid_argument("--orbit turns the framing camera: leave out --camera, or give --camera frame");
+  bool made_orthographic = camera.projection != Projection::orthographic &&
+                           options.camera_override.projection == Projection::orthographic;
   apply_camera_override(camera, options.camera_override);
+  // A view turned orthographic by the flags shows the whole scene, as the framing camera does.
+  if (made_orthographic && world.has_framing_box)
+    frame_orthographic(camera, world.framing_lower, world.framing_upper, image_aspect(settings, options),
+                       options.camera_override.look_from.has_value(), options.camera_override.ortho_height.has_value());
   // A camera placed entirely by the flags is not a framing camera.
   if (options.camera_override.look_from && options.camera_override.look_at) framed = false;
   return camera;

@@ -22,6 +22,7 @@ struct CameraOverride {
   std::optional<vec3> look_from, look_at, up;
   std::optional<float> fov_degrees;
   std::optional<Projection> projection;  // --camera-type
+  std::optional<float> ortho_height;     // --ortho-height: an orthographic view's full height
   std::optional<float> lens_radius, focus_distance;
   std::optional<int> aperture_blades;
 };
@@ -132,7 +133,8 @@ struct RenderOptions {
   // How paths share their ray tracing; every way gives the same image, bit for bit. The batch
   // (all_rays) is the fastest since its random numbers and warps run in SIMD.
   PathBatching path_batching = PathBatching::all_rays;
-  bool quiet = false;
+  bool quiet = false;          // no informational lines or progress on stderr (-q)
+  bool quiet_warnings = false; // no warnings either, only errors (-qq, --quiet)
   bool progress = false;  // print progress to stderr (the CLI sets it when stderr is a terminal)
   // --max-memory: charged for the film, the output image, the light table and the environment
   // map before they are allocated (the command's budget, shared with loading); null = no cap.

@@ -110,3 +110,35 @@ TEST_CASE("camera flags: the .scene camera's panorama attribute sets the project
   CHECK(r.exit_code == 1);
   CHECK(r.err.find("mixed.scene:5:1: 'panorama' cannot be combined with 'fov'\n") != std::string::npos);
 }
+
+namespace {
+
+// The share of pixels where something other than the black background is seen.
+double lit_share(const TestImage& image) {
+  int lit = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x)
+      if (image.at(x, y, 0) + image.at(x, y, 1) + image.at(x, y, 2) > 0) ++lit;
+  return double(lit) / (image.width * image.height);
+}
+
+}  // namespace
+
+TEST_CASE("camera flags: --camera-type orthographic frames the scene, and --ortho-height sets the view's height") {
+  ScratchDir dir("ortho-framing");
+  std::string common = "render " + quoted(source_path("assets/cornell.gltf")) + " --width 32 --height 32 --spp 4 --quiet --env none ";
+  CommandResult framed = run_radiant(common + "-o " + quoted(dir.file("framed.exr")) + " --camera-type orthographic");
+  REQUIRE(framed.exit_code == 0);
+  // Seen face on, the open box fills the frame but for the 5% margin (the view was 2 m tall for a 0.55 m box).
+  double framed_share = lit_share(read_image(dir.file("framed.exr")));
+  CHECK(framed_share > 0.75);
+  CommandResult tall = run_radiant(common + "-o " + quoted(dir.file("tall.exr")) + " --camera-type orthographic --ortho-height 2.2");
+  REQUIRE(tall.exit_code == 0);
+  double tall_share = lit_share(read_image(dir.file("tall.exr")));
+  CHECK(tall_share < 0.1);  // a 0.55 m box in a 2.2 m view: a sixteenth of it
+  CHECK(tall_share > 0.02);
+  CommandResult perspective = run_radiant(common + "-o " + quoted(dir.file("p.exr")) + " --ortho-height 2");
+  CHECK(perspective.exit_code == 2);
+  CHECK(perspective.err.find("--ortho-height") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir.file("p.exr")));
+}

@@ -135,3 +135,29 @@ TEST_CASE("info: each camera and light is listed by index, name and kind, as --c
   CHECK(j.out.find("\"camera_list\"") != std::string::npos);
   CHECK(j.out.find("\"kind\": \"ambient\"") != std::string::npos);
 }
+
+TEST_CASE("info: animations with their lengths and material variants are listed, as --animation and --variant take them") {
+  CommandResult r = run_radiant("info " + quoted(source_path("assets/models/turntable.gltf")));
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.out.find("  animations: 1 (--animation NAME|INDEX)\n    animation 0 'spin': 2 s\n") != std::string::npos);
+  CHECK(r.out.find("  variants:  2 (--variant NAME)\n    variant 0 'orange'\n    variant 1 'blue'\n") != std::string::npos);
+  CommandResult j = run_radiant("info " + quoted(source_path("assets/models/turntable.gltf")) + " --json");
+  REQUIRE(j.exit_code == 0);
+  nlohmann::json info = nlohmann::json::parse(j.out);
+  CHECK(info["animations"][0]["name"] == "spin");
+  CHECK(info["animations"][0]["seconds"] == 2.0);
+  CHECK(info["material_variants"] == nlohmann::json::array({"orange", "blue"}));
+}
+
+TEST_CASE("info: counts agree with their nouns, zero kinds are left out and sizes have one decimal") {
+  CommandResult r = run_radiant("info " + quoted(source_path("assets/showcase.scene")));
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.out.find("5 spheres, 2 planes, 1 cylinder, 1 tube; ") != std::string::npos);
+  CHECK(r.out.find("1 cylinders") == std::string::npos);
+  CommandResult cornell = run_radiant("info " + quoted(source_path("assets/cornell.gltf")));
+  REQUIRE(cornell.exit_code == 0);
+  CHECK(cornell.out.find("  geometry:  32 triangles in 8 meshes, 8 instances (32 placed); 1.") != std::string::npos);
+  CHECK(cornell.out.find(" KiB\n") != std::string::npos);
+  CHECK(cornell.out.find("0 spheres") == std::string::npos);
+  CHECK(cornell.out.find("  textures:  none\n  lights:    none\n") != std::string::npos);
+}

@@ -169,3 +169,24 @@ TEST_CASE("session: set aov is taken when the session writes an EXR, refused for
   png.write_stdin("set aov albedo\nquit\n");
   CHECK(png.wait(120).err.find("line 1: ") != std::string::npos);
 }
+
+TEST_CASE("session: value flags parse as render's, before or after the scene") {
+  ScratchDir dir("session-flag-order");
+  std::string scene = copy_scene(dir).string(), view = dir.file("view.png").string();
+  // The scene last, after value flags; then no scene at all, loaded by the first command.
+  RadiantProcess scene_last({"session", "-o", view, "--spp", "2", "--width", "16", "--height", "8", scene}, piped());
+  scene_last.close_stdin();
+  CommandResult r = scene_last.wait(120);
+  INFO(r.err);
+  CHECK(r.exit_code == 0);
+  CHECK(r.out.find("16x8, 2 spp") != std::string::npos);
+  fs::remove(view);
+  RadiantProcess no_scene({"session", "-o", view, "--spp", "2", "--width", "16", "--height", "8", "-q"}, piped());
+  no_scene.write_stdin("render " + scene + "\ninfo\n");
+  no_scene.close_stdin();
+  r = no_scene.wait(120);
+  INFO(r.err);
+  CHECK(r.exit_code == 0);
+  CHECK(r.out.find("16x8, 2 spp") != std::string::npos);
+  CHECK(r.out.find("settings: --height 8 --log-level warning --spp 2 --width 16\n") != std::string::npos);
+}

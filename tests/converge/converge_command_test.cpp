@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <sstream>
 
@@ -148,4 +150,24 @@ TEST_CASE("converge cli: --reference measures against a given EXR, takes its siz
                                     " --mode path,whitted --spp-ladder 1 --out " + quoted(dir.path));
   CHECK(mixed.exit_code == 2);
   CHECK(mixed.err.find("Whitted and path/naive converge to different ones") != std::string::npos);
+}
+
+TEST_CASE("converge cli: --supersampling says what each step costs and buys in a sentence") {
+  ScratchDir dir("converge-sentence");
+  CommandResult r = run_radiant("converge " + quoted(source_path("assets/showcase.scene")) +
+                                " --supersampling --width 32 --height 18 --spp-ladder 1,9 --reference-spp 64 --samplers grid --out " +
+                                quoted(dir.path));
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  auto rows = read_csv(dir.file("supersampling.csv"));
+  REQUIRE(rows.size() == 3);
+  // The sentence carries the table's own numbers: the time multiple and the edge error as a share of 1 spp's.
+  size_t at = r.out.find("grid: 9 samples per pixel cost ");
+  REQUIRE(at != std::string::npos);
+  double multiple = 0, percent = 0;
+  REQUIRE(std::sscanf(r.out.c_str() + at, "grid: 9 samples per pixel cost %lfx the time of one and cut edge error to %lf%%",
+                      &multiple, &percent) == 2);
+  double table_multiple = std::stod(rows[2][10]);
+  CHECK(std::abs(multiple - table_multiple) <= (table_multiple < 10 ? 0.06 : 0.51));  // one decimal below 10x, none above
+  CHECK(percent == doctest::Approx(100 * std::stod(rows[2][9]) / std::stod(rows[1][9])).epsilon(0.05));
 }

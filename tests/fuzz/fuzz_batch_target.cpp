@@ -40,7 +40,7 @@ FuzzOutcome run_batch_target(const fs::path& folder, const std::string& bytes) {
   return outcome_of([&] {
     std::ifstream in(script);
     cli::BatchSettings settings;
-    settings.quiet = true;
+    settings.log_level = cli::LogLevel::error;
     settings.max_memory_bytes = fuzz_memory_limit;
     settings.adjust_job = [&](cli::RenderJob job) { return tiny_job(std::move(job), outputs); };
     cli::run_script(cli::parse_script(in, script.string(), folder), script.string(), settings);
