@@ -235,7 +235,7 @@ void run_script(const std::vector<BatchStep>& steps, const std::string& script_n
     try {
       RenderJob job = jobs[i];
       job.options.quiet = job.options.quiet || settings.quiet;
-      job.options.progress = isatty(STDERR_FILENO) && !job.options.quiet;
+      job.options.progress = job.options.quiet ? ProgressStyle::none : settings.progress;
       // A render line's own cap holds what is loaded and this render.
       std::optional<MemoryBudget> line_budget;
       if (job.max_memory_bytes) {
@@ -290,10 +290,15 @@ int batch_main(int argc, char** argv) {
                  "Memory cap in GiB for the scenes loaded and every render (default 1/4 of RAM)");
   std::string shard_text;
   app.add_option("--shard", shard_text, "Render only render lines I, I+K, I+2K, ... (from 0) of the script: I/K");
+  std::string progress = "auto";
+  app.add_option("--progress", progress,
+                 "auto (a bar on a terminal, lines in a log), bar, lines (one every 10% or 30 s) or none");
   std::optional<uint64_t> max_memory_bytes;
   std::optional<ShardSpec> shard;
+  ProgressStyle progress_style = ProgressStyle::none;
   try {
     parse_arguments(app, argc, argv);
+    progress_style = parse_progress("--progress", progress, quiet);
     if (!max_memory.empty()) max_memory_bytes = parse_memory_limit("--max-memory", max_memory);
     if (!shard_text.empty()) shard = parse_shard("--shard", shard_text);
   } catch (const CLI::ParseError& e) {
@@ -319,7 +324,7 @@ int batch_main(int argc, char** argv) {
 
   if (shard) steps = shard_steps(steps, *shard);
   try {
-    run_script(steps, script_path, {quiet, allow_external, max_memory_bytes, {}});
+    run_script(steps, script_path, {quiet, allow_external, progress_style, max_memory_bytes, {}});
   } catch (const std::exception& e) {
     std::cerr << "radiant batch: " << e.what() << "\n";
     return exit_failure;

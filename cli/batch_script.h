@@ -35,6 +35,7 @@ std::vector<BatchStep> shard_steps(const std::vector<BatchStep>& steps, const Sh
 struct BatchSettings {
   bool quiet = false;
   bool allow_external_files = false;
+  ProgressStyle progress = ProgressStyle::none;  // of each render (--progress), unless it is quiet
   std::optional<uint64_t> max_memory_bytes;      // --max-memory for the whole script
   std::function<RenderJob(RenderJob)> adjust_job;  // none: each view as written
 };

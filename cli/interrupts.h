@@ -1,6 +1,7 @@
 // SIGINT and SIGTERM. While work whose outputs can be saved is under way (a render and the
 // writing of its outputs), the first signal only asks it to stop: the render ends at its next
-// pixel, what was rendered is written marked partial and committed, and the command exits
+// pixel once every pixel has its first sample (render/pass_schedule.h), what was rendered is
+// written marked partial and committed, and the command exits
 // 128 + the signal (130, 143). At any other time, and at a second signal, the handler removes
 // every temporary (src/output/temporary_registry.h) and exits at once with that code.
 #pragma once

@@ -50,6 +50,7 @@ RenderJob parse_render_line(std::vector<std::string> words, const fs::path& base
   app.add_option("--aov", flags.aovs);
   app.add_option("--crop", flags.crop);
   app.add_option("--noise-threshold", flags.options.noise_threshold)->check(positive_number());
+  app.add_option("--min-spp", flags.options.min_spp)->check(CLI::Range(1, 1 << 24));
   parse_arguments(app, std::move(words));
   // A view of a scene already loaded cannot change what was loaded.
   for (const char* flag : {"--scene", "--variant"})

@@ -183,7 +183,7 @@ class Session {
   RenderJob current_job() {
     RenderJob job = settings_.job(output_, fs::current_path());
     job.options.memory = &budget_;
-    job.options.progress = false;  // stdout reports each render; stderr stays for errors
+    job.options.progress = ProgressStyle::none;  // stdout reports each render; stderr stays for errors
     // The image records the `render` command that makes it again.
     std::vector<std::string> words = {"render", scene_path_, "-o", output_};
     for (const std::string& word : settings_.flag_words()) words.push_back(word);
