@@ -27,6 +27,7 @@
 #include "load_scene.h"
 #include "option_parsing.h"
 #include "render_job.h"
+#include "watch_flags.h"
 #include "render_frames.h"
 #include "render_line.h"
 
@@ -293,14 +294,18 @@ int batch_main(int argc, char** argv) {
   std::string progress = "auto";
   app.add_option("--progress", progress,
                  "auto (a bar on a terminal, lines in a log), bar, lines (one every 10% or 30 s) or none");
+  WatchFlags watch;
+  watch.bind(app, false);
   std::optional<uint64_t> max_memory_bytes;
   std::optional<ShardSpec> shard;
+  Watchers watchers;
   ProgressStyle progress_style = ProgressStyle::none;
   try {
     parse_arguments(app, argc, argv);
     progress_style = parse_progress("--progress", progress, quiet);
     if (!max_memory.empty()) max_memory_bytes = parse_memory_limit("--max-memory", max_memory);
     if (!shard_text.empty()) shard = parse_shard("--shard", shard_text);
+    watchers = make_watchers(watch);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);
     std::cerr << "radiant batch: " << e.what() << "\n";
@@ -324,7 +329,12 @@ int batch_main(int argc, char** argv) {
 
   if (shard) steps = shard_steps(steps, *shard);
   try {
-    run_script(steps, script_path, {quiet, allow_external, progress_style, max_memory_bytes, {}});
+    std::function<RenderJob(RenderJob)> watch_each;
+    if (watchers.any()) watch_each = [&](RenderJob job) {
+      job.watchers = watchers;
+      return job;
+    };
+    run_script(steps, script_path, {quiet, allow_external, progress_style, max_memory_bytes, watch_each});
   } catch (const std::exception& e) {
     std::cerr << "radiant batch: " << e.what() << "\n";
     return exit_failure;

@@ -12,6 +12,7 @@
 #include "option_parsing.h"
 #include "render_frames.h"
 #include "render_job.h"
+#include "watch_flags.h"
 #include "shard_output.h"
 #include "shard_request.h"
 #include "image/image_io.h"
@@ -94,16 +95,23 @@ int render_main(int argc, char** argv) {
   app.add_option("--split", flags.split, "How --shard cuts the work: tiles (default), samples or both");
   app.add_option("--sample-range", flags.sample_range, "Render samples A:B of each pixel (of --spp) to a shard EXR");
   app.add_flag("--skip-existing", skip_existing, "Exit at once when -o already holds this shard, complete");
+  WatchFlags watch;
+  watch.bind(app, true);
   app.set_version_flag("--version", "radiant " RADIANT_VERSION);
+  Watchers watchers;
   try {
     parse_arguments(app, argc, argv);
     flags.finish();
     animation.finish(load_options);
     flags.options.progress = parse_progress("--progress", progress, flags.options.quiet);
+    watchers = make_watchers(watch);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);
     std::cerr << "radiant render: " << e.what() << "\n";
     return exit_usage;
+  } catch (const std::exception& e) {  // the page's port cannot be listened on
+    std::cerr << "radiant render: " << e.what() << "\n";
+    return exit_failure;
   }
   RenderOptions& options = flags.options;
   if (options.time_limit_seconds > 0)
@@ -114,6 +122,7 @@ int render_main(int argc, char** argv) {
   job.stats_path = stats_path;
   job.command_line = command_line_text(argc, argv);
   job.write_metadata = !flags.no_metadata;
+  job.watchers = watchers;
   if (!format.empty()) {
     if (!is_standard_output(output)) {
       std::cerr << "radiant render: --format is for -o - (the extension of '" << output << "' names its format)\n";

@@ -122,7 +122,24 @@ void run_render_job(const std::string& scene_path, PreparedScene& prepared, cons
     }
   }
   if (!job.options.quiet && job.notes) print_render_notes(scene_path, prepared, resolve_settings(prepared, job.options));
+  auto render_start = std::chrono::steady_clock::now();
+  std::optional<ResolvedSettings> watched;
+  if (job.watchers.any()) {
+    watched = resolve_settings(prepared, options);
+    options.on_pass = [&](const Film& film, uint32_t samples) {
+      double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - render_start).count();
+      job.watchers.show(job.output, film, samples, uint32_t(watched->samples.end), elapsed,
+                        {options.exposure, watched->view}, options.quiet);
+    };
+  }
   RenderResult result = render_prepared(prepared, options);
+  if (watched) {
+    // A stopped render ends before its pass is reported: the watchers still get what was rendered.
+    if (result.stats.interrupted || result.stats.stopped_by_time_limit)
+      job.watchers.show(job.output, result.film, uint32_t(result.stats.max_pixel_samples), uint32_t(watched->samples.end),
+                        result.stats.render_seconds, {options.exposure, watched->view}, options.quiet);
+    job.watchers.finished();
+  }
   if (!job.options.quiet)
     for (const std::string& warning : result.warnings) std::cerr << "radiant: warning: " << warning << "\n";
   if (result.stats.interrupted && result.stats.samples == 0) throw_if_interrupted();  // nothing to save

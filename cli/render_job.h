@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -9,6 +10,7 @@
 #include "output/output_paths.h"
 #include "render/render.h"
 #include "render_report.h"
+#include "watch_flags.h"
 
 namespace radiant::cli {
 
@@ -27,6 +29,8 @@ struct RenderJob {
   // A batch line's moment of the scene's animation (--time, --frame): unset = the loaded scene.
   std::optional<double> animation_time;
   std::string animation;
+  // --display-server and --serve: where each pass is shown, shared by the command's renders.
+  Watchers watchers;
 };
 
 // A name whose extension names the image format: the output, or for `-o -` "-.FORMAT".

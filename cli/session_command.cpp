@@ -29,9 +29,11 @@
 #include "option_parsing.h"
 #include "output/output_set.h"
 #include "render_line.h"
+#include "session_input.h"
 #include "session_renderer.h"
 #include "session_settings.h"
 #include "session_view.h"
+#include "watch_flags.h"
 
 namespace radiant::cli {
 
@@ -73,6 +75,7 @@ vec3 parse_numbers(const std::vector<std::string>& words) {
 
 class Session {
  public:
+  void show_renders_in(Watchers watchers) { watchers_ = std::move(watchers); }
   Session(std::string output, SessionSettings settings, uint64_t memory_limit, std::string memory_source,
           bool allow_external)
       : output_(std::move(output)),
@@ -183,6 +186,7 @@ class Session {
   RenderJob current_job() {
     RenderJob job = settings_.job(output_, fs::current_path());
     job.options.memory = &budget_;
+    job.watchers = watchers_;
     job.options.progress = ProgressStyle::none;  // stdout reports each render; stderr stays for errors
     // The image records the `render` command that makes it again.
     std::vector<std::string> words = {"render", scene_path_, "-o", output_};
@@ -248,6 +252,7 @@ class Session {
   std::string scene_path_;
   MemoryCharge scene_memory_;  // what loading the scene charged to the budget
   std::optional<SessionView> view_;  // set once a command moved or turned the camera
+  Watchers watchers_;  // --display-server, --serve: every view shown as it converges
   std::mutex print_mutex_;
   std::atomic<int> last_failure_{exit_ok};
   SessionRenderer renderer_;  // last: its thread stops before the rest goes
@@ -267,11 +272,17 @@ int session_main(int argc, char** argv) {
   app.add_option("-o,--output", output, "The image each render rewrites (.png, .exr, ...)")->required();
   app.add_option("--max-memory", max_memory, "Memory cap in GiB for the session (default 1/4 of RAM)");
   app.add_flag("--allow-external-files", allow_external, "Let scene files refer to files outside their folder");
+  WatchFlags watch;
+  watch.bind(app, true);
   app.allow_extras();
   SessionSettings settings;
   std::optional<uint64_t> max_memory_bytes;
+  std::unique_ptr<SessionInput> input;  // before the page that pushes to it, which stops first
+  Watchers watchers;
   try {
     app.parse(argc, argv);  // the render flags among them are checked as settings
+    input = std::make_unique<SessionInput>(!watch.serve.empty());
+    watchers = make_watchers(watch, [&input](const std::string& line) { input->push(line); });
     if (is_standard_output(output)) throw std::invalid_argument("-o -: a session rewrites its image after every pass; name a file");
     if (!max_memory.empty()) max_memory_bytes = parse_memory_limit("--max-memory", max_memory);
     settings.set_output(output);
@@ -291,6 +302,7 @@ int session_main(int argc, char** argv) {
 
   Session session(output, settings, max_memory_bytes.value_or(default_memory_limit()),
                   max_memory_bytes ? "--max-memory" : default_memory_limit_source, allow_external);
+  session.show_renders_in(watchers);
   std::vector<std::string> first;
   if (!scene_path.empty()) first = {"render", scene_path};
   bool interactive = isatty(STDIN_FILENO);
@@ -300,7 +312,7 @@ int session_main(int argc, char** argv) {
     if (line > 0) {
       if (interactive) std::cerr << "radiant> " << std::flush;
       try {
-        if (!read_command_line(std::cin, text)) break;
+        if (!input->next(text)) break;
         words = split_words(text.substr(0, text.find('#')));
       } catch (const std::invalid_argument& e) {
         session.fail(line, exit_usage, e.what());

@@ -5,6 +5,7 @@
 
 #include "output/output_set.h"
 #include "render_report.h"
+#include "watch_flags.h"
 
 namespace radiant::cli {
 
@@ -93,7 +94,10 @@ void SessionRenderer::render(const SessionRequest& request) {
     // Each pass short of the last replaces the image, so a viewer that reloads shows it sharpen;
     // the finished render is written below, with its statistics.
     options.on_pass = [&](const Film& film, uint32_t samples) {
-      if (samples >= total || stop_) return;
+      if (stop_) return;
+      job.watchers.show(job.output, film, samples, total, std::chrono::duration<double>(Clock::now() - start).count(),
+                        {job.options.exposure, settings.view}, job.options.quiet);
+      if (samples >= total) return;
       RenderResult so_far;  // rays are counted when the render ends: a pass records none
       so_far.settings = settings;
       so_far.settings.spp = int(samples);
@@ -126,6 +130,7 @@ void SessionRenderer::render(const SessionRequest& request) {
       std::lock_guard lock(mutex_);
       last_ = finished;
     }
+    job.watchers.finished();
     report_(request.line, "", &finished);
   } catch (const std::bad_alloc&) {
     report_(request.line, out_of_memory_message(request.scene_path, "rendering", *request.job.options.memory), nullptr);

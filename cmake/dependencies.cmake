@@ -22,3 +22,8 @@ foreach(_target OpenImageIO::OpenImageIO OpenImageIO::OpenImageIO_Util)
     endif()
   endif()
 endforeach()
+
+# cpp-httplib (--serve's page): Debian builds it as a shared library and ships only a pkg-config
+# file, whose flags must match the library's (it was built with OpenSSL, zlib and Brotli).
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(HTTPLIB REQUIRED IMPORTED_TARGET cpp-httplib)

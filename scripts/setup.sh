@@ -8,6 +8,7 @@ packages=(
   build-essential cmake pkg-config
   libembree-dev libopenimageio-dev openimageio-tools libopenexr-dev libpng-dev
   libtinygltf-dev libtinyobjloader-dev libdraco-dev libmeshoptimizer-dev doctest-dev libtbb-dev libcli11-dev nlohmann-json3-dev
+  libcpp-httplib-dev
   python3 python3-matplotlib
 )
 missing=()

@@ -38,32 +38,44 @@ ImageWriteSpec output_spec(const std::string& path, const OutputImage& image) {
   return spec;
 }
 
+// The display values of the color channels (and straight alpha) of `image`, `channels` per pixel;
+// the writer quantizes them to 8 or 16 bits. Float formats keep the film's associated
+// (premultiplied) color, as OpenEXR defines it; display formats store straight alpha, as PNG
+// defines it: the color is divided by its alpha before it is encoded (where alpha is 0 there is
+// no color to divide).
+std::vector<float> display_values(const OutputImage& image, size_t channels) {
+  size_t stride = image.channels.size();
+  bool alpha = channels == 4;
+  std::vector<float> data(size_t(image.width) * image.height * channels);
+  tbb::parallel_for(size_t(0), size_t(image.width) * image.height, [&](size_t i) {
+    const float* p = &image.pixels[i * stride];
+    color3 color = {p[0], p[1], p[2]};
+    if (alpha && p[3] > 0) color = color / p[3];
+    color3 shown = display_encode(color, image.display);
+    for (int c = 0; c < 3; ++c) data[i * channels + c] = shown[c];
+    if (alpha) data[i * channels + 3] = std::clamp(p[3], 0.0f, 1.0f);
+  });
+  return data;
+}
+
 }  // namespace
 
 void write_image(TemporaryFile& file, const OutputImage& image) {
   ImageWriteSpec spec = output_spec(file.target(), image);
   bool as_float = spec.type == PixelType::float32 || spec.type == PixelType::half;
   std::vector<float> data;
-  const float* source = image.pixels.data();
-  if (!as_float) {
-    // The display values of the color channels; the writer quantizes them to 8 or 16 bits.
-    // Float formats keep the film's associated (premultiplied) color, as OpenEXR defines it;
-    // display formats store straight alpha, as PNG defines it: the color is divided by its
-    // alpha before it is encoded (where alpha is 0 there is no color to divide).
-    size_t stride = image.channels.size(), out_stride = spec.channel_names.size();
-    bool alpha = out_stride == 4;
-    data.resize(size_t(image.width) * image.height * out_stride);
-    tbb::parallel_for(size_t(0), size_t(image.width) * image.height, [&](size_t i) {
-      const float* p = &image.pixels[i * stride];
-      color3 color = {p[0], p[1], p[2]};
-      if (alpha && p[3] > 0) color = color / p[3];
-      color3 shown = display_encode(color, image.display);
-      for (int c = 0; c < 3; ++c) data[i * out_stride + c] = shown[c];
-      if (alpha) data[i * out_stride + 3] = std::clamp(p[3], 0.0f, 1.0f);
-    });
-    source = data.data();
-  }
-  write_image_file(file, spec, source);
+  if (!as_float) data = display_values(image, spec.channel_names.size());
+  write_image_file(file, spec, as_float ? image.pixels.data() : data.data());
+}
+
+std::vector<unsigned char> encode_preview_png(const OutputImage& image, std::string& error) {
+  ImageWriteSpec spec;
+  spec.width = image.width;
+  spec.height = image.height;
+  spec.channel_names = has_alpha(image) ? std::vector<std::string>{"R", "G", "B", "A"}
+                                        : std::vector<std::string>{"R", "G", "B"};
+  std::vector<float> data = display_values(image, spec.channel_names.size());
+  return encode_png(spec, data.data(), error);
 }
 
 bool is_float_format(const std::string& path) {

@@ -48,6 +48,10 @@ void check_image_output(const std::string& path);
 // linear radiance, the color associated with the alpha. Throws
 // std::runtime_error naming the target and the writer's reason.
 void write_image(TemporaryFile& file, const OutputImage& image);
+// The image as the bytes of an 8-bit sRGB PNG after its exposure and view transform, as
+// write_image stores a .png, without metadata: a preview to send elsewhere. Empty, with the
+// reason in `error`, on failure.
+std::vector<unsigned char> encode_preview_png(const OutputImage& image, std::string& error);
 
 // Linear to sRGB transfer function (IEC 61966-2-1), for values in [0, 1].
 float linear_to_srgb(float linear);
