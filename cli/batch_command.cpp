@@ -237,7 +237,7 @@ void run_script(const std::vector<BatchStep>& steps, const std::string& script_n
       RenderJob job = jobs[i];
       job.options.quiet = job.options.quiet || !shows(settings.log_level, LogLevel::info);
       job.options.quiet_warnings = job.options.quiet_warnings || !shows(settings.log_level, LogLevel::warning);
-      job.options.progress = isatty(STDERR_FILENO) && !job.options.quiet;
+      job.options.progress = job.options.quiet ? ProgressStyle::none : settings.progress;
       // A render line's own cap holds what is loaded and this render.
       std::optional<MemoryBudget> line_budget;
       if (job.max_memory_bytes) {
@@ -294,18 +294,23 @@ int batch_main(int argc, char** argv) {
                  "Memory cap in GiB for the scenes loaded and every render (default 1/4 of RAM)");
   std::string shard_text;
   app.add_option("--shard", shard_text, "Render only render lines I, I+K, I+2K, ... (from 0) of the script: I/K");
+  std::string progress = "auto";
+  app.add_option("--progress", progress,
+                 "auto (a bar on a terminal, lines in a log), bar, lines (one every 10% or 30 s) or none");
   WatchFlags watch;
   watch.bind(app, false);
   std::optional<uint64_t> max_memory_bytes;
   std::optional<ShardSpec> shard;
   Watchers watchers;
   LogLevel log_level = LogLevel::info;
+  ProgressStyle progress_style = ProgressStyle::none;
   try {
     parse_arguments(app, argc, argv);
+    log_level = log.level();
+    progress_style = parse_progress("--progress", progress, !shows(log_level, LogLevel::info));
     if (!max_memory.empty()) max_memory_bytes = parse_memory_limit("--max-memory", max_memory);
     if (!shard_text.empty()) shard = parse_shard("--shard", shard_text);
     watchers = make_watchers(watch);
-    log_level = log.level();
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);
     std::cerr << "radiant batch: " << e.what() << "\n";
@@ -334,7 +339,7 @@ int batch_main(int argc, char** argv) {
       job.watchers = watchers;
       return job;
     };
-    run_script(steps, script_path, {log_level, allow_external, max_memory_bytes, watch_each});
+    run_script(steps, script_path, {log_level, allow_external, progress_style, max_memory_bytes, watch_each});
   } catch (const std::exception& e) {
     std::cerr << "radiant batch: " << e.what() << "\n";
     return exit_failure;

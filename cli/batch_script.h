@@ -36,6 +36,7 @@ std::vector<BatchStep> shard_steps(const std::vector<BatchStep>& steps, const Sh
 struct BatchSettings {
   LogLevel log_level = LogLevel::info;  // -q, -qq, --quiet, --log-level: the quietest of it and a line's own
   bool allow_external_files = false;
+  ProgressStyle progress = ProgressStyle::none;  // of each render (--progress), unless it is quiet
   std::optional<uint64_t> max_memory_bytes;      // --max-memory for the whole script
   std::function<RenderJob(RenderJob)> adjust_job;  // none: each view as written
 };

@@ -137,7 +137,7 @@ ReferenceNote note_for(const Reference& reference, RenderMode mode, const std::s
 }
 
 void progress(const RenderOptions& options, const std::string& text) {
-  if (options.progress) std::cerr << "converge: " << text << "\n";
+  if (options.progress != ProgressStyle::none) std::cerr << "converge: " << text << "\n";
 }
 
 // One series per mode; path and naive share the path tracer's reference, Whitted has its own.
@@ -395,7 +395,8 @@ int converge_main(int argc, char** argv) {
     std::cerr << "radiant converge: " << e.what() << "\n";
     return exit_usage;
   }
-  flags.render.options.progress = isatty(STDERR_FILENO) && !flags.render.options.quiet;
+  flags.render.options.progress =
+      isatty(STDERR_FILENO) && !flags.render.options.quiet ? ProgressStyle::bar : ProgressStyle::none;
   try {
     run_converge(scene_path, flags, modes, ladder, command_line_text(argc, argv));
   } catch (const std::invalid_argument& e) {

@@ -1,8 +1,9 @@
 // SIGINT, SIGTERM and every other catchable signal that would end the process (SIGHUP, SIGQUIT,
 // SIGUSR1, SIGALRM, ...; not the faults). While work whose outputs can be saved is under way (a
 // render and the writing of its outputs), the first signal only asks it to stop: the render ends
-// at its next pixel, what was rendered is written marked partial and committed, and the command
-// exits 128 + the signal (130, 143, 129, ...). At any other time, at a second signal, and at
+// at its next pixel once every pixel has its first sample (render/pass_schedule.h), what was
+// rendered is written marked partial and committed, and the command exits 128 + the signal
+// (130, 143, 129, ...). At any other time, at a second signal, and at
 // SIGPIPE (its reader is gone: nothing more can be delivered), the handler removes every
 // temporary (src/output/temporary_registry.h) and exits at once with that code (SIGPIPE: 141).
 // A signal ignored when radiant starts (nohup) stays ignored.

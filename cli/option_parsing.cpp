@@ -1,5 +1,7 @@
 #include "option_parsing.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -310,6 +312,16 @@ void parse_arguments(CLI::App& app, std::vector<std::string> words) {
   app.parse(words);
 }
 
+ProgressStyle parse_progress(const std::string& flag, const std::string& text, bool quiet) {
+  ProgressStyle style;
+  if (text == "auto") style = isatty(STDERR_FILENO) ? ProgressStyle::bar : ProgressStyle::lines;
+  else if (text == "bar") style = ProgressStyle::bar;
+  else if (text == "lines") style = ProgressStyle::lines;
+  else if (text == "none") style = ProgressStyle::none;
+  else throw CLI::ValidationError(flag, "'" + text + "' is not auto, bar, lines or none");
+  return quiet ? ProgressStyle::none : style;
+}
+
 void RenderFlags::bind(CLI::App& app, bool image_flags) {
   if (image_flags) {
     app.add_option("--width", width, "Image width in pixels (default: from the scene or camera)")->check(CLI::Range(1, 65536));
@@ -336,6 +348,14 @@ void RenderFlags::bind(CLI::App& app, bool image_flags) {
                  "Paths each camera sample sends on from its first hit (path tracing; default 1): its direct light "
                  "is taken once, its bounce this many times")
       ->check(CLI::Range(1, max_indirect_paths));
+  app.add_option("--clamp-direct", options.clamp_direct,
+                 "Path tracing: the most a sample's light from its first hit may add, per channel (0 = off; "
+                 "cuts fireflies, darkens bright light)")
+      ->check(number_in(0, std::numeric_limits<float>::max()));
+  app.add_option("--clamp-indirect", options.clamp_indirect,
+                 "Path tracing: the most each bounce's light may add to a sample, per channel (0 = off; cuts "
+                 "fireflies, darkens bright indirect light)")
+      ->check(number_in(0, std::numeric_limits<float>::max()));
   app.add_option("--threads", options.threads, "Worker threads (default: all cores); never changes the image")->check(CLI::Range(0, 1024));
   app.add_option("--seed", options.seed, "Random seed");
   app.add_option("--sampler", sampler, "grid, random, jittered (Whitted default) or sobol (path default)");

@@ -45,6 +45,9 @@ ShardSpec parse_shard(const std::string& flag, const std::string& text);
 ShardSplit parse_split(const std::string& flag, const std::string& text);
 SampleRange parse_sample_range(const std::string& flag, const std::string& text);
 std::vector<std::string> parse_aovs(const std::string& flag, const std::string& text);
+// --progress auto|bar|lines|none as the style a command prints: auto is the bar when stderr is a
+// terminal and lines when it is not (a log); none when `quiet`.
+ProgressStyle parse_progress(const std::string& flag, const std::string& text, bool quiet);
 // --time-limit's check: seconds in (0, max_time_limit_seconds] (CLI::PositiveNumber lets NaN
 // through, and 1e308 seconds overflows the deadline).
 CLI::Validator time_limit_range();

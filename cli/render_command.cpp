@@ -79,6 +79,13 @@ int render_main(int argc, char** argv) {
       ->check(time_limit_range());
   app.add_option("--noise-threshold", flags.options.noise_threshold, "Adaptive sampling: stop pixels under this relative error")
       ->check(positive_number());
+  app.add_option("--min-spp", flags.options.min_spp,
+                 "Adaptive sampling: samples every pixel takes before it may stop (default: from the threshold, "
+                 "as Cycles)")
+      ->check(CLI::Range(1, 1 << 24));
+  std::string progress = "auto";
+  app.add_option("--progress", progress,
+                 "auto (a bar on a terminal, lines in a log), bar, lines (one every 10% or 30 s) or none");
   app.add_option("--crop", flags.crop, "Render only pixels X0,Y0,X1,Y1 (half-open)");
   app.add_option("--aov", flags.aovs, "Extra EXR channels: albedo,normal,depth,variance,spp");
   app.add_option("--stats", stats_path, "Write render statistics as JSON (- for standard output)");
@@ -97,6 +104,7 @@ int render_main(int argc, char** argv) {
     parse_arguments(app, argc, argv);
     flags.finish();
     animation.finish(load_options);
+    flags.options.progress = parse_progress("--progress", progress, flags.options.quiet);
     watchers = make_watchers(watch);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);
@@ -107,7 +115,6 @@ int render_main(int argc, char** argv) {
     return exit_failure;
   }
   RenderOptions& options = flags.options;
-  options.progress = isatty(STDERR_FILENO) && !options.quiet;
   if (options.time_limit_seconds > 0)
     options.deadline = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.time_limit_seconds));
   RenderJob job;

@@ -67,13 +67,14 @@ ImageMetadata job_metadata(const std::string& scene_path, const RenderJob& job, 
 }
 
 // The image to write: what the film holds with its record, denoised with --denoise, marked
-// partial when a signal stopped the render, and in EXR with the per-pixel sample counts, which
-// say how far each pixel got (an HDR file has no room for them, and asking would lose the image).
+// partial when a signal or the time limit stopped the render, and in EXR with the per-pixel
+// sample counts, which say how far each pixel got (an HDR file has no room for them, and asking
+// would lose the image).
 OutputImage output_image(const std::string& scene_path, const RenderJob& job, const RenderResult& result,
                          double& denoise_seconds) {
   std::vector<std::string> aovs = job.options.aovs;
-  bool partial = result.stats.interrupted;
-  if (partial && is_exr_format(image_format_name(job)) && std::find(aovs.begin(), aovs.end(), "spp") == aovs.end())
+  std::string partial = partial_reason(result);
+  if (!partial.empty() && is_exr_format(image_format_name(job)) && std::find(aovs.begin(), aovs.end(), "spp") == aovs.end())
     aovs.push_back("spp");
   OutputImage image = film_to_image(result.film, aovs);
   if (job.options.denoise) {
@@ -83,7 +84,7 @@ OutputImage output_image(const std::string& scene_path, const RenderJob& job, co
   }
   set_output_encoding(image, job.options, result.settings);
   image.metadata = job_metadata(scene_path, job, result);
-  if (partial) image.metadata.emplace_back("radiant:partial", std::string("interrupted by ") + signal_name(interrupt_signal()));
+  if (!partial.empty()) image.metadata.emplace_back("radiant:partial", partial);
   return image;
 }
 
@@ -171,7 +172,7 @@ void run_render_job(const std::string& scene_path, PreparedScene& prepared, cons
   tbb::task_arena(worker_threads(options.threads)).execute([&] {
     if (writes_shard(options)) {
       ShardInfo info = make_shard_info(prepared, result.settings, options, job.shard_request_hash);
-      if (result.stats.interrupted) info.partial = std::string("interrupted by ") + signal_name(interrupt_signal());
+      info.partial = partial_reason(result);
       write_shard(outputs.create(job.output), result.film, info, job_metadata(scene_path, job, result), options.memory);
     } else {
       write_image(output_file(outputs, job.output, job.format), output_image(scene_path, job, result, times.denoise));

@@ -45,6 +45,8 @@ void bind_render_line_flags(CLI::App& app, RenderFlags& flags, RenderJob& job) {
   app.add_option("--crop", flags.crop, "Render only pixels X0,Y0,X1,Y1 (half-open)");
   app.add_option("--noise-threshold", flags.options.noise_threshold, "Adaptive sampling: stop pixels under this relative error")
       ->check(positive_number());
+  app.add_option("--min-spp", flags.options.min_spp, "Adaptive sampling: samples every pixel takes first")
+      ->check(CLI::Range(1, 1 << 24));
 }
 
 RenderJob parse_render_line(std::vector<std::string> words, const fs::path& base, bool with_animation) {

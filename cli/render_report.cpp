@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "interrupts.h"
 #include "json_output.h"
 #include "option_parsing.h"
 #include "sampling/pixel_filter.h"
@@ -35,10 +36,17 @@ std::string render_summary(const std::string& output, const RenderResult& r, con
                   100.0 * r.stats.estimated_relative_error);
     line += buffer;
   }
-  if (r.stats.stopped_by_time_limit)
-    line += ", time limit reached at " + std::to_string(r.stats.samples / std::max<size_t>(1, r.film.pixels.size())) + " spp";
+  if (r.stats.stopped_by_time_limit) line += ", time limit reached at " + std::to_string(r.stats.samples_reached) + " spp";
   if (r.stats.interrupted) line += ", interrupted: partial image";
   return line;
+}
+
+std::string partial_reason(const RenderResult& r) {
+  std::string reached = " at " + std::to_string(r.stats.samples_reached) + " of " +
+                        std::to_string(r.settings.samples.end - r.settings.samples.begin) + " samples per pixel";
+  if (r.stats.interrupted) return std::string("interrupted by ") + signal_name(interrupt_signal()) + reached;
+  if (r.stats.stopped_by_time_limit) return "time limit reached" + reached;
+  return "";
 }
 
 RenderRecord render_record(const std::string& scene_path, const std::string& command_line, uint32_t seed,
@@ -49,7 +57,9 @@ RenderRecord render_record(const std::string& scene_path, const std::string& com
   record.scene = scene_path;
   record.mode = mode_name(r.settings.mode);
   record.sampler = sampler_name(r.settings.sampler);
-  record.spp = uint32_t(r.settings.spp);
+  // A stopped render records what every pixel reached: the image is that many samples' worth.
+  bool stopped = r.stats.stopped_by_time_limit || r.stats.interrupted;
+  record.spp = stopped ? r.stats.samples_reached : uint32_t(r.settings.spp);
   record.seed = seed;
   record.render_seconds = r.stats.render_seconds;
   record.rays = r.stats.rays.total();

@@ -32,6 +32,9 @@ std::string render_stats_json(const std::string& scene_path, const std::string& 
 // made it from `scene_path` with `seed`.
 RenderRecord render_record(const std::string& scene_path, const std::string& command_line, uint32_t seed,
                            const RenderResult& result);
+// Why the image holds fewer samples than asked ("time limit reached at 51 of 100000 samples per
+// pixel", "interrupted by SIGINT at 8 of 256 samples per pixel"), or "" for a complete render.
+std::string partial_reason(const RenderResult& result);
 // Peak resident memory of this process in bytes.
 size_t peak_memory_bytes();
 

@@ -223,8 +223,8 @@ class Session {
   RenderJob job_of(const SessionSettings& settings) {
     RenderJob job = settings.job(output_, fs::current_path());
     job.options.memory = &budget_;
-    job.options.progress = false;  // stdout reports each render; stderr stays for errors
     job.watchers = watchers_;
+    job.options.progress = ProgressStyle::none;  // stdout reports each render; stderr stays for errors
     // The image records the `render` command that makes it again.
     std::vector<std::string> words = {"render", scene_path_, "-o", output_};
     for (const std::string& word : settings.flag_words()) words.push_back(word);

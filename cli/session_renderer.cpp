@@ -81,6 +81,7 @@ void SessionRenderer::render(const SessionRequest& request) {
     PreparedScene& prepared = *request.scene;
     RenderOptions options = job.options;
     options.stop_request = &stop_;
+    options.stop_completes_first_pass = false;  // a stopped render is replaced, never written
     prepare_view(prepared, options);
     PhaseTimes times;
     times.build = prepared.build_seconds;
@@ -127,6 +128,8 @@ void SessionRenderer::render(const SessionRequest& request) {
     times.render = result.stats.render_seconds;
     FinishedRender finished;
     finished.image = image_of(result.film, result);
+    if (std::string partial = partial_reason(result); !partial.empty() && job.write_metadata)
+      finished.image.metadata.emplace_back("radiant:partial", partial);
     auto write_start = Clock::now();
     OutputSet outputs;
     write_image(outputs.create(job.output), finished.image);

@@ -79,14 +79,28 @@ FilmSampleStats film_sample_stats(const Film& film) {
   return stats;
 }
 
-size_t mark_unconverged_pixels(const Film& film, float threshold, std::vector<uint8_t>& active) {
+size_t mark_unconverged_pixels(const Film& film, float threshold, std::vector<uint8_t>& unconverged,
+                               std::vector<uint8_t>& active) {
+  unconverged.assign(film.pixels.size(), 0);
   active.assign(film.pixels.size(), 0);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, film.pixels.size(), block_pixels),
+                    [&](const tbb::blocked_range<size_t>& range) {
+                      for (size_t i = range.begin(); i < range.end(); ++i)
+                        unconverged[i] = pixel_relative_error(film.pixels[i]) > threshold;
+                    });
+  int width = film.width, height = film.height;
   return tbb::parallel_reduce(
-      tbb::blocked_range<size_t>(0, film.pixels.size(), block_pixels), size_t(0),
-      [&](const tbb::blocked_range<size_t>& range, size_t unconverged) {
-        for (size_t i = range.begin(); i < range.end(); ++i)
-          unconverged += active[i] = pixel_relative_error(film.pixels[i]) > threshold;
-        return unconverged;
+      tbb::blocked_range<int>(0, height), size_t(0),
+      [&](const tbb::blocked_range<int>& rows, size_t count) {
+        for (int y = rows.begin(); y < rows.end(); ++y)
+          for (int x = 0; x < width; ++x) {
+            bool any = false;
+            for (int ny = std::max(0, y - 1); ny <= std::min(height - 1, y + 1) && !any; ++ny)
+              for (int nx = std::max(0, x - 1); nx <= std::min(width - 1, x + 1) && !any; ++nx)
+                any = unconverged[size_t(ny) * width + nx];
+            count += active[size_t(y) * width + x] = any;
+          }
+        return count;
       },
       std::plus<size_t>());
 }

@@ -25,8 +25,12 @@ struct FilmSampleStats {
 // blocks' sums are added in order.
 FilmSampleStats film_sample_stats(const Film& film);
 
-// Sets active[i] to whether pixel i's relative error is above `threshold` (active is resized to
-// the film); returns how many are.
-size_t mark_unconverged_pixels(const Film& film, float threshold, std::vector<uint8_t>& active);
+// Sets active[i] to whether pixel i or one of its eight neighbours has a relative error above
+// `threshold` (both vectors are resized to the film; `unconverged` keeps the pixels' own verdict);
+// returns how many are active. The neighbourhood makes the estimate robust where a pixel's own
+// samples all agree by chance (every one missed the light, so its variance reads zero) while the
+// pixels around it are still noisy, as Cycles dilates its mask.
+size_t mark_unconverged_pixels(const Film& film, float threshold, std::vector<uint8_t>& unconverged,
+                               std::vector<uint8_t>& active);
 
 }  // namespace radiant

@@ -11,6 +11,7 @@
 #include "integrators/hit_shading.h"
 #include "integrators/surface_lanes.h"
 #include "integrators/light_choice_point.h"
+#include "integrators/sample_clamp.h"
 #include "integrators/shadow.h"
 #include "lights/area_light.h"
 #include "lights/delta_light.h"
@@ -305,7 +306,7 @@ struct PathVariant {
     if (!id.valid()) {
       // Depth 0 is the camera ray, also after it passed alpha cutouts: it sees the backdrop.
       if (depth == 0) {
-        if (gathers) radiance += throughput * camera_background<E>(ctx, ray.direction);
+        if (gathers) radiance += clamp_contribution(ctx, throughput * camera_background<E>(ctx, ray.direction), -1);
       } else if (gathers && enabled<E>(ctx.effects, effect_environment)) {
         color3 background = eval_environment(lights, normalize(ray.direction));
         float weight = 1;
@@ -318,7 +319,7 @@ struct PathVariant {
               environment_pdf(lights, path.previous_normal, normalize(ray.direction));
           weight = power_heuristic(path.previous_pdf, light_pdf);
         }
-        radiance += throughput * background * weight;
+        radiance += clamp_contribution(ctx, throughput * background * weight, depth - 1);
       }
       return false;
     }
@@ -355,11 +356,11 @@ struct PathVariant {
               area_light_pdf(light, path.previous_position, hit.position, hit.geometric_normal);
           weight = power_heuristic(path.previous_pdf, light_pdf);
         }
-        radiance += throughput * m.emission * weight;
+        radiance += clamp_contribution(ctx, throughput * m.emission * weight, depth - 1);
       }
     }
     if (m.unlit) {
-      if (gathers) radiance += throughput * m.base_color;
+      if (gathers) radiance += clamp_contribution(ctx, throughput * m.base_color, depth - 1);
       return false;
     }
     // Vertex `depth` gathers light only below max_depth; the emission above completed the
@@ -422,10 +423,10 @@ struct PathVariant {
     if (LightSampling && gathers && !is_pure_delta(m)) {
       sample_one_light<E>(ctx, hit, bsdf, f, here, sample, depth, drawn, counts, light);
       if (light.traces) {
-        light.unblocked = throughput * light.unblocked;
-        light.blocked = throughput * light.blocked;
+        light.unblocked = clamp_contribution(ctx, throughput * light.unblocked, depth);
+        light.blocked = clamp_contribution(ctx, throughput * light.blocked, depth);
       } else {
-        path.radiance += throughput * light.unblocked;
+        path.radiance += clamp_contribution(ctx, throughput * light.unblocked, depth);
       }
     }
     if (!scattered || is_black(scattered->weight)) return false;
@@ -816,7 +817,7 @@ struct PathVariant {
     light.traces = l.lit[i];
     if (light.traces) {
       counts.shadow++;
-      light.unblocked = {l.light_r[i], l.light_g[i], l.light_b[i]};
+      light.unblocked = clamp_contribution(ctx, {l.light_r[i], l.light_g[i], l.light_b[i]}, path.depth);
       light.blocked = throughput * color3{};
       light.shadow_ray.origin = {l.shadow_ox[i], l.shadow_oy[i], l.shadow_oz[i]};
       light.shadow_ray.direction = {l.shadow_dx[i], l.shadow_dy[i], l.shadow_dz[i]};

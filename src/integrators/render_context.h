@@ -75,6 +75,9 @@ struct RenderContext {
   // first hit's own light is gathered once, its bounce sampled this many times, each 1/split.
   int split = 1;
   float contribution_cutoff = 0.001f;
+  // Cycles' sample clamps (integrators/sample_clamp.h; 0 = off): the light gathered at a path's
+  // first hit, and at its later vertices.
+  float clamp_direct = 0, clamp_indirect = 0;
   // What camera rays that escape see (--background); the environment still lights what they
   // hit, and is seen in reflections and through glass.
   CameraBackground camera_background = CameraBackground::environment;

@@ -22,6 +22,7 @@
 #include "integrators/whitted.h"
 #include "materials/volume_absorption.h"
 #include "render/camera.h"
+#include "render/pass_schedule.h"
 #include "render/progress_meter.h"
 #include "sampling/pixel_filter.h"
 
@@ -79,6 +80,7 @@ RenderContext make_context(const PreparedScene& prepared, const ResolvedSettings
   static_assert(max_indirect_paths <= max_batch_paths, "a batch holds every sub-path of a camera sample");
   ctx.split = s.indirect_paths;
   ctx.contribution_cutoff = options.contribution_cutoff;
+  ctx.clamp_direct = options.clamp_direct, ctx.clamp_indirect = options.clamp_indirect;
   ctx.camera_background = camera_background_of(s);
   ctx.background_color = s.background_color;
   return ctx;
@@ -99,17 +101,19 @@ Integrator select_integrator(const ResolvedSettings& s) {
   return select_path(s.compiled_variant);
 }
 
-// Whether the render must stop before its samples are all taken: checked before every pixel, so
-// a stop lands within one pixel's samples of a pass at any image size. Once one thread sees it,
-// every thread does, and the film keeps exactly the samples taken.
+// Whether the render must stop before its samples are all taken: checked before every pixel once
+// armed (after the first pass), so a stop lands within one pixel's samples of a pass at any image
+// size. Once one thread sees it, every thread does, and the film keeps exactly the samples taken.
 struct StopCheck {
   const std::atomic<int>* request = nullptr;  // a signal
   std::optional<Clock::time_point> deadline;  // the time limit
+  std::atomic<bool> armed{true};              // false: the pass under way ends whatever is asked
   mutable std::atomic<bool> stopped{false};
 
   bool requested() const { return request && request->load(std::memory_order_relaxed) != 0; }
   bool operator()() const {
     if (stopped.load(std::memory_order_relaxed)) return true;
+    if (!armed.load(std::memory_order_relaxed)) return false;
     if (!requested() && (!deadline || Clock::now() < *deadline)) return false;
     stopped.store(true, std::memory_order_relaxed);
     return true;
@@ -422,54 +426,57 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
         start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limit)));
   }
   uint64_t pixels = uint64_t(width) * uint64_t(height);
-  ProgressMeter progress(options.progress && !options.quiet, pixels * uint64_t(s.samples.end - s.samples.begin),
+  uint32_t range = s.samples.end - s.samples.begin;
+  ProgressMeter progress(options.quiet ? ProgressStyle::none : options.progress, pixels * uint64_t(range), range,
                          stop.deadline);
   PixelFilter filter = make_pixel_filter(s.filter, s.filter_radius);
   PassRunner runner{ctx, s, select_integrator(s), frame, filter, want_aovs, s.transparent, want_halves,
                     options.path_batching, options.seed, result.film, counts, stop, progress};
 
-  std::vector<uint8_t> active;
-  uint32_t done = s.samples.begin, total = s.samples.end;
-  // One pass for a plain render; growing passes when a budget or a noise target may stop early,
-  // or when someone watches the image sharpen.
+  PassSchedule schedule;
+  schedule.begin = s.samples.begin, schedule.end = s.samples.end;
+  // Growing passes when a budget, a signal or a noise target may stop the render early, or when
+  // someone watches the image sharpen; one pass otherwise.
   bool progressive = bool(options.on_pass);
-  uint32_t pass = (adaptive || timed || progressive) ? std::min<uint32_t>(total - done, adaptive ? 8u : 1u) : total - done;
+  schedule.progressive = adaptive || timed || progressive || options.stop_request;
+  if (adaptive) schedule.min_samples = adaptive_min_samples(options.noise_threshold, options.min_spp, uint32_t(s.spp));
+  std::vector<uint8_t> unconverged, active;
+  uint32_t done = s.samples.begin, total = s.samples.end;
   while (done < total) {
-    uint32_t end = std::min(total, done + pass);
-    arena.execute([&] { runner.run(done, end, active); });
-    done = end;
-    result.stats.passes++;
+    uint32_t end = next_pass_end(schedule, done);
+    if (timed && done > s.samples.begin) {
+      // Passes that fit in the time left keep every pixel at the same number of samples.
+      double remaining = std::chrono::duration<double>(*stop.deadline - Clock::now()).count();
+      double per_sample = seconds_since(start) / (done - s.samples.begin);
+      double fitting = std::max(0.0, remaining / (per_sample * 1.1));
+      end = done + uint32_t(std::min<double>(end - done, fitting));
+      if (end == done) {
+        result.stats.stopped_by_time_limit = true;
+        break;
+      }
+    }
+    // The first pass always ends, so that a stopped render has a sample in every pixel.
+    stop.armed = done > s.samples.begin || !options.stop_completes_first_pass;
+    if (!stop.armed || !stop()) {
+      arena.execute([&] { runner.run(done, end, active); });
+      result.stats.passes++;
+    }
     if (stop.stopped) {
       result.stats.interrupted = stop.requested();
       result.stats.stopped_by_time_limit = !result.stats.interrupted;
       break;
     }
+    done = end;
+    progress.set_samples_reached(done - s.samples.begin);
     if (progressive) options.on_pass(result.film, done);
-    if (adaptive) {
+    if (adaptive && done - s.samples.begin >= schedule.min_samples && done < total) {
       size_t remaining = 0;
-      arena.execute([&] { remaining = mark_unconverged_pixels(result.film, options.noise_threshold, active); });
+      arena.execute([&] { remaining = mark_unconverged_pixels(result.film, options.noise_threshold, unconverged, active); });
       if (remaining == 0) break;
       progress.set_remaining(uint64_t(remaining) * (total - done));
     }
-    if (timed) {
-      // Passes that fit in the time left keep every pixel at the same number of samples.
-      double remaining = std::chrono::duration<double>(*stop.deadline - Clock::now()).count();
-      double per_sample = seconds_since(start) / done;
-      uint32_t next = std::max<uint32_t>(1, pass * 2);
-      if (remaining <= per_sample * next * 1.1) {
-        next = uint32_t(std::max(0.0, remaining / (per_sample * 1.1)));
-        if (next == 0) {
-          result.stats.stopped_by_time_limit = done < total;
-          break;
-        }
-      }
-      pass = next;
-    } else if (adaptive) {
-      pass = std::min<uint32_t>(pass * 2, 64);
-    } else if (progressive) {
-      pass = done - s.samples.begin;  // doubles the samples each pass
-    }
   }
+  result.stats.samples_reached = done - s.samples.begin;
   result.stats.render_seconds = seconds_since(start);
   result.stats.build_seconds = prepared.build_seconds;
   for (const RayCounts& c : counts) result.stats.rays += c;
@@ -497,13 +504,14 @@ int worker_threads(int requested) {
 }
 
 uint64_t render_image_bytes(int width, int height, size_t channels, bool with_aovs, bool with_alpha, bool with_halves) {
-  // A film pixel (with its AOV and coverage sums when kept), a sample count and an activity
-  // byte; the output image's floats; for 8-bit formats three more floats a pixel (four with
-  // alpha) and three bytes a channel: the PNG encoder's filtered rows, its compressed pieces and
-  // the file they make (deflate's output exceeds its input by a fraction of a percent at most,
-  // which the pixel's other bytes cover).
+  // A film pixel (with its AOV, coverage and half-image sums when kept), a sample count and two
+  // activity bytes (adaptive sampling's verdict on the pixel and on its neighbourhood); the
+  // output image's floats; for 8-bit formats three more floats a pixel (four with alpha) and
+  // three bytes a channel: the PNG encoder's filtered rows, its compressed pieces and the file
+  // they make (deflate's output exceeds its input by a fraction of a percent at most, which the
+  // pixel's other bytes cover).
   uint64_t display_channels = with_alpha ? 4 : 3;
-  uint64_t per_pixel = film_pixel_bytes(with_aovs, with_alpha, with_halves) + sizeof(uint32_t) + 1 + channels * sizeof(float) +
+  uint64_t per_pixel = film_pixel_bytes(with_aovs, with_alpha, with_halves) + sizeof(uint32_t) + 2 + channels * sizeof(float) +
                        display_channels * (sizeof(float) + 3);
   return saturating_multiply(uint64_t(std::max(width, 0)) * uint64_t(std::max(height, 0)), per_pixel);
 }

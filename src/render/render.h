@@ -87,6 +87,9 @@ struct RenderStats {
   RayCounts rays;
   uint64_t samples = 0;
   int passes = 0;
+  // The samples per pixel every pixel reached (of its sample range), counting complete passes
+  // only; a stopped render's pixels may hold up to one pass more.
+  uint32_t samples_reached = 0;
   uint32_t min_pixel_samples = 0, max_pixel_samples = 0;
   uint32_t median_pixel_samples = 0, p90_pixel_samples = 0;  // the distribution adaptive sampling gives
   float estimated_relative_error = 0;  // mean over pixels of the relative standard error

@@ -58,6 +58,13 @@ enum class PathBatching {
   all_rays,
 };
 
+// How a render reports its progress on stderr.
+enum class ProgressStyle {
+  none,
+  bar,    // one line redrawn in place, erased at the end (a terminal)
+  lines,  // a line at least every 10% or 30 s, with the samples reached, elapsed time and ETA (logs)
+};
+
 // --env NAME: a built-in environment (docs/lights.md, "Default lighting"); a file goes to env_map.
 enum class EnvironmentPreset { studio, white, none };
 
@@ -107,10 +114,14 @@ struct RenderOptions {
   // When set and nonzero, the render stops at the next pixel, or the next sample of a tile traced in
   // packets (the CLI's SIGINT/SIGTERM handler).
   const std::atomic<int>* stop_request = nullptr;
-  // Progressive rendering (`radiant session`): when set, passes grow from one sample per pixel
-  // (1, 2, 4, ...) and this is called after each complete pass with the film and the samples
-  // per pixel it holds. Each pixel still adds its samples in index order, so the final film is
-  // the one-pass render's, bit for bit.
+  // A stop (the time limit or stop_request) waits for the first pass, one sample per pixel, so the
+  // image it leaves has no empty pixel. A session's replaced render, discarded anyway, need not.
+  bool stop_completes_first_pass = true;
+  // Progressive rendering (`radiant session`): this is called after each complete pass with the
+  // film and the samples per pixel it holds. Passes grow from one sample per pixel (1, 2, 4, ...)
+  // whenever a render may stop early: with this, a time limit, a stop_request or a noise
+  // threshold (render/pass_schedule.h). Each pixel still adds its samples in index order, so the
+  // final film is the one-pass render's, bit for bit.
   std::function<void(const Film& film, uint32_t samples)> on_pass;
   // How the image is stored (src/image/view_transform.h): exposure in stops and the view
   // transform of 8- and 16-bit outputs (the scene's `view` setting, else standard), their bit
@@ -129,13 +140,22 @@ struct RenderOptions {
   // --texture-filter: how texture lookups filter (trilinear: mip-mapped by the pixel's footprint).
   TextureFilterMode texture_filter = TextureFilterMode::trilinear;
   float noise_threshold = 0;      // 0 = off
+  // --min-spp: the samples every pixel takes before adaptive sampling may stop it; 0 derives
+  // them from the threshold as Cycles does (render/pass_schedule.h).
+  uint32_t min_spp = 0;
+  // --clamp-direct, --clamp-indirect: the largest component a path's light from its first hit,
+  // and from each later bounce, may add to a sample, as Cycles' sample clamps (0 = off). Fewer
+  // fireflies, at the price of energy: a clamped render is darker where light is concentrated.
+  float clamp_direct = 0, clamp_indirect = 0;
   float contribution_cutoff = 0.001f;  // Whitted: stop recursing below this weight
   // How paths share their ray tracing; every way gives the same image, bit for bit. The batch
   // (all_rays) is the fastest since its random numbers and warps run in SIMD.
   PathBatching path_batching = PathBatching::all_rays;
   bool quiet = false;          // no informational lines or progress on stderr (-q)
   bool quiet_warnings = false; // no warnings either, only errors (-qq, --quiet)
-  bool progress = false;  // print progress to stderr (the CLI sets it when stderr is a terminal)
+  // Progress on stderr (render/progress_meter.h): none, a line redrawn in place on a terminal, or
+  // whole lines for logs. The CLI's --progress auto picks the bar on a terminal, lines off it.
+  ProgressStyle progress = ProgressStyle::none;
   // --max-memory: charged for the film, the output image, the light table and the environment
   // map before they are allocated (the command's budget, shared with loading); null = no cap.
   MemoryBudget* memory = nullptr;

@@ -69,3 +69,39 @@ TEST_CASE("progress: under --time-limit the estimate never exceeds the time left
   // loaded CI machine the last one came at 44%.)
   CHECK(updates.back().percent >= 25);
 }
+
+TEST_CASE("progress: off a terminal, --progress auto prints a line at every tenth with the spp reached, elapsed and ETA") {
+  ScratchDir dir("progress-lines");
+  // Passes of 1, 1, 2 and 4 samples, about a second in all.
+  std::vector<std::string> args = {"render", dir.write("s.scene", closed_sphere_scene).string(), "-o",
+                                   dir.file("o.png").string(), "--spp", "8", "--width", "16", "--height", "16",
+                                   "--mode", "path", "--max-depth", "1000", "--threads", "1"};
+  CommandResult r = RadiantProcess(args, ChildSetup{}).wait(120);
+  REQUIRE(r.exit_code == 0);
+  std::vector<int> percents;
+  int last_reached = -1;
+  for (size_t at = r.err.find("radiant: rendering"); at != std::string::npos;
+       at = r.err.find("radiant: rendering", at + 1)) {
+    int percent = 0, reached = 0, spp = 0;
+    double elapsed = 0;
+    REQUIRE(std::sscanf(r.err.c_str() + at, "radiant: rendering %d%%, %d of %d spp reached, %lf s elapsed, ETA", &percent,
+                        &reached, &spp, &elapsed) == 4);
+    CHECK(spp == 8);
+    CHECK(reached >= last_reached);
+    last_reached = reached;
+    percents.push_back(percent);
+  }
+  CHECK(r.err.find('\r') == std::string::npos);  // whole lines, no redrawn bar
+  REQUIRE(percents.size() >= 5);
+  for (size_t i = 1; i < percents.size(); ++i) CHECK(percents[i] > percents[i - 1]);
+  for (size_t i = 1; i < percents.size(); ++i) CHECK(percents[i] - percents[i - 1] <= 20);  // no tenth skipped...
+  CHECK(percents.back() == 100);
+  CHECK(last_reached == 8);
+
+  // --progress none and --quiet print none.
+  args.push_back("--progress");
+  args.push_back("none");
+  CommandResult quiet = RadiantProcess(args, ChildSetup{}).wait(120);
+  CHECK(quiet.exit_code == 0);
+  CHECK(quiet.err.find("radiant: rendering") == std::string::npos);
+}

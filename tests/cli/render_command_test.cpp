@@ -156,7 +156,7 @@ TEST_CASE("render cli: adaptive sampling reports the distribution of per-pixel s
   REQUIRE(r.exit_code == 0);
   CHECK(r.err.find("spp per pixel (median") != std::string::npos);
   nlohmann::json json = nlohmann::json::parse(read_bytes(stats));
-  CHECK(json["pixel_samples"]["min"] == 8);
+  CHECK(json["pixel_samples"]["min"] == 64);  // Cycles' minimum for 0.05 (40), as a power of two
   CHECK(json["pixel_samples"]["max"] == 128);
   CHECK(json["pixel_samples"]["median"] >= 8);
   CHECK(json["estimated_relative_error"] > 0);

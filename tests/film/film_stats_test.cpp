@@ -79,19 +79,49 @@ TEST_CASE("film statistics: equal sample counts give every quantile that count, 
   CHECK(stats.mean_relative_error == 0);
 }
 
-TEST_CASE("adaptive sampling's mask: the pixels above the threshold, counted") {
+TEST_CASE("adaptive sampling's mask: the pixels above the threshold and their neighbours, counted") {
   Film film = noisy_film();
   float threshold = 0.3f;
-  size_t expected = 0;
-  for (const FilmPixel& p : film.pixels) expected += pixel_relative_error(p) > threshold;
-  REQUIRE(expected > 0);
-  REQUIRE(expected < film.pixels.size());
-  std::vector<uint8_t> active = {7};
+  auto above = [&](int x, int y) { return pixel_relative_error(film.at(x, y)) > threshold; };
+  size_t expected_own = 0, expected_active = 0;
+  std::vector<uint8_t> expected(film.pixels.size());
+  for (int y = 0; y < film.height; ++y)
+    for (int x = 0; x < film.width; ++x) {
+      expected_own += above(x, y);
+      bool any = false;
+      for (int ny = y - 1; ny <= y + 1; ++ny)
+        for (int nx = x - 1; nx <= x + 1; ++nx)
+          any |= nx >= 0 && ny >= 0 && nx < film.width && ny < film.height && above(nx, ny);
+      expected[size_t(y) * film.width + x] = any;
+      expected_active += any;
+    }
+  REQUIRE(expected_own > 0);
+  REQUIRE(expected_active < film.pixels.size());
+  CHECK(expected_active > expected_own);
+  std::vector<uint8_t> own = {7}, active = {7};
   size_t marked = 0;
-  tbb::task_arena(4).execute([&] { marked = mark_unconverged_pixels(film, threshold, active); });
-  CHECK(marked == expected);
+  tbb::task_arena(4).execute([&] { marked = mark_unconverged_pixels(film, threshold, own, active); });
+  CHECK(marked == expected_active);
   REQUIRE(active.size() == film.pixels.size());
+  REQUIRE(own.size() == film.pixels.size());
   size_t wrong = 0;
-  for (size_t i = 0; i < active.size(); ++i) wrong += active[i] != (pixel_relative_error(film.pixels[i]) > threshold);
+  for (size_t i = 0; i < active.size(); ++i) wrong += active[i] != expected[i] || own[i] != (pixel_relative_error(film.pixels[i]) > threshold);
   CHECK(wrong == 0);
+}
+
+TEST_CASE("adaptive sampling's mask: a pixel whose samples all missed the light stays active among noisy neighbours") {
+  // 3x3 pixels of 8 samples: the centre's are all black (zero variance, zero error), the rest
+  // alternate 0 and 1 (relative error 0.38).
+  Film film = make_film(3, 3);
+  for (int y = 0; y < 3; ++y)
+    for (int x = 0; x < 3; ++x)
+      for (int s = 0; s < 8; ++s) {
+        float v = x == 1 && y == 1 ? 0.0f : float(s % 2);
+        add_sample(film.at(x, y), {v, v, v});
+      }
+  REQUIRE(pixel_relative_error(film.at(1, 1)) == 0);
+  std::vector<uint8_t> own, active;
+  CHECK(mark_unconverged_pixels(film, 0.05f, own, active) == 9);
+  CHECK(own[4] == 0);
+  CHECK(active[4] == 1);
 }

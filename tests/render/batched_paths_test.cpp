@@ -9,6 +9,7 @@
 #include "integrators/effect_variants.h"
 #include "math/transform.h"
 #include "load_scene.h"
+#include "support/film_measures.h"
 #include "support/scene_builders.h"
 #include "support/test_support.h"
 
@@ -506,5 +507,21 @@ TEST_CASE("batched paths: sub-paths from the first hit (--indirect-paths) batch 
     SceneDesc box = load_scene(source_path("assets/cornell.gltf").string());
     o.mode = RenderMode::path;
     require_same_render(box, o);
+  }
+}
+
+TEST_CASE("batched paths: the sample clamps clamp the same in SIMD lanes as one path at a time") {
+  for (bool lanes_room : {true, false}) {
+    CAPTURE(lanes_room);
+    SceneDesc scene = lanes_room ? surface_lanes_room(1.0f, false) : effects_room(false);
+    RenderOptions o;
+    o.width = 30, o.height = 22, o.spp = 6, o.mode = RenderMode::path, o.max_depth = 8;
+    RenderResult unclamped = render_scene(scene, o);
+    o.clamp_direct = 0.5f, o.clamp_indirect = 0.05f;  // low enough to cut most of both kinds
+    RenderResult clamped = render_scene(scene, o);
+    CHECK(mean_luminance(clamped.film) < 0.9 * mean_luminance(unclamped.film));
+    require_same_render(scene, o);
+    o.mode = RenderMode::naive;
+    require_same_render(scene, o);
   }
 }

@@ -1,7 +1,9 @@
-// Progressive rendering (RenderOptions::on_pass, used by `radiant session`): passes that double,
-// and a final film equal to the one-pass render's.
+// Progressive rendering: passes over the whole image that double what every pixel holds, taken
+// whenever a render may stop early (RenderOptions::on_pass, stop_request, a time limit), a final
+// film equal to the one-pass render's, and a stopped render that has a sample in every pixel.
 #include <doctest/doctest.h>
 
+#include <atomic>
 #include <cstring>
 #include <vector>
 
@@ -49,4 +51,60 @@ TEST_CASE("progressive passes: 1, 2, 4, ... samples, and the final film is the o
     CHECK(passes == std::vector<uint32_t>{1, 2, 4, 8, 12});
     CHECK(same_film(progressive.film, one_pass.film));
   }
+}
+
+TEST_CASE("progressive passes: a stoppable render's film equals the one-pass render's at any spp and batching") {
+  std::atomic<int> never{0};
+  for (PathBatching batching : {PathBatching::none, PathBatching::camera_rays, PathBatching::all_rays}) {
+    CAPTURE(int(batching));
+    RenderOptions options;
+    options.width = options.height = 20;
+    options.spp = 13;  // passes of 1, 1, 2, 4 and a last one of 5
+    options.mode = RenderMode::path;
+    options.path_batching = batching;
+    RenderResult one_pass = render_scene(lit_sphere(), options);
+    CHECK(one_pass.stats.passes == 1);
+    options.stop_request = &never;
+    RenderResult passes = render_scene(lit_sphere(), options);
+    CHECK(passes.stats.passes == 5);
+    CHECK(passes.stats.samples_reached == 13);
+    CHECK(same_film(passes.film, one_pass.film));
+  }
+}
+
+TEST_CASE("progressive passes: a stop asked before the render still gives every pixel its first sample") {
+  std::atomic<int> stop{2};  // as if SIGINT had already arrived
+  RenderOptions options;
+  options.width = options.height = 24;
+  options.spp = 64;
+  options.mode = RenderMode::path;
+  options.stop_request = &stop;
+  RenderResult r = render_scene(lit_sphere(), options);
+  CHECK(r.stats.interrupted);
+  CHECK(r.stats.passes == 1);
+  CHECK(r.stats.samples_reached == 1);
+  CHECK(r.stats.min_pixel_samples == 1);
+  CHECK(r.stats.max_pixel_samples == 1);
+
+  options.stop_completes_first_pass = false;  // a session's replaced render
+  RenderResult dropped = render_scene(lit_sphere(), options);
+  CHECK(dropped.stats.interrupted);
+  CHECK(dropped.stats.samples == 0);
+}
+
+TEST_CASE("progressive passes: a stop during a later pass keeps every pixel at or above the passes before it") {
+  std::atomic<int> stop{0};
+  RenderOptions options;
+  options.width = options.height = 24;
+  options.spp = 64;
+  options.mode = RenderMode::path;
+  options.stop_request = &stop;
+  options.on_pass = [&](const Film&, uint32_t samples) {
+    if (samples == 4) stop = 2;  // the signal arrives as the pass to 8 starts
+  };
+  RenderResult r = render_scene(lit_sphere(), options);
+  CHECK(r.stats.interrupted);
+  CHECK(r.stats.samples_reached == 4);
+  CHECK(r.stats.min_pixel_samples == 4);
+  CHECK(r.stats.max_pixel_samples <= 8);
 }
