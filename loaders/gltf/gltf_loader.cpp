@@ -31,7 +31,8 @@ const std::vector<std::string> supported_extensions = {
     "KHR_materials_volume",       "KHR_materials_variants",         "KHR_materials_iridescence",
     "KHR_materials_anisotropy",   "KHR_mesh_quantization",          "KHR_draco_mesh_compression",
     "EXT_texture_webp",           "EXT_meshopt_compression",        "KHR_materials_dispersion",
-    "KHR_materials_pbrSpecularGlossiness", "KHR_texture_basisu", "EXT_mesh_gpu_instancing"};
+    "KHR_materials_pbrSpecularGlossiness", "KHR_texture_basisu", "EXT_mesh_gpu_instancing",
+    "KHR_materials_diffuse_transmission"};
 
 bool is_supported(const std::string& name) {
   return std::find(supported_extensions.begin(), supported_extensions.end(), name) != supported_extensions.end();

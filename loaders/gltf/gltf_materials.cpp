@@ -209,6 +209,19 @@ static void convert_sheen(const GltfContext& context, const tinygltf::Value& she
   material.sheen_roughness_texture = extension_texture(context, sheen, "sheenRoughnessTexture", sheen_where);
 }
 
+// KHR_materials_diffuse_transmission: the share of the diffuse base sent through, and its tint.
+static void convert_diffuse_transmission(const GltfContext& context, const tinygltf::Value& extension_value,
+                                         const std::string& where, MaterialDesc& material) {
+  std::string at = where + ".extensions.KHR_materials_diffuse_transmission";
+  material.diffuse_transmission = non_negative_float(context, number(extension_value, "diffuseTransmissionFactor", 0),
+                                                     at + ".diffuseTransmissionFactor");
+  material.diffuse_transmission_texture = extension_texture(context, extension_value, "diffuseTransmissionTexture", at);
+  material.diffuse_transmission_color =
+      extension_color(context, extension_value, "diffuseTransmissionColorFactor", {1, 1, 1}, at);
+  material.diffuse_transmission_color_texture =
+      extension_texture(context, extension_value, "diffuseTransmissionColorTexture", at);
+}
+
 // KHR_materials_volume: the thickness (0 = a thin wall) and the Beer-Lambert attenuation. The
 // thickness texture only matters to rasterizers, which cannot measure the path inside.
 static void convert_volume(const GltfContext& context, const tinygltf::Value& volume, const std::string& where,
@@ -300,6 +313,8 @@ static MaterialDesc convert_material(GltfContext& context, const tinygltf::Mater
     convert_clearcoat(context, *clearcoat, where, material);
   if (const tinygltf::Value* sheen = extension(source.extensions, "KHR_materials_sheen"))
     convert_sheen(context, *sheen, where, material);
+  if (const tinygltf::Value* diffuse = extension(source.extensions, "KHR_materials_diffuse_transmission"))
+    convert_diffuse_transmission(context, *diffuse, where, material);
   if (const tinygltf::Value* volume = extension(source.extensions, "KHR_materials_volume"))
     convert_volume(context, *volume, where, material);
   if (const tinygltf::Value* iridescence = extension(source.extensions, "KHR_materials_iridescence"))

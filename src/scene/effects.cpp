@@ -34,7 +34,8 @@ bool has_texture(const MaterialDesc& m) {
          m.transmission_texture.valid() || m.specular_texture.valid() || m.alpha_texture.valid() ||
          m.specular_strength_texture.valid() || m.specular_color_texture.valid() || m.clearcoat_texture.valid() ||
          m.clearcoat_roughness_texture.valid() || m.sheen_color_texture.valid() || m.sheen_roughness_texture.valid() ||
-         m.iridescence_texture.valid() || m.iridescence_thickness_texture.valid() || m.anisotropy_texture.valid();
+         m.iridescence_texture.valid() || m.iridescence_thickness_texture.valid() || m.anisotropy_texture.valid() ||
+         m.diffuse_transmission_texture.valid() || m.diffuse_transmission_color_texture.valid();
 }
 
 // Materials actually used by some placed mesh, and by the shapes when `with_shapes`.

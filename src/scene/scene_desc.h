@@ -122,6 +122,12 @@ struct MaterialDesc {
   float sheen_roughness = 0;
   TextureRef sheen_color_texture;      // sRGB, RGB
   TextureRef sheen_roughness_texture;  // linear, A channel
+  // KHR_materials_diffuse_transmission: this share of the diffuse base leaves on the other side
+  // of the surface (Lambertian, tinted by diffuse_transmission_color), as in leaves and paper.
+  float diffuse_transmission = 0;
+  TextureRef diffuse_transmission_texture;  // linear, A channel
+  color3 diffuse_transmission_color = {1, 1, 1};
+  TextureRef diffuse_transmission_color_texture;  // sRGB, RGB
   // KHR_materials_anisotropy: GGX rougher along a direction of the tangent frame (brushed metal).
   float anisotropy_strength = 0;
   float anisotropy_rotation = 0;  // radians, counter-clockwise from the tangent

@@ -67,13 +67,14 @@ struct Checker {
     const std::pair<const char*, vec3> colors[] = {{"ka", m.ka}, {"kd", m.kd}, {"ks", m.ks}, {"kr", m.kr},
                                                    {"kt", m.kt}, {"base_color", m.base_color}, {"emission", m.emission},
                                                    {"specular_color", m.specular_color}, {"sheen_color", m.sheen_color},
-                                                   {"attenuation_color", m.attenuation_color}};
+                                                   {"attenuation_color", m.attenuation_color},
+                                                   {"diffuse_transmission_color", m.diffuse_transmission_color}};
     for (const auto& [name, color] : colors) non_negative(color, where + "." + name);
     for (float f : {m.shininess, m.ior, m.alpha, m.metallic, m.roughness, m.transmission, m.normal_scale,
                     m.alpha_cutoff, m.specular, m.clearcoat, m.clearcoat_roughness,
                     m.sheen_roughness, m.thickness, m.attenuation_distance, m.iridescence, m.iridescence_thickness_min,
                     m.iridescence_thickness_max, m.anisotropy_strength, m.anisotropy_rotation, m.bump_scale,
-                    m.clearcoat_normal_scale})
+                    m.clearcoat_normal_scale, m.diffuse_transmission})
       finite(f, where);
     // Beyond these, refraction's eta^2 overflows float and directions stop being numbers.
     constexpr float min_ior = 1e-3f, max_ior = 1e3f;
@@ -99,6 +100,8 @@ struct Checker {
     texture_ref(m.iridescence_texture, where + ".iridescence_texture");
     texture_ref(m.anisotropy_texture, where + ".anisotropy_texture");
     texture_ref(m.iridescence_thickness_texture, where + ".iridescence_thickness_texture");
+    texture_ref(m.diffuse_transmission_texture, where + ".diffuse_transmission_texture");
+    texture_ref(m.diffuse_transmission_color_texture, where + ".diffuse_transmission_color_texture");
     if (!(m.iridescence_ior >= min_ior && m.iridescence_ior <= max_ior)) {
       char text[64];
       std::snprintf(text, sizeof text, "%g is out of range (%g to %g)", m.iridescence_ior, min_ior, max_ior);
