@@ -25,6 +25,7 @@ std::string info_json(const std::string& path, const SceneDesc& scene, const Sce
   j["geometry"] = {{"meshes", s.meshes},       {"instances", s.instances}, {"triangles", s.triangles},
                    {"instanced_triangles", s.instanced_triangles},         {"spheres", s.spheres},
                    {"planes", s.planes},       {"cylinders", s.cylinders}, {"tubes", s.tubes},
+                   {"line_segments", s.line_segments}, {"points", s.points},
                    {"bytes", s.geometry_bytes}};
   j["materials"] = s.materials;
   j["emissive_materials"] = s.emissive_materials;
@@ -55,7 +56,8 @@ void print_info(std::ostream& out, const std::string& path, const SceneDesc& sce
   out << path << (scene.name.empty() ? "" : " (" + scene.name + ")") << "\n"
       << "  geometry:  " << s.triangles << " triangles in " << s.meshes << " meshes, " << s.instances << " instances ("
       << s.instanced_triangles << " triangles placed); " << s.spheres << " spheres, " << s.planes << " planes, " << s.cylinders
-      << " cylinders, " << s.tubes << " tubes; " << s.geometry_bytes / 1024 << " KiB\n"
+      << " cylinders, " << s.tubes << " tubes; " << s.line_segments << " line segments, " << s.points << " points; "
+      << s.geometry_bytes / 1024 << " KiB\n"
       << "  materials: " << s.materials << " (" << s.emissive_materials << " emissive)\n"
       << "  textures:  " << s.textures << " using " << s.images << " images, " << s.texture_bytes / 1024 << " KiB\n"
       << "  lights:    " << s.point_lights << " point, " << s.spot_lights << " spot, " << s.directional_lights << " directional, "

@@ -140,7 +140,7 @@ std::shared_ptr<GltfDocument> read_gltf_document(const std::string& path, const 
     std::string bytes = read_gltf_file(path, options);
     document->model = parse(path, bytes, options, reading);
   }
-  GltfContext context{document->model, path, options, reading, {}, {}, -1};
+  GltfContext context{document->model, path, options, reading, {}, {}, {}, -1};
   decode_meshopt_views(document->model, context);
   decode_draco_primitives(document->model, context);
   document->warnings = std::move(reading.warnings);
@@ -154,7 +154,7 @@ SceneDesc gltf_scene(GltfDocument& document, const LoadOptions& given) {
   SceneDesc scene;
   scene.name = std::filesystem::path(document.path).stem().string();
   scene.warnings = document.warnings;
-  GltfContext context{model, document.path, options, scene, {}, {}, -1};
+  GltfContext context{model, document.path, options, scene, {}, {}, {}, -1};
   context.variant = selected_variant(context);
   for (const std::string& name : model.extensionsUsed)
     if (!is_supported(name)) context.warn("extension " + name + " is not supported and is ignored");

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "accel/stroke_geometry.h"
 #include "math/vec.h"
 #include "memory/memory_budget.h"
 #include "scene/scene_desc.h"
@@ -124,6 +125,9 @@ struct RenderOptions {
   std::optional<float> filter_width;
   // --texture-filter: how texture lookups filter (trilinear: mip-mapped by the pixel's footprint).
   TextureFilterMode texture_filter = TextureFilterMode::trilinear;
+  // --line-width: lines and points without a width of their own, in pixels at their distance
+  // from the camera (the view the scene is prepared for) or in world units.
+  LineWidth line_width;
   float noise_threshold = 0;      // 0 = off
   float contribution_cutoff = 0.001f;  // Whitted: stop recursing below this weight
   // How paths share their ray tracing; every way gives the same image, bit for bit. The batch

@@ -46,8 +46,10 @@ std::vector<bool> used_materials(const SceneDesc& scene, bool with_shapes) {
   };
   for (const InstanceDesc& i : scene.instances)
     if (i.mesh >= 0 && i.mesh < int(scene.meshes.size())) mark(scene.meshes[i.mesh].material);
-  if (with_shapes)
+  if (with_shapes) {
     for (const ShapeDesc& s : scene.shapes) mark(s.material);
+    for (const StrokeDesc& s : scene.strokes) mark(s.material);
+  }
   return used;
 }
 

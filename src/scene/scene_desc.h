@@ -197,6 +197,23 @@ struct ShapeDesc {
   std::string name;
 };
 
+// Lines and points (glTF POINTS, LINES, LINE_STRIP, LINE_LOOP; `.scene` line and points blocks),
+// in world space like the shapes: vertex i lies at center + positions[i], so that moving them
+// into render space moves one point. Lines are round linear curves, each segment from vertex
+// segments[k] to the next; points are spheres at every vertex.
+enum class StrokeKind { lines, points };
+struct StrokeDesc {
+  std::string name;
+  StrokeKind kind = StrokeKind::lines;
+  int material = -1;
+  vec3 center = {0, 0, 0};
+  std::vector<vec3> positions;
+  std::vector<vec4> colors;        // empty or one per vertex (COLOR_0, linear RGBA)
+  std::vector<uint32_t> segments;  // lines: each segment's first vertex
+  float width = 0;                 // world units across; 0: the render's --line-width
+  size_t primitive_count() const { return kind == StrokeKind::lines ? segments.size() : positions.size(); }
+};
+
 // ---------------------------------------------------------------- lights
 
 enum class LightKind { ambient, directional, point, spot };
@@ -259,6 +276,7 @@ struct SceneDesc {
   std::vector<MeshDesc> meshes;
   std::vector<InstanceDesc> instances;
   std::vector<ShapeDesc> shapes;
+  std::vector<StrokeDesc> strokes;
   std::vector<MaterialDesc> materials;
   std::vector<TextureDesc> textures;
   std::vector<ImageDesc> images;

@@ -170,6 +170,19 @@ struct Checker {
     if (s.kind == ShapeKind::cylinder) in_range(s.height, where + ".height");
   }
 
+  void stroke(const StrokeDesc& s, const std::string& where) const {
+    index(s.material, scene.materials.size(), false, where + ".material", "material");
+    in_range(s.center, where + ".center");
+    for (vec3 p : s.positions) in_range(s.center + p, where + ".positions");
+    sized(s.colors, s.positions.size(), where + ".colors");
+    for (uint32_t first : s.segments)
+      if (size_t(first) + 1 >= s.positions.size())
+        fail(where + ".segments", "segment from vertex " + std::to_string(first) + " has no next vertex (" +
+                                      std::to_string(s.positions.size()) + " vertices)");
+    if (!(s.width >= 0) || !std::isfinite(s.width)) fail(where + ".width", "must be positive, or 0 for --line-width");
+    in_range(s.width, where + ".width");
+  }
+
   // The corners of the mesh's bounding box, placed by the instance, computed in double: the
   // placed vertices then lie within range too (an affine map keeps them inside the placed box).
   struct Box {
@@ -218,11 +231,13 @@ struct Checker {
       placed_in_range(scene.instances[i], mesh_boxes[scene.instances[i].mesh], where);
     }
     for (size_t i = 0; i < scene.shapes.size(); ++i) shape(scene.shapes[i], at("shapes", i));
+    for (size_t i = 0; i < scene.strokes.size(); ++i) stroke(scene.strokes[i], at("strokes", i));
     for (size_t i = 0; i < scene.cameras.size(); ++i) camera(scene.cameras[i], at("cameras", i));
     for (size_t i = 0; i < scene.lights.size(); ++i) light(scene.lights[i], at("lights", i));
     non_negative(scene.environment.color, "environment.color");
     finite(scene.environment.map_scale, "environment.map_scale");
-    if (scene.instances.empty() && scene.shapes.empty()) fail("scene", "nothing to render (no meshes placed and no shapes)");
+    if (scene.instances.empty() && scene.shapes.empty() && scene.strokes.empty())
+      fail("scene", "nothing to render (no meshes placed, no shapes, no lines or points)");
   }
 };
 
