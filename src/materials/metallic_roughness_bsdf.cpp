@@ -273,15 +273,15 @@ std::optional<BsdfSample> sample_local(const MetallicRoughnessLobes& l, float u_
   if (!l.valid) return std::nullopt;
   if (u_lobe < l.p_specular) return sample_specular(l, u);
   if (u_lobe < l.p_specular + l.p_diffuse) return mixture_sample(l, cosine ? *cosine : sample_cosine_hemisphere(u));
-  float diffuse_end = l.p_specular + l.p_diffuse + l.p_diffuse_transmission;
-  if (u_lobe < diffuse_end) {
+  float u_rest = u_lobe - l.p_specular - l.p_diffuse;
+  if (l.p_diffuse_transmission > 0 && u_rest < l.p_diffuse_transmission) {
     vec3 below = cosine ? *cosine : sample_cosine_hemisphere(u);
     return mixture_sample(l, {below.x, below.y, -below.z});
   }
   // The rest of u_lobe chooses the glass's reflection or refraction. It is drawn: rough glass that
   // is not index-matched always has the specular lobe beside it.
   if (l.p_transmission > 0)
-    return sample_transmission(l, std::min((u_lobe - diffuse_end) / l.p_transmission, 0x1.fffffep-1f), u);
+    return sample_transmission(l, std::min((u_rest - l.p_diffuse_transmission) / l.p_transmission, 0x1.fffffep-1f), u);
   return std::nullopt;
 }
 
