@@ -84,17 +84,17 @@ TEST_CASE("gltf textures: an extension's texture honours its KHR_texture_transfo
   SceneDesc scene = load_quad_with(
       dir, "{\"extensions\":{\"KHR_materials_sheen\":{\"sheenColorFactor\":[1,1,1],\"sheenRoughnessFactor\":1,"
            "\"sheenColorTexture\":{\"index\":0,\"extensions\":{\"KHR_texture_transform\":{\"offset\":[0.5,0]}}},"
-           "\"sheenRoughnessTexture\":{\"index\":0,\"extensions\":{\"KHR_texture_transform\":{\"scale\":[30,-30],"
+           "\"sheenRoughnessTexture\":{\"index\":0,\"extensions\":{\"KHR_texture_transform\":{\"scale\":[3,-30],"
            "\"texCoord\":1}}}}}}");
   const MaterialDesc& desc = scene.materials[0];
   CHECK(desc.sheen_color_texture.offset.x == 0.5f);
-  CHECK(desc.sheen_roughness_texture.scale.x == 30);
+  CHECK(desc.sheen_roughness_texture.scale.x == 3);
   CHECK(desc.sheen_roughness_texture.scale.y == -30);
   CHECK(desc.sheen_roughness_texture.texcoord == 1);
   SurfaceMaterial m = resolve_material(scene, desc, left_in_set_0_right_in_set_1());
   // Colour: set 0 at u 0.25, offset by 0.5 to the right texel (blue), RGB.
   CHECK(m.sheen_color == color3{0, 0, 1});
-  // Roughness: set 1 at u 0.75 × 30 = 22.5, the left half of a repeat: the left texel's alpha.
+  // Roughness: set 1 at u 0.75 × 3 = 2.25, the left half of a repeat: the left texel's alpha.
   CHECK(m.sheen_roughness == doctest::Approx(alpha_51));
 }
 
