@@ -59,6 +59,7 @@ std::string info_json(const std::string& path, const SceneDesc& scene, const Sce
   j["geometry"] = {{"meshes", s.meshes},       {"instances", s.instances}, {"triangles", s.triangles},
                    {"instanced_triangles", s.instanced_triangles},         {"spheres", s.spheres},
                    {"planes", s.planes},       {"cylinders", s.cylinders}, {"tubes", s.tubes},
+                   {"line_segments", s.line_segments}, {"points", s.points},
                    {"bytes", s.geometry_bytes}};
   j["materials"] = s.materials;
   j["emissive_materials"] = s.emissive_materials;
@@ -91,7 +92,9 @@ std::string info_json(const std::string& path, const SceneDesc& scene, const Sce
 
 void print_info(std::ostream& out, const std::string& path, const SceneDesc& scene, const SceneFileChoices& choices,
                 const SceneSummary& s, const EffectSet& effects, RenderMode auto_mode, const std::string& auto_reason) {
-  std::string shapes = nonzero_counts({{s.spheres, "sphere"}, {s.planes, "plane"}, {s.cylinders, "cylinder"}, {s.tubes, "tube"}}, "");
+  std::string shapes = nonzero_counts({{s.spheres, "sphere"}, {s.planes, "plane"}, {s.cylinders, "cylinder"}, {s.tubes, "tube"},
+                                       {s.line_segments, "line segment"}, {s.points, "point"}},
+                                      "");
   out << path << (scene.name.empty() ? "" : " (" + scene.name + ")") << "\n"
       << "  geometry:  " << count_of(s.triangles, "triangle") << " in " << count_of(s.meshes, "mesh") << ", "
       << count_of(s.instances, "instance") << " (" << s.instanced_triangles << " placed)" << (shapes.empty() ? "" : "; " + shapes)

@@ -125,6 +125,15 @@ TextureFilterMode parse_texture_filter(const std::string& flag, const std::strin
   throw CLI::ValidationError(flag, "unknown texture filter '" + text + "' (expected point, bilinear or trilinear)");
 }
 
+LineWidth parse_line_width(const std::string& flag, const std::string& text) {
+  LineWidth width;
+  width.in_pixels = text.empty() || text.back() != 'm';
+  width.value = float(parse_number(flag, width.in_pixels ? text : text.substr(0, text.size() - 1)));
+  if (!(width.value > 0) || width.value > max_scene_coordinate)
+    throw CLI::ValidationError(flag, "'" + text + "' must be a positive width (pixels, or world units with 'm')");
+  return width;
+}
+
 PathBatching parse_batching(const std::string& flag, const std::string& text) {
   if (text == "none") return PathBatching::none;
   if (text == "camera") return PathBatching::camera_rays;
@@ -404,6 +413,9 @@ void RenderFlags::bind(CLI::App& app, bool image_flags) {
   app.add_option("--texture-filter", texture_filter,
                  "point (nearest texel), bilinear (full resolution) or trilinear (mip-mapped by the pixel's "
                  "footprint; default)");
+  app.add_option("--line-width", line_width,
+                 "Width of lines and points without one of their own: pixels at their distance (default 1), or "
+                 "world units with a trailing m (0.01m)");
   app.add_option("--batching", batching,
                  "How paths share ray tracing: all (paths advance together, every ray in streams; default), "
                  "camera (a tile's camera rays as packets, then each path alone) or none; the image is the same");
@@ -441,6 +453,7 @@ void RenderFlags::finish() {
   if (filter_width > 0) options.filter_width = filter_width;
   if (!texture_filter.empty()) options.texture_filter = parse_texture_filter("--texture-filter", texture_filter);
   if (!batching.empty()) options.path_batching = parse_batching("--batching", batching);
+  if (!line_width.empty()) options.line_width = parse_line_width("--line-width", line_width);
   if (!light_sampler.empty()) options.light_sampler = parse_light_sampler("--light-sampler", light_sampler);
   if (!env_color.empty()) {
     vec3 c = parse_vec3("--env-color", env_color);

@@ -39,6 +39,8 @@ LightSampler parse_light_sampler(const std::string& flag, const std::string& tex
 Projection parse_camera_type(const std::string& flag, const std::string& text);
 TextureFilterMode parse_texture_filter(const std::string& flag, const std::string& text);
 PathBatching parse_batching(const std::string& flag, const std::string& text);
+// "2" (pixels) or "0.01m" (world units): a positive width.
+LineWidth parse_line_width(const std::string& flag, const std::string& text);
 PixelWindow parse_window(const std::string& flag, const std::string& text);
 // "I/K" with 0 <= I < K <= 65536, and "A:B" sample indices.
 ShardSpec parse_shard(const std::string& flag, const std::string& text);
@@ -64,7 +66,7 @@ const char* sampler_name(SamplerKind kind);
 struct RenderFlags {
   RenderOptions options;
   std::string mode, sampler, light_sampler, env_color, crop, aovs, look_from, look_at, up, view, camera_type, variant;
-  std::string texture_filter;
+  std::string texture_filter, line_width;
   std::string env, background, orbit;
   float env_intensity = 1, env_rotation = 0;
   std::string batching;

@@ -23,6 +23,7 @@ struct GltfContext {
   const LoadOptions& options;
   SceneDesc& scene;
   std::vector<std::vector<int>> mesh_parts;  // glTF mesh -> its MeshDesc indices (one per primitive)
+  std::vector<std::vector<StrokeDesc>> mesh_strokes;  // glTF mesh -> its points and lines, in object space
   std::map<int, int> mirrored_meshes;        // MeshDesc -> its copy with reversed winding
   int default_material = -1;                 // the glTF default material, made on first use
   int variant = -1;                          // the KHR_materials_variants index in use, or -1

@@ -31,7 +31,8 @@ const std::vector<std::string> supported_extensions = {
     "KHR_materials_volume",       "KHR_materials_variants",         "KHR_materials_iridescence",
     "KHR_materials_anisotropy",   "KHR_mesh_quantization",          "KHR_draco_mesh_compression",
     "EXT_texture_webp",           "EXT_meshopt_compression",        "KHR_materials_dispersion",
-    "KHR_materials_pbrSpecularGlossiness", "KHR_texture_basisu", "EXT_mesh_gpu_instancing"};
+    "KHR_materials_pbrSpecularGlossiness", "KHR_texture_basisu", "EXT_mesh_gpu_instancing",
+    "KHR_materials_diffuse_transmission"};
 
 bool is_supported(const std::string& name) {
   return std::find(supported_extensions.begin(), supported_extensions.end(), name) != supported_extensions.end();
@@ -139,7 +140,7 @@ std::shared_ptr<GltfDocument> read_gltf_document(const std::string& path, const 
     std::string bytes = read_gltf_file(path, options);
     document->model = parse(path, bytes, options, reading);
   }
-  GltfContext context{document->model, path, options, reading, {}, {}, -1};
+  GltfContext context{document->model, path, options, reading, {}, {}, {}, -1};
   decode_meshopt_views(document->model, context);
   decode_draco_primitives(document->model, context);
   document->warnings = std::move(reading.warnings);
@@ -170,7 +171,7 @@ SceneDesc gltf_scene(GltfDocument& document, const LoadOptions& given) {
   SceneDesc scene;
   scene.name = std::filesystem::path(document.path).stem().string();
   scene.warnings = document.warnings;
-  GltfContext context{model, document.path, options, scene, {}, {}, -1};
+  GltfContext context{model, document.path, options, scene, {}, {}, {}, -1};
   context.variant = selected_variant(context);
   for (const std::string& name : model.extensionsUsed)
     if (!is_supported(name)) context.warn("extension " + name + " is not supported and is ignored");

@@ -123,14 +123,16 @@ static int texcoord_set(const GltfContext& context, double texcoord, const std::
   return int(texcoord);
 }
 
-static TextureRef texture_ref(const GltfContext& context, int index, double texcoord,
-                              const tinygltf::ExtensionMap& extensions, const std::string& where) {
+// A textureInfo's texture, UV set and KHR_texture_transform (`transform`: the extension's
+// object, or null), whose texCoord overrides the textureInfo's.
+static TextureRef texture_ref(const GltfContext& context, int index, double texcoord, const tinygltf::Value* transform,
+                              const std::string& where) {
   TextureRef ref;
   if (index < 0) return ref;
   check_index(context, index, context.model.textures.size(), where + ".index", "texture");
   ref.texture = index;
   std::string texcoord_where = where + ".texCoord";
-  if (const tinygltf::Value* transform = extension(extensions, "KHR_texture_transform")) {
+  if (transform) {
     ref.offset = pair_of(*transform, "offset", ref.offset);
     ref.scale = pair_of(*transform, "scale", ref.scale);
     ref.rotation = float(number(*transform, "rotation", 0));
@@ -143,6 +145,12 @@ static TextureRef texture_ref(const GltfContext& context, int index, double texc
   return ref;
 }
 
+// A core textureInfo (tinygltf parsed it into its own struct).
+template <class Info>
+static TextureRef core_texture(const GltfContext& context, const Info& info, const std::string& where) {
+  return texture_ref(context, info.index, info.texCoord, extension(info.extensions, "KHR_texture_transform"), where);
+}
+
 TextureRef extension_texture(const GltfContext& context, const tinygltf::Value& extension_value, const char* key,
                              const std::string& extension_where) {
   if (!extension_value.Has(key)) return {};
@@ -151,7 +159,12 @@ TextureRef extension_texture(const GltfContext& context, const tinygltf::Value& 
   int index = info.Has("index") ? index_value(context, info.Get("index"), context.model.textures.size(),
                                               info_where + ".index", "texture")
                                 : -1;
-  return texture_ref(context, index, number(info, "texCoord", 0), {}, info_where);
+  // An extension's textureInfo is plain JSON: its own extensions (KHR_texture_transform) too.
+  const tinygltf::Value* transform = nullptr;
+  if (info.Has("extensions") && info.Get("extensions").Has("KHR_texture_transform"))
+    transform = &info.Get("extensions").Get("KHR_texture_transform");
+  if (transform && !transform->IsObject()) transform = nullptr;
+  return texture_ref(context, index, number(info, "texCoord", 0), transform, info_where);
 }
 
 color3 extension_color(const GltfContext& context, const tinygltf::Value& extension_value, const char* key,
@@ -207,6 +220,19 @@ static void convert_sheen(const GltfContext& context, const tinygltf::Value& she
   material.sheen_roughness =
       non_negative_float(context, number(sheen, "sheenRoughnessFactor", 0), sheen_where + ".sheenRoughnessFactor");
   material.sheen_roughness_texture = extension_texture(context, sheen, "sheenRoughnessTexture", sheen_where);
+}
+
+// KHR_materials_diffuse_transmission: the share of the diffuse base sent through, and its tint.
+static void convert_diffuse_transmission(const GltfContext& context, const tinygltf::Value& extension_value,
+                                         const std::string& where, MaterialDesc& material) {
+  std::string at = where + ".extensions.KHR_materials_diffuse_transmission";
+  material.diffuse_transmission = non_negative_float(context, number(extension_value, "diffuseTransmissionFactor", 0),
+                                                     at + ".diffuseTransmissionFactor");
+  material.diffuse_transmission_texture = extension_texture(context, extension_value, "diffuseTransmissionTexture", at);
+  material.diffuse_transmission_color =
+      extension_color(context, extension_value, "diffuseTransmissionColorFactor", {1, 1, 1}, at);
+  material.diffuse_transmission_color_texture =
+      extension_texture(context, extension_value, "diffuseTransmissionColorTexture", at);
 }
 
 // KHR_materials_volume: the thickness (0 = a thin wall) and the Beer-Lambert attenuation. The
@@ -266,16 +292,12 @@ static MaterialDesc convert_material(GltfContext& context, const tinygltf::Mater
   material.metallic = float(pbr.metallicFactor);
   material.roughness = float(pbr.roughnessFactor);
   std::string pbr_where = where + ".pbrMetallicRoughness";
-  material.base_color_texture = texture_ref(context, pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
-                                            pbr.baseColorTexture.extensions, pbr_where + ".baseColorTexture");
+  material.base_color_texture = core_texture(context, pbr.baseColorTexture, pbr_where + ".baseColorTexture");
   material.metallic_roughness_texture =
-      texture_ref(context, pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
-                  pbr.metallicRoughnessTexture.extensions, pbr_where + ".metallicRoughnessTexture");
-  material.normal_texture = texture_ref(context, source.normalTexture.index, source.normalTexture.texCoord,
-                                        source.normalTexture.extensions, where + ".normalTexture");
+      core_texture(context, pbr.metallicRoughnessTexture, pbr_where + ".metallicRoughnessTexture");
+  material.normal_texture = core_texture(context, source.normalTexture, where + ".normalTexture");
   material.normal_scale = float(source.normalTexture.scale);
-  material.emission_texture = texture_ref(context, source.emissiveTexture.index, source.emissiveTexture.texCoord,
-                                          source.emissiveTexture.extensions, where + ".emissiveTexture");
+  material.emission_texture = core_texture(context, source.emissiveTexture, where + ".emissiveTexture");
   float strength = 1;
   if (const tinygltf::Value* emissive = extension(source.extensions, "KHR_materials_emissive_strength"))
     strength = non_negative_float(context, number(*emissive, "emissiveStrength", 1),
@@ -300,6 +322,8 @@ static MaterialDesc convert_material(GltfContext& context, const tinygltf::Mater
     convert_clearcoat(context, *clearcoat, where, material);
   if (const tinygltf::Value* sheen = extension(source.extensions, "KHR_materials_sheen"))
     convert_sheen(context, *sheen, where, material);
+  if (const tinygltf::Value* diffuse = extension(source.extensions, "KHR_materials_diffuse_transmission"))
+    convert_diffuse_transmission(context, *diffuse, where, material);
   if (const tinygltf::Value* volume = extension(source.extensions, "KHR_materials_volume"))
     convert_volume(context, *volume, where, material);
   if (const tinygltf::Value* iridescence = extension(source.extensions, "KHR_materials_iridescence"))

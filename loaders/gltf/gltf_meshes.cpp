@@ -5,6 +5,7 @@
 #include "gltf/gltf_accessors.h"
 #include "gltf/gltf_deform.h"
 #include "gltf/gltf_materials.h"
+#include "gltf/gltf_strokes.h"
 #include "gltf/gltf_variants.h"
 #include "scene/mesh_ops.h"
 #include "scene/scene_memory.h"
@@ -103,13 +104,10 @@ void fill_shading_frames(GltfContext& context, MeshDesc& mesh, bool has_normals,
 }
 
 // The primitive as a MeshDesc, deformed by `pose`; false when it holds no triangles (skipped
-// with a warning).
+// with a warning) or is made of points or lines (appended to `strokes`, in object space).
 bool convert_primitive(GltfContext& context, const tinygltf::Primitive& primitive, const std::string& where,
-                       const MeshPose& pose, MeshDesc& mesh) {
-  if (primitive.mode >= TINYGLTF_MODE_POINTS && primitive.mode <= TINYGLTF_MODE_LINE_STRIP) {
-    context.warn(where + ": points and lines are not rendered; primitive skipped");
-    return false;
-  }
+                       const MeshPose& pose, MeshDesc& mesh, std::vector<StrokeDesc>& strokes) {
+  bool stroked = primitive.mode >= TINYGLTF_MODE_POINTS && primitive.mode <= TINYGLTF_MODE_LINE_STRIP;
   if (primitive.mode > TINYGLTF_MODE_TRIANGLE_FAN || primitive.mode < 0)
     context.fail(where + ".mode", "unknown primitive mode " + std::to_string(primitive.mode));
   if (!primitive.attributes.count("POSITION")) context.fail(where + ".attributes", "no POSITION attribute");
@@ -132,6 +130,12 @@ bool convert_primitive(GltfContext& context, const tinygltf::Primitive& primitiv
   apply_morph_targets(context, primitive, pose.weights, mesh, where);
   if (!pose.joint_matrices.empty()) apply_skin(context, primitive, pose.joint_matrices, mesh, where);
   std::vector<uint32_t> order = vertex_order(context, primitive, count, where);
+  if (stroked) {
+    int material = scene_material(context, variant_material(context, primitive, context.variant, where),
+                                  where + ".material");
+    add_primitive_stroke(context, primitive.mode, mesh, order, material, where, strokes);
+    return false;
+  }
   // A strip or a fan lists each triangle's three corners again.
   context.charge(saturating_multiply(order.size(), primitive.mode == TINYGLTF_MODE_TRIANGLES ? 4 : 12), where);
   mesh.indices = triangles_of(primitive.mode, order);
@@ -148,7 +152,8 @@ bool convert_primitive(GltfContext& context, const tinygltf::Primitive& primitiv
 
 }  // namespace
 
-std::vector<int> convert_mesh(GltfContext& context, size_t m, const MeshPose& pose, const std::string& suffix) {
+std::vector<int> convert_mesh(GltfContext& context, size_t m, const MeshPose& pose, const std::string& suffix,
+                              std::vector<StrokeDesc>& strokes) {
   const tinygltf::Mesh& source = context.model.meshes[m];
   std::vector<int> parts;
   for (size_t p = 0; p < source.primitives.size(); ++p) {
@@ -157,7 +162,7 @@ std::vector<int> convert_mesh(GltfContext& context, size_t m, const MeshPose& po
     if (source.primitives.size() > 1) mesh.name += std::string("/").append(std::to_string(p));
     mesh.name += suffix;
     std::string where = element("meshes", m) + "." + element("primitives", p);
-    if (!convert_primitive(context, source.primitives[p], where, pose, mesh)) continue;
+    if (!convert_primitive(context, source.primitives[p], where, pose, mesh, strokes)) continue;
     parts.push_back(int(context.scene.meshes.size()));
     context.scene.meshes.push_back(std::move(mesh));
   }
@@ -167,10 +172,11 @@ std::vector<int> convert_mesh(GltfContext& context, size_t m, const MeshPose& po
 void convert_meshes(GltfContext& context) {
   const auto& model = context.model;
   context.mesh_parts.assign(model.meshes.size(), {});
+  context.mesh_strokes.assign(model.meshes.size(), {});
   for (size_t m = 0; m < model.meshes.size(); ++m) {
     MeshPose pose;
     pose.weights = model.meshes[m].weights;
-    context.mesh_parts[m] = convert_mesh(context, m, pose, "");
+    context.mesh_parts[m] = convert_mesh(context, m, pose, "", context.mesh_strokes[m]);
   }
 }
 

@@ -12,8 +12,10 @@ namespace radiant {
 void convert_meshes(GltfContext& context);
 
 // Appends glTF mesh `mesh` converted again under `pose` (a node's own weights or skin), named
-// with `suffix`, and returns its MeshDesc indices (one per triangle primitive).
-std::vector<int> convert_mesh(GltfContext& context, size_t mesh, const MeshPose& pose, const std::string& suffix);
+// with `suffix`, and returns its MeshDesc indices (one per triangle primitive); its points and
+// lines go to `strokes`, in the mesh's object space.
+std::vector<int> convert_mesh(GltfContext& context, size_t mesh, const MeshPose& pose, const std::string& suffix,
+                              std::vector<StrokeDesc>& strokes);
 
 // The MeshDesc `mesh` with its triangle winding reversed, made once, for mirroring instances.
 int mirrored_mesh(GltfContext& context, int mesh);

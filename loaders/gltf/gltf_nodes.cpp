@@ -8,6 +8,7 @@
 #include "gltf/gltf_instancing.h"
 #include "gltf/gltf_lights_cameras.h"
 #include "gltf/gltf_meshes.h"
+#include "gltf/gltf_strokes.h"
 #include "scene/scene_memory.h"
 
 namespace radiant {
@@ -45,7 +46,15 @@ struct PlacedNodes {
   std::vector<std::pair<int, std::string>> skinned;  // node, its JSON path
 };
 
-void add_instances(GltfContext& context, const std::vector<int>& parts, const mat4& world, const std::string& name) {
+// A mesh's pieces placed by one transform: its triangle parts and its points and lines.
+struct MeshPieces {
+  std::vector<int> parts;
+  std::vector<StrokeDesc> strokes;
+};
+
+void add_instances(GltfContext& context, const MeshPieces& pieces, const mat4& world, const std::string& name) {
+  place_strokes(context, pieces.strokes, world);
+  const std::vector<int>& parts = pieces.parts;
   bool mirrors = determinant3(world) < 0;
   for (int part : parts) {
     InstanceDesc instance;
@@ -58,12 +67,12 @@ void add_instances(GltfContext& context, const std::vector<int>& parts, const ma
 
 // EXT_mesh_gpu_instancing: the node's mesh once per instance, at world × the instance's T·R·S.
 // The instances are charged before the scene's array grows for them.
-void add_gpu_instances(GltfContext& context, const std::vector<int>& parts, const mat4& world,
+void add_gpu_instances(GltfContext& context, const MeshPieces& pieces, const mat4& world,
                        const tinygltf::Node& node, const tinygltf::Value& extension, const std::string& where) {
   GpuInstances instances = read_gpu_instances(context, extension, where);
   InstanceDesc sample;
   sample.name = node.name;
-  uint64_t placed = saturating_multiply(instances.count, parts.size());
+  uint64_t placed = saturating_multiply(instances.count, pieces.parts.size());
   context.charge(saturating_multiply(placed, instance_bytes(sample)), where);
   std::vector<InstanceDesc>& scene_instances = context.scene.instances;
   scene_instances.reserve(scene_instances.size() + placed);
@@ -75,7 +84,7 @@ void add_gpu_instances(GltfContext& context, const std::vector<int>& parts, cons
       ++hidden;
       continue;
     }
-    add_instances(context, parts, transform, node.name);
+    add_instances(context, pieces, transform, node.name);
   }
   if (hidden)
     context.warn(where + ": " + std::to_string(hidden) + " of " + std::to_string(instances.count) +
@@ -98,17 +107,18 @@ void place_node(GltfContext& context, PlacedNodes& placed, int index, const mat4
       // A scale animated towards zero passes through such transforms; the mesh is a speck then.
       context.warn(where + ": transform too close to singular to invert in single precision: the mesh is not rendered");
     } else {
-      std::vector<int> parts = context.mesh_parts[node.mesh];
+      MeshPieces pieces{context.mesh_parts[node.mesh], context.mesh_strokes[node.mesh]};
       if (!node.weights.empty() && node.weights != context.model.meshes[size_t(node.mesh)].weights) {
         MeshPose pose;
         pose.weights = node.weights;
-        parts = convert_mesh(context, size_t(node.mesh), pose, " (" + where + " weights)");
+        pieces.strokes.clear();
+        pieces.parts = convert_mesh(context, size_t(node.mesh), pose, " (" + where + " weights)", pieces.strokes);
       }
       auto instancing = node.extensions.find("EXT_mesh_gpu_instancing");
       if (instancing != node.extensions.end())
-        add_gpu_instances(context, parts, world, node, instancing->second, where + ".extensions.EXT_mesh_gpu_instancing");
+        add_gpu_instances(context, pieces, world, node, instancing->second, where + ".extensions.EXT_mesh_gpu_instancing");
       else
-        add_instances(context, parts, world, node.name);
+        add_instances(context, pieces, world, node.name);
     }
   }
   if (node.camera >= 0) add_camera(context, node.camera, world, node.name, where + ".camera");
@@ -154,14 +164,26 @@ std::vector<mat4> joint_matrices(const GltfContext& context, const PlacedNodes& 
 }
 
 // Skinned meshes are posed in world space from their joints (glTF ignores the node's own
-// transform for them), placed by an identity instance.
+// transform for them), placed by an identity instance. EXT_mesh_gpu_instancing does not say how
+// it combines with skinning: each instance's transform places the posed mesh, as it would
+// place it under an identity node, and a warning says so.
 void place_skinned_nodes(GltfContext& context, const PlacedNodes& placed) {
   for (const auto& [index, where] : placed.skinned) {
     const tinygltf::Node& node = context.model.nodes[size_t(index)];
     MeshPose pose;
     pose.weights = node.weights.empty() ? context.model.meshes[size_t(node.mesh)].weights : node.weights;
     pose.joint_matrices = joint_matrices(context, placed, node.skin, where + ".skin");
-    add_instances(context, convert_mesh(context, size_t(node.mesh), pose, " (" + where + " skinned)"), mat4{}, node.name);
+    MeshPieces pieces;
+    pieces.parts = convert_mesh(context, size_t(node.mesh), pose, " (" + where + " skinned)", pieces.strokes);
+    auto instancing = node.extensions.find("EXT_mesh_gpu_instancing");
+    if (instancing == node.extensions.end()) {
+      add_instances(context, pieces, mat4{}, node.name);
+      continue;
+    }
+    std::string instancing_where = where + ".extensions.EXT_mesh_gpu_instancing";
+    context.warn(instancing_where + ": instancing a skinned mesh is not defined by the extension; each instance's "
+                                    "transform places the posed mesh in world space");
+    add_gpu_instances(context, pieces, mat4{}, node, instancing->second, instancing_where);
   }
 }
 

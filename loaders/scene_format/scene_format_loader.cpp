@@ -10,6 +10,7 @@
 #include "scene_format/scene_format_polygons.h"
 #include "scene_format/scene_format_render.h"
 #include "scene_format/scene_format_shapes.h"
+#include "scene_format/scene_format_strokes.h"
 
 namespace radiant {
 
@@ -23,7 +24,7 @@ static const std::pair<const char*, BlockBuilder> block_builders[] = {
     {"material", build_material_block}, {"sphere", build_sphere_block},     {"wall", build_plane_block},
     {"plane", build_plane_block},       {"triangle", build_triangle_block}, {"polygon", build_polygon_block},
     {"cylinder", build_cylinder_block}, {"tube", build_tube_block},         {"mesh", build_mesh_block},
-    {"render", build_render_block},
+    {"line", build_line_block},         {"points", build_points_block},     {"render", build_render_block},
 };
 
 static void build_block(BuildContext& context, const Block& block) {

@@ -12,6 +12,9 @@ namespace {
 // temporaries), about 500 bytes an instance; a vertex is Embree's padded copy and radiant's
 // placed one.
 constexpr uint64_t triangle_cost = 160, vertex_cost = 32, instance_cost = 512, shape_cost = 256;
+// A stroke's primitive (segment or point) as Embree holds it: its float4 vertex, index and BVH
+// share, and the radii worked out for the view.
+constexpr uint64_t stroke_primitive_cost = 160;
 
 }  // namespace
 
@@ -25,6 +28,8 @@ uint64_t accel_build_bytes(const SceneDesc& scene) {
     const MeshDesc& mesh = scene.meshes[size_t(instance.mesh)];
     bytes = saturating_add(bytes, mesh.triangle_count() * triangle_cost + mesh.positions.size() * vertex_cost);
   }
+  for (const StrokeDesc& stroke : scene.strokes)
+    bytes = saturating_add(bytes, saturating_add(stroke.primitive_count(), stroke.positions.size()) * stroke_primitive_cost);
   return saturating_add(bytes, scene.shapes.size() * shape_cost);
 }
 

@@ -79,7 +79,8 @@ std::pair<DirectShapes::SphereGroup&, int> next_lane(std::vector<DirectShapes::S
 
 DirectShapes direct_shapes_of(const SceneDesc& scene) {
   DirectShapes direct;
-  direct.enabled = scene.instances.empty() && !scene.shapes.empty() && scene.shapes.size() <= max_shapes_traced_directly;
+  direct.enabled = scene.instances.empty() && scene.strokes.empty() && !scene.shapes.empty() &&
+                   scene.shapes.size() <= max_shapes_traced_directly;
   if (!direct.enabled) return direct;
   for (size_t i = 0; i < scene.shapes.size(); ++i) {
     const ShapeDesc& shape = scene.shapes[i];

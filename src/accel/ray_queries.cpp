@@ -52,6 +52,7 @@ HitId hit_of(const SceneAccel& accel, const RTCRayHit& rayhit) {
   if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return id;
   if (rayhit.hit.instID[0] != RTC_INVALID_GEOMETRY_ID) id.instance = int(rayhit.hit.instID[0]);
   else if (rayhit.hit.geomID == accel.shape_geometry) id.shape = int(rayhit.hit.primID);
+  else if (rayhit.hit.geomID >= accel.first_stroke_geometry) id.stroke = int(rayhit.hit.geomID - accel.first_stroke_geometry);
   else id.instance = int(rayhit.hit.geomID);  // a mesh placed in world space on the top level
   id.primitive = rayhit.hit.primID;
   id.t = rayhit.ray.tfar;

@@ -236,6 +236,8 @@ void set_traceable_range(SceneAccel& accel) {
     shape_bounds(shape, 0, lower, upper);
     reach = std::max({reach, double(max_component(abs(lower))), double(max_component(abs(upper)))});
   }
+  for (const StrokeDesc& stroke : scene.strokes)
+    for (vec3 p : stroke.positions) reach = std::max(reach, double(max_component(abs(stroke.center + p))));
   if (reach > 0.5 * accel.max_ray_coordinate) {
     const std::string& name = scene.instances[shrinking].name;
     char text[192];
@@ -262,6 +264,18 @@ void attach_shapes(SceneAccel& accel) {
   rtcReleaseGeometry(geometry);
 }
 
+// Each stroke as a geometry of its own on the top level.
+void attach_strokes(SceneAccel& accel, const StrokeSizing& sizing) {
+  const std::vector<StrokeDesc>& strokes = accel.scene->strokes;
+  accel.first_stroke_geometry = unsigned(accel.scene->instances.size()) + 1;
+  accel.stroke_max_radius.assign(strokes.size(), 0);
+  for (size_t k = 0; k < strokes.size(); ++k) {
+    RTCGeometry geometry = new_stroke_geometry(accel.device, strokes[k], sizing, accel.stroke_max_radius[k]);
+    rtcAttachGeometryByID(accel.top, geometry, accel.first_stroke_geometry + unsigned(k));
+    rtcReleaseGeometry(geometry);
+  }
+}
+
 }  // namespace
 
 SceneAccel::~SceneAccel() {
@@ -271,7 +285,7 @@ SceneAccel::~SceneAccel() {
   if (device) rtcReleaseDevice(device);
 }
 
-std::unique_ptr<SceneAccel> build_scene_accel(const SceneDesc& scene, AccelLayout layout) {
+std::unique_ptr<SceneAccel> build_scene_accel(const SceneDesc& scene, AccelLayout layout, const StrokeSizing& strokes) {
   auto accel = std::make_unique<SceneAccel>();
   accel->scene = &scene;
   accel->device = rtcNewDevice(embree_device_config().c_str());
@@ -295,6 +309,7 @@ std::unique_ptr<SceneAccel> build_scene_accel(const SceneDesc& scene, AccelLayou
   attach_instances(*accel);
   set_traceable_range(*accel);
   attach_shapes(*accel);
+  attach_strokes(*accel, strokes);
   accel->direct_shapes = direct_shapes_of(scene);
   rtcCommitScene(accel->top);
   throw_on_device_error();

@@ -13,21 +13,23 @@
 
 #include "accel/direct_shapes.h"
 #include "accel/ray.h"
+#include "accel/stroke_geometry.h"
 #include "materials/surface.h"
 #include "scene/scene_changes.h"
 #include "scene/scene_desc.h"
 
 namespace radiant {
 
-// Where a ray hit: either a triangle of an instance or an analytic shape.
+// Where a ray hit: a triangle of an instance, an analytic shape, or a line or point.
 struct HitId {
   int instance = -1;   // >= 0 for triangles
   int shape = -1;      // >= 0 for analytic shapes
+  int stroke = -1;     // >= 0 for lines and points (primitive: the segment or point)
   uint32_t primitive = 0;
   float t = 0;
   vec2 barycentric;    // Embree's (u, v) for triangles, the shape's uv for shapes
   vec3 geometric_normal_raw;  // Embree's Ng (unnormalised, world space for shapes)
-  bool valid() const { return instance >= 0 || shape >= 0; }
+  bool valid() const { return instance >= 0 || shape >= 0 || stroke >= 0; }
 };
 
 struct SceneAccel {
@@ -40,6 +42,9 @@ struct SceneAccel {
   std::vector<float> instance_orientation;  // sign of the transform's determinant
   std::vector<char> instance_identity;      // the transform is the identity (hits skip it)
   unsigned shape_geometry = RTC_INVALID_GEOMETRY_ID;
+  // Strokes take the geometry IDs from here on, one each (after the instances and the shapes').
+  unsigned first_stroke_geometry = RTC_INVALID_GEOMETRY_ID;
+  std::vector<float> stroke_max_radius;  // per stroke, for its hits' error bounds
   // What the hit filters (accel/embree_callbacks.h) know of a mesh: its geometries' user data.
   struct MeshFilter {
     const SceneAccel* accel;
@@ -74,7 +79,9 @@ enum class AccelLayout { single_level, two_level };
 // Builds the acceleration structure; `scene` must outlive it. Throws std::runtime_error when
 // Embree reports an error, or when an instance shrinks space so much that the scene's extent
 // would leave Embree's range in its object space.
-std::unique_ptr<SceneAccel> build_scene_accel(const SceneDesc& scene, AccelLayout layout = AccelLayout::single_level);
+// `strokes` sizes the lines and points (their radii are fixed at build time).
+std::unique_ptr<SceneAccel> build_scene_accel(const SceneDesc& scene, AccelLayout layout = AccelLayout::single_level,
+                                              const StrokeSizing& strokes = {});
 
 // Brings the accelerator up to date after accel.scene changed in place by `changes` only
 // (scene/scene_changes.h): moved instances get their new transforms or vertices, deformed meshes

@@ -108,11 +108,39 @@ void fill_shape_hit(const SceneAccel& accel, const Ray& ray, const HitId& id, Su
   hit.material = shape.material;
 }
 
+// Lines and points: the point along the ray, bounded by its rounding (render space is centred on
+// the camera, so |p| covers the distance travelled) and a share of the radius for Embree's
+// iterative curve intersection.
+void fill_stroke_hit(const SceneAccel& accel, const Ray& ray, const HitId& id, SurfaceHit& hit) {
+  const StrokeDesc& stroke = accel.scene->strokes[id.stroke];
+  vec3 normal = normalize(id.geometric_normal_raw);
+  if (!is_finite(normal) || length_squared(normal) < 0.5f) normal = -ray.direction * (1 / length(ray.direction));
+  vec3 p = ray.origin + ray.direction * id.t;
+  float radius = accel.stroke_max_radius[id.stroke];
+  vec4 color = {1, 1, 1, 1};
+  if (stroke.kind == StrokeKind::points) {
+    if (!stroke.colors.empty()) color = stroke.colors[id.primitive];
+  } else if (!stroke.colors.empty()) {
+    uint32_t first = stroke.segments[id.primitive];
+    float u = std::clamp(id.barycentric.x, 0.0f, 1.0f);
+    const vec4 &a = stroke.colors[first], &b = stroke.colors[first + 1];
+    color = {a.x + (b.x - a.x) * u, a.y + (b.y - a.y) * u, a.z + (b.z - a.z) * u, a.w + (b.w - a.w) * u};
+  }
+  float error = rounding_gamma(4) * max_component(abs(p)) + 1e-3f * radius;
+  hit.position = p;
+  hit.position_error = {error, error, error};
+  hit.geometric_normal = normal;
+  hit.shading_normal = normal;
+  hit.attributes.vertex_color = color;
+  hit.material = stroke.material;
+}
+
 }  // namespace
 
 SurfaceHit make_surface_hit(const SceneAccel& accel, const Ray& ray, const HitId& id) {
   SurfaceHit hit;
   if (id.instance >= 0) fill_triangle_hit(accel, id, hit);
+  else if (id.stroke >= 0) fill_stroke_hit(accel, ray, id, hit);
   else fill_shape_hit(accel, ray, id, hit);
   hit.front_face = arrives_on_front(ray.direction, hit.geometric_normal);
   return hit;

@@ -604,6 +604,7 @@ struct PathVariant {
       // Inside an absorbing volume the segment's absorption comes first (advance).
       if (enabled<E>(ctx.effects, effect_absorption) && path.medium >= 0) continue;
       // A mesh's triangle, a sphere or a plane.
+      if (id.stroke >= 0) continue;  // lines and points take the single path
       const MeshDesc* mesh = id.instance >= 0 ? &scene.meshes[scene.instances[id.instance].mesh] : nullptr;
       const ShapeDesc* shape = mesh ? nullptr : &scene.shapes[id.shape];
       if (shape && shape->kind != ShapeKind::sphere && shape->kind != ShapeKind::plane) continue;

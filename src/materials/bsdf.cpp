@@ -18,7 +18,8 @@ BsdfParams make_params(const SurfaceMaterial& m) {
   if (m.model == MaterialModel::metallic_roughness) {
     // Metallic 0, no transmission, specularFactor 0: the glTF material that is exactly Lambertian.
     bool layered = m.clearcoat > 0 || max_component(m.sheen_color) > 0;
-    bool matte = !(m.metallic > 0) && !(m.transmission > 0) && !(m.specular > 0) && !layered;
+    bool matte = !(m.metallic > 0) && !(m.transmission > 0) && !(m.specular > 0) && !(m.diffuse_transmission > 0) &&
+                 !layered;
     if (matte) return LambertParams{clamp01(m.base_color)};
     if (layered) return make_layered_params(m);
     return make_metallic_roughness_params(m);
@@ -113,10 +114,11 @@ bool Bsdf::mixes_lobes() const {
   if (auto* l = std::get_if<PhongLobes>(&lobes_))
     return count({l->p_diffuse, l->p_glossy, l->p_mirror, l->p_transmission}) > 1;
   if (auto* l = std::get_if<MetallicRoughnessLobes>(&lobes_))
-    return count({l->p_specular, l->p_diffuse, l->p_transmission}) > 1;
+    return count({l->p_specular, l->p_diffuse, l->p_diffuse_transmission, l->p_transmission}) > 1;
   if (auto* l = std::get_if<LayeredLobes>(&lobes_))
     return count({l->p_coat, l->p_sheen, 1 - l->p_coat - l->p_sheen}) > 1 ||
-           count({l->base_lobes.p_specular, l->base_lobes.p_diffuse, l->base_lobes.p_transmission}) > 1;
+           count({l->base_lobes.p_specular, l->base_lobes.p_diffuse, l->base_lobes.p_diffuse_transmission,
+                  l->base_lobes.p_transmission}) > 1;
   return false;
 }
 

@@ -86,6 +86,11 @@ struct MetallicRoughnessParams {
   float ior = 1.5f;     // of the coating, always entered from outside
   color3 base;
   float metal = 0, plastic = 0, glass = 0;  // mix weights, summing to 1
+  // The plastic's Lambertian base (KHR_materials_diffuse_transmission's mix): `diffuse`
+  // reflects (base × (1 − share)), `diffuse_transmitted` leaves into the other hemisphere
+  // (the extension's colour × share); both lie under the same coating.
+  color3 diffuse;
+  color3 diffuse_transmitted;
   // The plastic's Fresnel coating (KHR_materials_specular): its strength, its tinted F0, and
   // the untinted F0 of the ior that the exact Fresnel curve is rescaled from.
   float specular = 1;
@@ -108,6 +113,7 @@ struct MetallicRoughnessLobes : MetallicRoughnessParams {
   vec3 wo;             // local, wo.z > 0
   float eta = 1.5f;    // of the glass: n_transmitted / n_incident seen from wo
   float p_specular = 0, p_diffuse = 0, p_transmission = 0;
+  float p_diffuse_transmission = 0;  // the cosine hemisphere below the surface
   float coating_o = 1;  // 1 − the coating's albedo along wo: every diffuse eval needs it
   float loss_o = 0;     // 1 − the GGX albedo along wo: every multiple-scattering eval needs it
   float lambda_o = 0;   // Smith's GGX Lambda along wo (rough lobes): every masking term needs it
@@ -123,11 +129,13 @@ std::optional<BsdfSample> sample_local(const MetallicRoughnessLobes& l, float u_
                                        const vec3* cosine = nullptr);
 // The lobes the cosine hemisphere samples (a diffuse base, multiple scattering) are present.
 inline bool has_cosine_lobes(const MetallicRoughnessParams& p) {
-  return (p.plastic > 0 && max_component(p.base) > 0) || max_component(p.energy.multiple_scattering) > 0;
+  return (p.plastic > 0 && max_component(p.diffuse) > 0) || max_component(p.energy.multiple_scattering) > 0;
 }
-// The material has a diffuse base (then it is never pure delta). Inline: asked at every path vertex.
+// The material has a diffuse base, reflecting or transmitting (then it is never pure delta).
+// Inline: asked at every path vertex.
 inline bool has_metallic_roughness_diffuse(const SurfaceMaterial& m) {
-  return m.metallic < 1 && m.transmission < 1 && max_component(m.base_color) > 0;
+  return m.metallic < 1 && m.transmission < 1 &&
+         (max_component(m.base_color) > 0 || (m.diffuse_transmission > 0 && max_component(m.diffuse_transmission_color) > 0));
 }
 bool is_metallic_roughness_pure_delta(const SurfaceMaterial& m);
 

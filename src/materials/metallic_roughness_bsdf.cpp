@@ -146,12 +146,18 @@ color3 evaluate(const MetallicRoughnessLobes& l, vec3 wi, float& pdf) {
   pdf = 0;
   if (!l.valid || std::abs(wi.z) < 1e-7f) return f;
   if (wi.z > 0) {
-    if (WithF && l.p_diffuse > 0) f += eval_cosine_lobes(l.energy, l.base, l.plastic, l.coating_o, l.loss_o, wi.z);
+    if (WithF && l.p_diffuse > 0) f += eval_cosine_lobes(l.energy, l.diffuse, l.plastic, l.coating_o, l.loss_o, wi.z);
     if (WithPdf) pdf += l.p_diffuse * wi.z * inv_pi;
     if (!l.smooth && l.p_specular > 0) add_rough_reflection<WithF, WithPdf>(l, wi, f, pdf);
     if (WithPdf && !transmission_is_delta(l) && l.p_transmission > 0) pdf += l.p_transmission * glass_reflection_pdf(l, wi);
-  } else if (!transmission_is_delta(l) && l.p_transmission > 0) {
-    add_rough_transmission<WithF, WithPdf>(l, wi, f, pdf);
+  } else {
+    if (l.p_diffuse_transmission > 0) {
+      if (WithF)
+        f += eval_coated_diffuse(l.energy, l.diffuse_transmitted, l.plastic, l.coating_o, -wi.z,
+                                 microfacet_albedos(l.energy, -wi.z));
+      if (WithPdf) pdf += l.p_diffuse_transmission * -wi.z * inv_pi;
+    }
+    if (!transmission_is_delta(l) && l.p_transmission > 0) add_rough_transmission<WithF, WithPdf>(l, wi, f, pdf);
   }
   if (!std::isfinite(pdf)) pdf = 0;
   return is_finite(f) ? f : color3{0, 0, 0};
@@ -199,6 +205,9 @@ MetallicRoughnessParams make_metallic_roughness_params(const SurfaceMaterial& m)
   p.metal = metallic;
   p.plastic = (1 - metallic) * (1 - transmission);
   p.glass = (1 - metallic) * transmission;
+  float diffuse_transmission = std::clamp(m.diffuse_transmission, 0.0f, 1.0f);
+  p.diffuse = p.base * (1 - diffuse_transmission);
+  p.diffuse_transmitted = min(max(m.diffuse_transmission_color, {0, 0, 0}), {1, 1, 1}) * diffuse_transmission;
   p.specular = std::clamp(m.specular, 0.0f, 1.0f);
   p.specular_f0 = tinted_dielectric_f0(p.ior, m.specular_color);
   p.specular_f0_max = max_component(p.specular_f0);
@@ -229,16 +238,19 @@ MetallicRoughnessLobes make_metallic_roughness_lobes(const MetallicRoughnessPara
   float specular = selection_weight(l.metal > 0 || l.plastic * l.specular > 0 || (l.glass > 0 && !is_index_matched(l.ior)),
                                     mean(specular_fresnel(l, cos_o)), l.smooth);
   // The diffuse and the multiple scattering share the cosine hemisphere.
-  float diffuse = selection_weight(has_cosine_lobes(l), cosine_lobes_albedo(l.energy, l.base, l.plastic, l.coating_o, l.loss_o),
+  float diffuse = selection_weight(has_cosine_lobes(l), cosine_lobes_albedo(l.energy, l.diffuse, l.plastic, l.coating_o, l.loss_o),
                                    false);
+  float diffuse_transmitted = selection_weight(l.plastic > 0 && max_component(l.diffuse_transmitted) > 0,
+                                               l.plastic * mean(l.diffuse_transmitted) * l.coating_o, false);
   // A rough glass lobe reflects too, where its microfacets choose to: its estimate counts both.
   float glass_f = fresnel_dielectric(cos_o, l.eta), glass_reflects = transmission_is_delta(l) ? 0 : glass_f;
   float transmitted = l.glass > 0 && colored ? l.glass * (mean(l.base) * (1 - glass_f) + glass_reflects) : 0;
   transmitted = selection_weight(l.glass > 0 && colored, transmitted, transmission_is_delta(l));
-  float total = specular + diffuse + transmitted;
+  float total = specular + diffuse + diffuse_transmitted + transmitted;
   if (total <= 0) return l;
   l.p_specular = specular / total;
   l.p_diffuse = diffuse / total;
+  l.p_diffuse_transmission = diffuse_transmitted / total;
   l.p_transmission = transmitted / total;
   l.valid = true;
   return l;
@@ -261,10 +273,15 @@ std::optional<BsdfSample> sample_local(const MetallicRoughnessLobes& l, float u_
   if (!l.valid) return std::nullopt;
   if (u_lobe < l.p_specular) return sample_specular(l, u);
   if (u_lobe < l.p_specular + l.p_diffuse) return mixture_sample(l, cosine ? *cosine : sample_cosine_hemisphere(u));
+  float u_rest = u_lobe - l.p_specular - l.p_diffuse;
+  if (l.p_diffuse_transmission > 0 && u_rest < l.p_diffuse_transmission) {
+    vec3 below = cosine ? *cosine : sample_cosine_hemisphere(u);
+    return mixture_sample(l, {below.x, below.y, -below.z});
+  }
   // The rest of u_lobe chooses the glass's reflection or refraction. It is drawn: rough glass that
   // is not index-matched always has the specular lobe beside it.
   if (l.p_transmission > 0)
-    return sample_transmission(l, std::min((u_lobe - l.p_specular - l.p_diffuse) / l.p_transmission, 0x1.fffffep-1f), u);
+    return sample_transmission(l, std::min((u_rest - l.p_diffuse_transmission) / l.p_transmission, 0x1.fffffep-1f), u);
   return std::nullopt;
 }
 

@@ -20,9 +20,12 @@
 
 namespace radiant {
 
-// Whether a material's parameters are the case these lanes shade.
+// Whether a material's parameters are the case these lanes shade. Diffuse transmission
+// (KHR_materials_diffuse_transmission) is left to the single path, as glass is: the lanes shade
+// one hemisphere, and thin translucent surfaces are too rare to pay a second one in every lane.
 inline bool is_metallic_roughness_lane_case(const MetallicRoughnessParams& p) {
-  return !p.anisotropic && !p.smooth && !(p.glass > 0) && !(p.iridescence > 0);
+  return !p.anisotropic && !p.smooth && !(p.glass > 0) && !(p.iridescence > 0) &&
+         !(max_component(p.diffuse_transmitted) > 0);
 }
 
 namespace lane {

@@ -53,27 +53,35 @@ struct MicrofacetAlbedos {
   return coating_passage_of(e, loss, ggx_rise_albedo(cos, e.roughness, e.ior));
 }
 
-// f·cosθi of the lobes the cosine hemisphere samples, the plastic's diffuse (base × its share
+// f·|cosθi| of the coated Lambertian of albedo `color` × its share `plastic`, at |cos_i| > 0 with
+// the tables' values `at_i` there; `passage_o` is along wo. The coating lets light through both
+// ways, whichever side wi leaves (KHR_materials_diffuse_transmission's lobe uses it below).
+[[gnu::always_inline]] inline color3 eval_coated_diffuse(const MicrofacetEnergy& e, color3 color, float plastic,
+                                                         float passage_o, float cos_i, MicrofacetAlbedos at_i) {
+  float passage = passage_o * coating_passage_of(e, 1 - at_i.albedo, at_i.rise) * e.diffuse_normalization;
+  return color * (plastic * passage * inv_pi * cos_i);
+}
+
+// f·cosθi of the lobes the cosine hemisphere samples, the plastic's diffuse (`diffuse` × its share
 // `plastic`) and the multiple scattering, at cos_i > 0 with the tables' values `at_i` there;
 // `passage_o` and `loss_o` are along wo.
-[[gnu::always_inline]] inline color3 eval_cosine_lobes(const MicrofacetEnergy& e, color3 base, float plastic,
+[[gnu::always_inline]] inline color3 eval_cosine_lobes(const MicrofacetEnergy& e, color3 diffuse, float plastic,
                                                        float passage_o, float loss_o, float cos_i,
                                                        MicrofacetAlbedos at_i) {
   float loss = 1 - at_i.albedo;
-  float passage = passage_o * coating_passage_of(e, loss, at_i.rise) * e.diffuse_normalization;
-  color3 diffuse = base * (plastic * passage * inv_pi * cos_i);
-  return diffuse + e.multiple_scattering * (loss_o * loss * e.multiple_normalization * cos_i);
+  return eval_coated_diffuse(e, diffuse, plastic, passage_o, cos_i, at_i) +
+         e.multiple_scattering * (loss_o * loss * e.multiple_normalization * cos_i);
 }
 // The same, looking the tables up.
-[[gnu::always_inline]] inline color3 eval_cosine_lobes(const MicrofacetEnergy& e, color3 base, float plastic,
+[[gnu::always_inline]] inline color3 eval_cosine_lobes(const MicrofacetEnergy& e, color3 diffuse, float plastic,
                                                        float passage_o, float loss_o, float cos_i) {
-  return eval_cosine_lobes(e, base, plastic, passage_o, loss_o, cos_i, microfacet_albedos(e, cos_i));
+  return eval_cosine_lobes(e, diffuse, plastic, passage_o, loss_o, cos_i, microfacet_albedos(e, cos_i));
 }
 
-// Their mean albedo along wo (lobe selection): exactly (1 − E_s(μo))·share·base + F_ms·(1 − E(μo)).
-[[gnu::always_inline]] inline float cosine_lobes_albedo(const MicrofacetEnergy& e, color3 base, float plastic,
+// Their mean albedo along wo (lobe selection): exactly (1 − E_s(μo))·share·diffuse + F_ms·(1 − E(μo)).
+[[gnu::always_inline]] inline float cosine_lobes_albedo(const MicrofacetEnergy& e, color3 diffuse, float plastic,
                                                         float passage_o, float loss_o) {
-  return plastic * mean(base) * passage_o + mean(e.multiple_scattering) * loss_o;
+  return plastic * mean(diffuse) * passage_o + mean(e.multiple_scattering) * loss_o;
 }
 
 }  // namespace radiant

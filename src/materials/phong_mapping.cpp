@@ -57,7 +57,9 @@ void phong_from_metallic_roughness(SurfaceMaterial& m) {
     metal_f0 = lerp(metal_f0, thin_film_fresnel(1, outside, film, metal_f0), iridescence);
   }
   color3 f0 = plastic_f0 * std::clamp(m.specular, 0.0f, 1.0f);
-  m.kd = m.base_color * ((1 - metallic) * (1 - transmission));
+  // KHR_materials_diffuse_transmission's share leaves on the other side: Phong has no lobe there.
+  float diffuse_transmission = std::clamp(m.diffuse_transmission, 0.0f, 1.0f);
+  m.kd = m.base_color * ((1 - metallic) * (1 - transmission) * (1 - diffuse_transmission));
   m.ka = m.kd;
   // Highlight weight: Fresnel at normal incidence (KHR_materials_specular's strength and tint).
   m.ks = lerp(f0, metal_f0, metallic);

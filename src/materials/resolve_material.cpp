@@ -90,6 +90,13 @@ SurfaceMaterial resolve_metallic_roughness(const SceneDesc& scene, const Materia
                       {0, 0, 0});
   m.sheen_roughness = clamp01(material.sheen_roughness *
                               sample_texture(scene, material.sheen_roughness_texture, attributes, false).w);
+  m.diffuse_transmission =
+      clamp01(material.diffuse_transmission *
+              sample_texture(scene, material.diffuse_transmission_texture, attributes, false).w);
+  m.diffuse_transmission_color =
+      max(material.diffuse_transmission_color *
+              rgb(sample_texture(scene, material.diffuse_transmission_color_texture, attributes, true)),
+          {0, 0, 0});
   m.iridescence = clamp01(material.iridescence * sample_texture(scene, material.iridescence_texture, attributes,
                                                                 false).x);
   m.iridescence_ior = material.iridescence_ior;
@@ -138,6 +145,7 @@ std::vector<TextureSlot> texture_slots(const MaterialDesc& m) {
           {&m.clearcoat_roughness_texture, false}, {&m.clearcoat_normal_texture, false},
           {&m.sheen_color_texture, true},
           {&m.sheen_roughness_texture, false},   {&m.anisotropy_texture, false},
+          {&m.diffuse_transmission_texture, false}, {&m.diffuse_transmission_color_texture, true},
           {&m.iridescence_texture, false},       {&m.iridescence_thickness_texture, false},
           {&m.specular_texture, false},          {&m.alpha_texture, false},
           {&m.emission_texture, true}};

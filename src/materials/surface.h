@@ -50,6 +50,8 @@ struct SurfaceMaterial {
   float clearcoat = 0, clearcoat_roughness = 0;  // KHR_materials_clearcoat
   color3 sheen_color = {0, 0, 0};                 // KHR_materials_sheen
   float sheen_roughness = 0;
+  float diffuse_transmission = 0;                    // KHR_materials_diffuse_transmission
+  color3 diffuse_transmission_color = {1, 1, 1};
   float iridescence = 0, iridescence_ior = 1.3f, iridescence_thickness = 400;  // KHR_materials_iridescence (nm)
   float anisotropy = 0;                         // KHR_materials_anisotropy: strength
   vec2 anisotropy_direction = {1, 0};           // in the tangent frame (x along the tangent)

@@ -23,8 +23,8 @@ RenderMode choose_auto_mode(const SceneDesc& scene, bool environment, std::strin
     reason = "the background lights the scene (environment light needs the path tracer)";
     return RenderMode::path;
   }
-  size_t objects = scene.shapes.size() + scene.instances.size();
-  bool single_convex = scene.instances.empty() && scene.shapes.size() == 1 &&
+  size_t objects = scene.shapes.size() + scene.instances.size() + scene.strokes.size();
+  bool single_convex = scene.instances.empty() && scene.strokes.empty() && scene.shapes.size() == 1 &&
                        scene.shapes[0].kind != ShapeKind::tube && scene.shapes[0].kind != ShapeKind::cylinder;
   if (objects > 1 || !scene.instances.empty()) {
     for (const ShapeDesc& s : scene.shapes)

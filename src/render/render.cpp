@@ -24,6 +24,7 @@
 #include "render/camera.h"
 #include "render/pass_schedule.h"
 #include "render/progress_meter.h"
+#include "render/stroke_sizing.h"
 #include "sampling/pixel_filter.h"
 
 namespace radiant {
@@ -315,7 +316,7 @@ void build_accel(PreparedScene& prepared) {
   prepared.accel_memory = MemoryCharge(prepared.budget, accel_build_bytes(*prepared.scene),
                                        prepared.scene->source_path + ": the accelerator");
   auto start = Clock::now();
-  prepared.accel = build_scene_accel(*prepared.scene, prepared.layout);
+  prepared.accel = build_scene_accel(*prepared.scene, prepared.layout, prepared.stroke_sizing);
   prepared.build_seconds = seconds_since(start);
 }
 
@@ -357,6 +358,7 @@ PreparedScene prepare_scene(SceneDesc scene, const RenderOptions& options, Accel
   bool framed = false;
   prepared.origin = choose_render_origin(prepared.world, world_view_camera(prepared, options, framed).position);
   place_at_render_origin(*prepared.scene, prepared.world, prepared.origin);
+  prepared.stroke_sizing = stroke_sizing_for(prepared, options);
   build_accel(prepared);
   prepared.effects = analyze_effects(*prepared.scene);
   if (options.texture_filter == TextureFilterMode::trilinear)
@@ -367,9 +369,15 @@ PreparedScene prepare_scene(SceneDesc scene, const RenderOptions& options, Accel
 double prepare_view(PreparedScene& prepared, const RenderOptions& options) {
   bool framed = false;
   dvec3 origin = choose_render_origin(prepared.world, world_view_camera(prepared, options, framed).position);
-  if (origin.x == prepared.origin.x && origin.y == prepared.origin.y && origin.z == prepared.origin.z) return 0;
-  prepared.origin = origin;
-  place_at_render_origin(*prepared.scene, prepared.world, origin);
+  bool moved = origin.x != prepared.origin.x || origin.y != prepared.origin.y || origin.z != prepared.origin.z;
+  if (moved) {
+    prepared.origin = origin;
+    place_at_render_origin(*prepared.scene, prepared.world, origin);
+  }
+  // Lines and points a number of pixels wide follow the view.
+  StrokeSizing sizing = stroke_sizing_for(prepared, options);
+  if (!moved && same_sizing(sizing, prepared.stroke_sizing)) return 0;
+  prepared.stroke_sizing = sizing;
   build_accel(prepared);
   return prepared.build_seconds;
 }

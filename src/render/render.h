@@ -25,6 +25,7 @@ struct PreparedScene {
   AccelLayout layout = AccelLayout::single_level;  // two-level for an animation's frames
   EffectSet effects;
   double build_seconds = 0;
+  StrokeSizing stroke_sizing;  // how the accelerator sized lines and points, for this view
   MemoryBudget* budget = nullptr;  // what the accelerator is charged to (RenderOptions::memory)
   MemoryCharge accel_memory;       // the accelerator's estimated size, held against the budget
   // The textures' mip-maps (charged to `budget`), when the options prepared for are trilinear.
@@ -77,6 +78,8 @@ struct ResolvedSettings {
 // Throws std::invalid_argument for settings that make no sense (names the flag). The camera is
 // resolved in world space and placed in the prepared scene's render space.
 ResolvedSettings resolve_settings(const PreparedScene& prepared, const RenderOptions& options);
+// The image height a render of `scene` through `camera` with `options` takes (as resolve_settings).
+int resolved_image_height(const RenderOptions& options, const SceneDesc& scene, const CameraDesc& camera);
 
 // auto mode's rule (docs/effects.md): Whitted when it gives the path tracer's converged answer.
 // `environment`: whether an environment lights the scene (its own, or one the flags give).

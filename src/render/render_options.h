@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "accel/stroke_geometry.h"
 #include "math/vec.h"
 #include "memory/memory_budget.h"
 #include "scene/scene_desc.h"
@@ -139,6 +140,9 @@ struct RenderOptions {
   std::optional<float> filter_width;
   // --texture-filter: how texture lookups filter (trilinear: mip-mapped by the pixel's footprint).
   TextureFilterMode texture_filter = TextureFilterMode::trilinear;
+  // --line-width: lines and points without a width of their own, in pixels at their distance
+  // from the camera (the view the scene is prepared for) or in world units.
+  LineWidth line_width;
   float noise_threshold = 0;      // 0 = off
   // --min-spp: the samples every pixel takes before adaptive sampling may stop it; 0 derives
   // them from the threshold as Cycles does (render/pass_schedule.h).

@@ -18,6 +18,7 @@ WorldPlacement record_world_placement(const SceneDesc& world) {
   }
   placement.shape_centers.reserve(world.shapes.size());
   for (const ShapeDesc& shape : world.shapes) placement.shape_centers.push_back(shape.center);
+  for (const StrokeDesc& stroke : world.strokes) placement.stroke_centers.push_back(stroke.center);
   placement.light_positions.reserve(world.lights.size());
   for (const LightDesc& light : world.lights) placement.light_positions.push_back(light.position);
   placement.has_bounds = scene_bounds(world, placement.lower, placement.upper);
@@ -48,6 +49,8 @@ void place_at_render_origin(SceneDesc& scene, const WorldPlacement& world, dvec3
     transform.m[0][3] = moved.x, transform.m[1][3] = moved.y, transform.m[2][3] = moved.z;
   }
   for (size_t i = 0; i < scene.shapes.size(); ++i) scene.shapes[i].center = to_render_space(world.shape_centers[i], origin);
+  for (size_t i = 0; i < scene.strokes.size(); ++i)
+    scene.strokes[i].center = to_render_space(world.stroke_centers[i], origin);
   for (size_t i = 0; i < scene.lights.size(); ++i)
     scene.lights[i].position = to_render_space(world.light_positions[i], origin);
 }

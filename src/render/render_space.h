@@ -23,6 +23,7 @@ struct WorldPlacement {
   vec3 framing_lower, framing_upper;
   std::vector<vec3> instance_translations;  // placing moves only an instance's translation column
   std::vector<vec3> shape_centers;
+  std::vector<vec3> stroke_centers;
   std::vector<vec3> light_positions;
   bool has_bounds = false;  // finite geometry exists; then `lower`/`upper` bound it
   vec3 lower, upper;

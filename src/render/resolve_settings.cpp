@@ -119,6 +119,13 @@ void resolve_environment(const RenderOptions& options, const SceneDesc& scene, R
 
 }  // namespace
 
+int resolved_image_height(const RenderOptions& options, const SceneDesc& scene, const CameraDesc& camera) {
+  ResolvedSettings r;
+  r.camera = camera;
+  resolve_size(options, scene, r);
+  return r.height;
+}
+
 ResolvedSettings resolve_settings(const PreparedScene& prepared, const RenderOptions& options) {
   const SceneDesc& scene = *prepared.scene;
   ResolvedSettings r;

@@ -67,6 +67,9 @@ std::string settings_hash(const ResolvedSettings& s, const RenderOptions& option
   if (s.background != BackgroundKind::blur) text << "background " << int(s.background) << ' ', put(text, s.background_color);
   put(text, options.contribution_cutoff);
   text << int(options.texture_filter) << ' ';
+  // Only when changed from the default 1 pixel, so that earlier hashes stay.
+  if (options.line_width.value != 1 || !options.line_width.in_pixels)
+    text << "line-width " << (options.line_width.in_pixels ? "px " : "world "), put(text, options.line_width.value);
   text << (options.aovs.empty() ? "no-aov-sums" : "aov-sums");
   text << (s.transparent ? " transparent " : " opaque ") << int(s.filter) << ' ';
   put(text, s.filter_radius);

@@ -34,7 +34,8 @@ bool has_texture(const MaterialDesc& m) {
          m.transmission_texture.valid() || m.specular_texture.valid() || m.alpha_texture.valid() ||
          m.specular_strength_texture.valid() || m.specular_color_texture.valid() || m.clearcoat_texture.valid() ||
          m.clearcoat_roughness_texture.valid() || m.sheen_color_texture.valid() || m.sheen_roughness_texture.valid() ||
-         m.iridescence_texture.valid() || m.iridescence_thickness_texture.valid() || m.anisotropy_texture.valid();
+         m.iridescence_texture.valid() || m.iridescence_thickness_texture.valid() || m.anisotropy_texture.valid() ||
+         m.diffuse_transmission_texture.valid() || m.diffuse_transmission_color_texture.valid();
 }
 
 // Materials actually used by some placed mesh, and by the shapes when `with_shapes`.
@@ -45,8 +46,10 @@ std::vector<bool> used_materials(const SceneDesc& scene, bool with_shapes) {
   };
   for (const InstanceDesc& i : scene.instances)
     if (i.mesh >= 0 && i.mesh < int(scene.meshes.size())) mark(scene.meshes[i.mesh].material);
-  if (with_shapes)
+  if (with_shapes) {
     for (const ShapeDesc& s : scene.shapes) mark(s.material);
+    for (const StrokeDesc& s : scene.strokes) mark(s.material);
+  }
   return used;
 }
 

@@ -22,6 +22,11 @@ bool scene_bounds(const SceneDesc& scene, vec3& lower_out, vec3& upper_out) {
     lower = min(lower, lo);
     upper = max(upper, hi);
   }
+  for (const StrokeDesc& stroke : scene.strokes)
+    for (vec3 p : stroke.positions) {
+      lower = min(lower, stroke.center + p);
+      upper = max(upper, stroke.center + p);
+    }
   if (!(lower.x <= upper.x)) return false;
   lower_out = lower;
   upper_out = upper;

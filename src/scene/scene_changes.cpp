@@ -41,7 +41,7 @@ bool SceneChanges::any() const {
 
 std::optional<SceneChanges> scene_changes(const SceneDesc& before, const SceneDesc& after) {
   if (before.meshes.size() != after.meshes.size() || before.instances.size() != after.instances.size() ||
-      before.shapes.size() != after.shapes.size())
+      before.shapes.size() != after.shapes.size() || !before.strokes.empty() || !after.strokes.empty())
     return std::nullopt;
   SceneChanges changes;
   changes.deformed_meshes.resize(after.meshes.size());

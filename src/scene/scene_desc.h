@@ -122,6 +122,12 @@ struct MaterialDesc {
   float sheen_roughness = 0;
   TextureRef sheen_color_texture;      // sRGB, RGB
   TextureRef sheen_roughness_texture;  // linear, A channel
+  // KHR_materials_diffuse_transmission: this share of the diffuse base leaves on the other side
+  // of the surface (Lambertian, tinted by diffuse_transmission_color), as in leaves and paper.
+  float diffuse_transmission = 0;
+  TextureRef diffuse_transmission_texture;  // linear, A channel
+  color3 diffuse_transmission_color = {1, 1, 1};
+  TextureRef diffuse_transmission_color_texture;  // sRGB, RGB
   // KHR_materials_anisotropy: GGX rougher along a direction of the tangent frame (brushed metal).
   float anisotropy_strength = 0;
   float anisotropy_rotation = 0;  // radians, counter-clockwise from the tangent
@@ -191,6 +197,23 @@ struct ShapeDesc {
   std::string name;
 };
 
+// Lines and points (glTF POINTS, LINES, LINE_STRIP, LINE_LOOP; `.scene` line and points blocks),
+// in world space like the shapes: vertex i lies at center + positions[i], so that moving them
+// into render space moves one point. Lines are round linear curves, each segment from vertex
+// segments[k] to the next; points are spheres at every vertex.
+enum class StrokeKind { lines, points };
+struct StrokeDesc {
+  std::string name;
+  StrokeKind kind = StrokeKind::lines;
+  int material = -1;
+  vec3 center = {0, 0, 0};
+  std::vector<vec3> positions;
+  std::vector<vec4> colors;        // empty or one per vertex (COLOR_0, linear RGBA)
+  std::vector<uint32_t> segments;  // lines: each segment's first vertex
+  float width = 0;                 // world units across; 0: the render's --line-width
+  size_t primitive_count() const { return kind == StrokeKind::lines ? segments.size() : positions.size(); }
+};
+
 // ---------------------------------------------------------------- lights
 
 enum class LightKind { ambient, directional, point, spot };
@@ -253,6 +276,7 @@ struct SceneDesc {
   std::vector<MeshDesc> meshes;
   std::vector<InstanceDesc> instances;
   std::vector<ShapeDesc> shapes;
+  std::vector<StrokeDesc> strokes;
   std::vector<MaterialDesc> materials;
   std::vector<TextureDesc> textures;
   std::vector<ImageDesc> images;

@@ -29,6 +29,11 @@ uint64_t mesh_bytes(const MeshDesc& mesh) {
          array_bytes(mesh.colors) + array_bytes(mesh.indices);
 }
 
+uint64_t stroke_bytes(const StrokeDesc& stroke) {
+  return sizeof(StrokeDesc) + string_bytes(stroke.name) + array_bytes(stroke.positions) + array_bytes(stroke.colors) +
+         array_bytes(stroke.segments);
+}
+
 uint64_t instance_bytes(const InstanceDesc& instance) { return sizeof(InstanceDesc) + string_bytes(instance.name); }
 
 uint64_t scene_memory_bytes(const SceneDesc& scene) {
@@ -39,6 +44,7 @@ uint64_t scene_memory_bytes(const SceneDesc& scene) {
   for (const MaterialDesc& material : scene.materials) bytes += sizeof(MaterialDesc) + string_bytes(material.name);
   for (const InstanceDesc& instance : scene.instances) bytes += instance_bytes(instance);
   for (const ShapeDesc& shape : scene.shapes) bytes += sizeof(ShapeDesc) + string_bytes(shape.name);
+  for (const StrokeDesc& stroke : scene.strokes) bytes += stroke_bytes(stroke);
   for (const CameraDesc& camera : scene.cameras) bytes += sizeof(CameraDesc) + string_bytes(camera.name);
   for (const LightDesc& light : scene.lights) bytes += sizeof(LightDesc) + string_bytes(light.name);
   for (const std::string& warning : scene.warnings) bytes += sizeof(std::string) + string_bytes(warning);

@@ -14,6 +14,8 @@ uint64_t vertex_bytes(const MeshDesc& mesh);
 uint64_t mesh_bytes(const MeshDesc& mesh);
 // Bytes of one instance and its name.
 uint64_t instance_bytes(const InstanceDesc& instance);
+// What a StrokeDesc holds: its vertices, colours and segments.
+uint64_t stroke_bytes(const StrokeDesc& stroke);
 // Bytes of everything the scene holds: meshes, images, materials, instances, names.
 uint64_t scene_memory_bytes(const SceneDesc& scene);
 // At most what the shading-frame repairs of mesh_ops.h (shade_flat, generate_normals,

@@ -28,6 +28,11 @@ void count_geometry(const SceneDesc& scene, SceneSummary& s) {
       case ShapeKind::tube: s.tubes++; break;
     }
   }
+  for (const StrokeDesc& stroke : scene.strokes) {
+    (stroke.kind == StrokeKind::lines ? s.line_segments : s.points) += stroke.primitive_count();
+    s.geometry_bytes += stroke.positions.size() * sizeof(vec3) + stroke.colors.size() * sizeof(vec4) +
+                        stroke.segments.size() * sizeof(uint32_t);
+  }
 }
 
 // A light is enclosed when rays in all six axis directions hit the back of some surface.
@@ -79,7 +84,7 @@ SceneSummary summarize_scene(const SceneDesc& scene) {
   bool point_lights = std::any_of(scene.lights.begin(), scene.lights.end(), [](const LightDesc& l) {
     return l.kind == LightKind::point || l.kind == LightKind::spot;
   });
-  if (point_lights && (!scene.instances.empty() || !scene.shapes.empty())) {  // an accelerator only to test them
+  if (point_lights && (!scene.instances.empty() || !scene.shapes.empty() || !scene.strokes.empty())) {  // an accelerator only to test them
     auto accel = build_scene_accel(scene);
     for (size_t i = 0; i < scene.lights.size(); ++i) {
       const LightDesc& l = scene.lights[i];

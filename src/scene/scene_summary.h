@@ -11,6 +11,7 @@ namespace radiant {
 struct SceneSummary {
   size_t meshes = 0, instances = 0, triangles = 0, instanced_triangles = 0;
   size_t spheres = 0, planes = 0, cylinders = 0, tubes = 0;
+  size_t line_segments = 0, points = 0;  // strokes: round linear curves and spheres
   size_t materials = 0, textures = 0, images = 0, texture_bytes = 0, geometry_bytes = 0;
   size_t ambient_lights = 0, directional_lights = 0, point_lights = 0, spot_lights = 0, emissive_materials = 0;
   size_t cameras = 0;

@@ -67,13 +67,14 @@ struct Checker {
     const std::pair<const char*, vec3> colors[] = {{"ka", m.ka}, {"kd", m.kd}, {"ks", m.ks}, {"kr", m.kr},
                                                    {"kt", m.kt}, {"base_color", m.base_color}, {"emission", m.emission},
                                                    {"specular_color", m.specular_color}, {"sheen_color", m.sheen_color},
-                                                   {"attenuation_color", m.attenuation_color}};
+                                                   {"attenuation_color", m.attenuation_color},
+                                                   {"diffuse_transmission_color", m.diffuse_transmission_color}};
     for (const auto& [name, color] : colors) non_negative(color, where + "." + name);
     for (float f : {m.shininess, m.ior, m.alpha, m.metallic, m.roughness, m.transmission, m.normal_scale,
                     m.alpha_cutoff, m.specular, m.clearcoat, m.clearcoat_roughness,
                     m.sheen_roughness, m.thickness, m.attenuation_distance, m.iridescence, m.iridescence_thickness_min,
                     m.iridescence_thickness_max, m.anisotropy_strength, m.anisotropy_rotation, m.bump_scale,
-                    m.clearcoat_normal_scale})
+                    m.clearcoat_normal_scale, m.diffuse_transmission})
       finite(f, where);
     // Beyond these, refraction's eta^2 overflows float and directions stop being numbers.
     constexpr float min_ior = 1e-3f, max_ior = 1e3f;
@@ -99,6 +100,8 @@ struct Checker {
     texture_ref(m.iridescence_texture, where + ".iridescence_texture");
     texture_ref(m.anisotropy_texture, where + ".anisotropy_texture");
     texture_ref(m.iridescence_thickness_texture, where + ".iridescence_thickness_texture");
+    texture_ref(m.diffuse_transmission_texture, where + ".diffuse_transmission_texture");
+    texture_ref(m.diffuse_transmission_color_texture, where + ".diffuse_transmission_color_texture");
     if (!(m.iridescence_ior >= min_ior && m.iridescence_ior <= max_ior)) {
       char text[64];
       std::snprintf(text, sizeof text, "%g is out of range (%g to %g)", m.iridescence_ior, min_ior, max_ior);
@@ -167,6 +170,19 @@ struct Checker {
     if (s.kind == ShapeKind::cylinder) in_range(s.height, where + ".height");
   }
 
+  void stroke(const StrokeDesc& s, const std::string& where) const {
+    index(s.material, scene.materials.size(), false, where + ".material", "material");
+    in_range(s.center, where + ".center");
+    for (vec3 p : s.positions) in_range(s.center + p, where + ".positions");
+    sized(s.colors, s.positions.size(), where + ".colors");
+    for (uint32_t first : s.segments)
+      if (size_t(first) + 1 >= s.positions.size())
+        fail(where + ".segments", "segment from vertex " + std::to_string(first) + " has no next vertex (" +
+                                      std::to_string(s.positions.size()) + " vertices)");
+    if (!(s.width >= 0) || !std::isfinite(s.width)) fail(where + ".width", "must be positive, or 0 for --line-width");
+    in_range(s.width, where + ".width");
+  }
+
   // The corners of the mesh's bounding box, placed by the instance, computed in double: the
   // placed vertices then lie within range too (an affine map keeps them inside the placed box).
   struct Box {
@@ -215,11 +231,13 @@ struct Checker {
       placed_in_range(scene.instances[i], mesh_boxes[scene.instances[i].mesh], where);
     }
     for (size_t i = 0; i < scene.shapes.size(); ++i) shape(scene.shapes[i], at("shapes", i));
+    for (size_t i = 0; i < scene.strokes.size(); ++i) stroke(scene.strokes[i], at("strokes", i));
     for (size_t i = 0; i < scene.cameras.size(); ++i) camera(scene.cameras[i], at("cameras", i));
     for (size_t i = 0; i < scene.lights.size(); ++i) light(scene.lights[i], at("lights", i));
     non_negative(scene.environment.color, "environment.color");
     finite(scene.environment.map_scale, "environment.map_scale");
-    if (scene.instances.empty() && scene.shapes.empty()) fail("scene", "nothing to render (no meshes placed and no shapes)");
+    if (scene.instances.empty() && scene.shapes.empty() && scene.strokes.empty())
+      fail("scene", "nothing to render (no meshes placed, no shapes, no lines or points)");
   }
 };
 

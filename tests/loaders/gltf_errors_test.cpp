@@ -120,7 +120,7 @@ TEST_CASE("gltf errors: tinygltf's own complaints become one line with the file 
 
 TEST_CASE("gltf errors: a file with nothing placed has nothing to render") {
   CHECK(error_of(quad_builder().gltf(std::string(quad_mesh) + ",\"scenes\":[{\"nodes\":[]}]")) ==
-        "file.gltf: scene: nothing to render (no meshes placed and no shapes)");
+        "file.gltf: scene: nothing to render (no meshes placed, no shapes, no lines or points)");
 }
 
 TEST_CASE("gltf errors: reading one accessor from many primitives is charged every time") {
@@ -302,7 +302,7 @@ TEST_CASE("gltf: a node scaled to zero is skipped with a warning naming the file
   CHECK(scene.warnings[0] == path + ": nodes[1]: singular transform (a zero scale): the mesh is not rendered");
   CHECK(error_of(b.gltf(std::string(quad_mesh) + ",\"nodes\":[{\"mesh\":0,\"scale\":[0,0,0]}],"
                                                  "\"scenes\":[{\"nodes\":[0]}]")) ==
-        "file.gltf: scene: nothing to render (no meshes placed and no shapes)");
+        "file.gltf: scene: nothing to render (no meshes placed, no shapes, no lines or points)");
 }
 
 TEST_CASE("gltf: a node scaled nearly to zero is skipped like a zero scale, not traced") {

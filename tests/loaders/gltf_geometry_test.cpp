@@ -66,20 +66,21 @@ TEST_CASE("gltf: triangle strips alternate winding and fans share the first vert
   CHECK(fan.meshes[0].indices == std::vector<uint32_t>{1, 2, 0, 2, 3, 0, 3, 4, 0});
 }
 
-TEST_CASE("gltf: points and lines are skipped with a warning") {
+TEST_CASE("gltf: lines load beside triangles and radiant info counts their segments") {
   GltfBuilder b = quad_builder();
   std::string prims = "{\"attributes\":{\"POSITION\":0},\"mode\":1},{\"attributes\":{\"POSITION\":0},\"indices\":1}";
   SceneDesc scene = load_text(b.gltf(one_primitive(prims)));
   CHECK(scene.meshes.size() == 1);
-  REQUIRE(!scene.warnings.empty());
-  CHECK(scene.warnings[0].find("meshes[0].primitives[0]: points and lines are not rendered") != std::string::npos);
-  // `radiant info` says so too.
-  ScratchDir dir("gltf-points-info");
-  std::string path = dir.write("points.gltf", b.gltf(one_primitive(prims))).string();
+  CHECK(scene.warnings.empty());
+  REQUIRE(scene.strokes.size() == 1);
+  CHECK(scene.strokes[0].segments.size() == 2);
+  ScratchDir dir("gltf-lines-info");
+  std::string path = dir.write("lines.gltf", b.gltf(one_primitive(prims))).string();
   CommandResult info = run_radiant("info " + path);
   CHECK(info.exit_code == 0);
-  CHECK(info.out.find("warning: " + path + ": meshes[0].primitives[0]: points and lines are not rendered") !=
-        std::string::npos);
+  CHECK(info.out.find("2 line segments, 0 points") != std::string::npos);
+  CommandResult json = run_radiant("info --json " + path);
+  CHECK(json.out.find("\"line_segments\": 2") != std::string::npos);
 }
 
 TEST_CASE("gltf: normalized and plain integer components of every type") {

@@ -100,3 +100,26 @@ TEST_CASE("gltf skins: joints out of range or outside the scene are errors namin
                                           "\"scenes\":[{\"nodes\":[0]}],\"scene\":0"));
   CHECK(load_error(dir, dir.file("outside.gltf")) == "outside.gltf: skins[0].joints[0]: node 1 is not in the rendered scene");
 }
+
+TEST_CASE("gltf skins: an instanced skinned node places its posed mesh once per instance, with a warning") {
+  // One joint at the origin (no bind offset): the posed mesh is the mesh itself, in world space.
+  GltfBuilder b;
+  b.floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3", 3);  // 0: POSITION
+  std::vector<uint8_t> joints = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+  b.accessor(b.view(GltfBuilder::bytes_of(joints)), 5121, 3, "VEC4");  // 1: JOINTS_0
+  b.floats({1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0}, "VEC4", 4);          // 2: WEIGHTS_0
+  b.floats({0, 0, 0, 0, 0, 5}, "VEC3", 3);                             // 3: TRANSLATION
+  std::string gltf = b.gltf(
+      "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0,\"JOINTS_0\":1,\"WEIGHTS_0\":2}}]}],"
+      "\"skins\":[{\"joints\":[1]}],\"extensionsUsed\":[\"EXT_mesh_gpu_instancing\"],"
+      "\"nodes\":[{\"mesh\":0,\"skin\":0,\"extensions\":{\"EXT_mesh_gpu_instancing\":{\"attributes\":"
+      "{\"TRANSLATION\":3}}}},{}],\"scenes\":[{\"nodes\":[0,1]}],\"scene\":0");
+  ScratchDir dir("gltf-skin-instancing");
+  SceneDesc scene = load_scene(dir.write("skin.gltf", gltf).string());
+  REQUIRE(scene.instances.size() == 2);
+  check_near(world_positions(scene, 0)[1], {1, 0, 0});
+  check_near(world_positions(scene, 1)[1], {1, 0, 5});
+  REQUIRE(scene.warnings.size() == 1);
+  CHECK(scene.warnings[0].find("nodes[0].extensions.EXT_mesh_gpu_instancing: instancing a skinned mesh") !=
+        std::string::npos);
+}

@@ -26,7 +26,7 @@ TEST_CASE("syntax errors: stray attributes, bare '@', a late scene line, unknown
       {"scene a\nscene b\n", "t.scene:2:1: the 'scene' line must be the first line of the file"},
       {"@sphere\nr 1\np 0 0 0\n @box\n",
        "t.scene:4:2: unknown block '@box' (expected @viewer, @camera, @light, @material, @sphere, @wall, @plane, "
-       "@triangle, @polygon, @cylinder, @tube, @mesh, @render)"},
+       "@triangle, @polygon, @cylinder, @tube, @mesh, @line, @points, @render)"},
       {"@sphere big\nr 1\np 0 0 0\n", "t.scene:1:9: unexpected 'big' after '@sphere' (this block takes no name)"},
       {"@camera a b\n", "t.scene:1:11: unexpected 'b' after '@camera'"},
   });
@@ -199,7 +199,7 @@ TEST_CASE("hostile input: an over-long line, more text than the memory limit, co
             " bytes needed, over the memory limit of 12 bytes (--max-memory)");
   CHECK(test::scene_text_error(std::string("@sph\x01re\n", 9)) ==
         "t.scene:1:1: unknown block '@sph?re' (expected @viewer, @camera, @light, @material, @sphere, @wall, "
-        "@plane, @triangle, @polygon, @cylinder, @tube, @mesh, @render)");
+        "@plane, @triangle, @polygon, @cylinder, @tube, @mesh, @line, @points, @render)");
   CHECK(test::scene_text_error("@sphere\nr 1\np " + std::string(100, '7') + "x 0 0\n") ==
         "t.scene:3:3: expected a number, got '7777777777777777777777777777777777777777...'");
 }

@@ -79,7 +79,7 @@ TEST_CASE("validate: non-finite numbers and degenerate directions are refused") 
 TEST_CASE("validate: a scene with nothing placed has nothing to render") {
   SceneDesc scene = triangle_scene();
   scene.instances.clear();
-  CHECK(problem(scene) == "s.gltf: scene: nothing to render (no meshes placed and no shapes)");
+  CHECK(problem(scene) == "s.gltf: scene: nothing to render (no meshes placed, no shapes, no lines or points)");
 }
 
 TEST_CASE("validate: a singular instance transform names the file and the instance") {

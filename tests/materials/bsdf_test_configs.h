@@ -78,6 +78,14 @@ inline SurfaceMaterial anisotropic(SurfaceMaterial base, float strength) {
   return base;
 }
 
+// `base` with KHR_materials_diffuse_transmission: `share` of its diffuse sent through, tinted `color`.
+inline SurfaceMaterial diffuse_transmitting(SurfaceMaterial base, float share, color3 color) {
+  base.diffuse_transmission = share;
+  base.diffuse_transmission_color = color;
+  phong_from_metallic_roughness(base);
+  return base;
+}
+
 // The exactly Lambertian glTF material: metallic 0, specularFactor 0.
 inline SurfaceMaterial gltf_lambert(color3 base) { return specular_dielectric(base, 1, 0, {1, 1, 1}); }
 
@@ -118,6 +126,12 @@ inline std::vector<BsdfConfig> non_delta_configs() {
       {"half-iridescent plastic roughness 0.3", iridescent(metallic_roughness(grey, 0, 0.3f), 0.5f, 1.3f, 500)},
       {"sheen 0.5 roughness 1 over metal 0.3", sheened(metallic_roughness({0.9f, 0.6f, 0.3f}, 1, 0.3f), {0.5f, 0.5f, 0.5f}, 1)},
       {"ggx metal roughness 0.3", metallic_roughness({0.9f, 0.6f, 0.3f}, 1, 0.3f)},
+      {"diffuse transmission 0.6 under plastic roughness 0.5",
+       diffuse_transmitting(metallic_roughness(grey, 0, 0.5f), 0.6f, {0.9f, 0.5f, 0.2f})},
+      {"diffuse transmission 1 under lambert seen from below", diffuse_transmitting(gltf_lambert(grey), 1, white), true},
+      {"diffuse transmission 0.5 under sheen and clearcoat",
+       coated(sheened(diffuse_transmitting(metallic_roughness(grey, 0, 0.4f), 0.5f, white), {0.6f, 0.6f, 0.6f}, 0.5f),
+              0.5f, 0.3f)},
       {"ggx metal roughness 1.0", metallic_roughness({0.9f, 0.6f, 0.3f}, 1, 1)},
       {"rough transmission 0.3 from outside", metallic_roughness(white, 0, 0.3f, 1, 1.5f)},
       {"rough transmission 0.3 from inside", metallic_roughness(white, 0, 0.3f, 1, 1.5f), true},

@@ -166,7 +166,9 @@ void write_texel_bytes(const fs::path& path, int width, int height, int channels
                        const std::vector<unsigned char>& texels) {
   std::vector<float> values(texels.begin(), texels.end());
   for (float& v : values) v /= 255;  // quantized back to exactly these bytes
-  std::vector<std::string> names = channels == 1 ? std::vector<std::string>{"Y"} : std::vector<std::string>{"R", "G", "B"};
+  std::vector<std::string> names = channels == 1   ? std::vector<std::string>{"Y"}
+                                   : channels == 4 ? std::vector<std::string>{"R", "G", "B", "A"}
+                                                   : std::vector<std::string>{"R", "G", "B"};
   write_test_image(path, width, height, names, values);
 }
 
