@@ -166,7 +166,7 @@ struct JsonReader {
     if (start == at) fail("unexpected character");
     if (checking_numbers) {
       std::string problem = gltf_number_problem(gltf_number_kind(steps), std::string_view(in).substr(start, at - start));
-      if (!problem.empty()) throw LoadError(file + ": " + location + ": " + problem);
+      if (!problem.empty()) throw LoadError(file + ": " + (location.empty() ? "" : location + ": ") + problem);
     }
     return keep ? std::strtod(in.substr(start, at - start).c_str(), nullptr) : 0;
   }

@@ -1,7 +1,9 @@
 #include "gltf/gltf_index_fields.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <cstdlib>
 
 namespace radiant {
 
@@ -42,7 +44,15 @@ GltfNumberKind gltf_number_kind(const std::vector<JsonStep>& path) {
 }
 
 std::string gltf_number_problem(GltfNumberKind kind, std::string_view text) {
-  if (kind == GltfNumberKind::any) return "";
+  std::string shown(text.substr(0, 40));
+  if (text.size() > 40) shown += "...";
+  if (kind == GltfNumberKind::any) {
+    // Only a number with an exponent or hundreds of digits can overflow: parse just those.
+    bool may_overflow = text.size() > 300 || text.find_first_of("eE") != std::string_view::npos;
+    if (may_overflow && !std::isfinite(std::strtod(std::string(text).c_str(), nullptr)))
+      return shown + " is beyond the range of a double";
+    return "";
+  }
   const char* wanted = kind == GltfNumberKind::index ? "an integer from 0 to 2147483647"
                                                      : "an integer from 0 to 2^53";
   uint64_t limit = kind == GltfNumberKind::index ? 0x7fffffffull : 1ull << 53;
@@ -51,8 +61,6 @@ std::string gltf_number_problem(GltfNumberKind kind, std::string_view text) {
   uint64_t value = 0;
   for (char c : text) value = digits ? value * 10 + uint64_t(c - '0') : 0;
   if (digits && value <= limit) return "";
-  std::string shown(text.substr(0, 40));
-  if (text.size() > 40) shown += "...";
   return shown + " is not " + wanted;
 }
 

@@ -24,7 +24,8 @@ enum class GltfNumberKind {
 // What the number at `path` (root first) must be.
 GltfNumberKind gltf_number_kind(const std::vector<JsonStep>& path);
 
-// "" when `text` (a JSON number as written) is a `kind`, else why not, quoting at most 40 bytes.
+// "" when `text` (a JSON number as written) is a `kind` (any finite double for `any`), else why
+// not, quoting at most 40 bytes.
 std::string gltf_number_problem(GltfNumberKind kind, std::string_view text);
 
 }  // namespace radiant

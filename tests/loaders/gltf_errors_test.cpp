@@ -366,3 +366,28 @@ TEST_CASE("gltf errors: an index or byte offset that is not a non-negative JSON 
   CHECK(edited("{\"mesh\":0}", "{\"mesh\":0,\"extras\":{\"camera\":-1.5,\"nodes\":[0.5]}}") == "no error");
   CHECK(edited("\"byteOffset\":48", "\"byteOffset\":48") == "no error");
 }
+
+TEST_CASE("gltf errors: tinygltf's messages without a place get one, and quote at most a few hundred bytes") {
+  GltfBuilder b = quad_builder();
+  std::string valid = b.gltf(std::string(quad_mesh) + placed);
+  auto edited = [&](const std::string& from, const std::string& to) {
+    std::string text = valid;
+    size_t at = text.find(from);
+    REQUIRE(at != std::string::npos);
+    return text.replace(at, from.size(), to);
+  };
+  // nlohmann's "number overflow parsing '1e309'" named no place.
+  CHECK(error_of(edited("\"type\":\"VEC3\"", "\"type\":\"VEC3\",\"max\":[1,1e309,0]")) ==
+        "file.gltf: accessors[0].max[1]: 1e309 is beyond the range of a double");
+  // "File size mismatch : PATH, requestedBytes 60, but got 50" named no buffer.
+  ScratchDir dir("gltf-short-buffer");
+  std::string data_uri = valid.substr(valid.find("data:application"));
+  data_uri = data_uri.substr(0, data_uri.find('"'));
+  dir.write("short.bin", std::string(50, '\0'));
+  CHECK(load_error(dir, dir.write("file.gltf", edited(data_uri, "short.bin"))) ==
+        "file.gltf: buffers[0].byteLength: 60 bytes, but 'short.bin' holds 50");
+  // A data URI that does not decode was echoed whole (42 MB lines).
+  std::string message = error_of(edited(data_uri, "data:application/octet-stream;base64," + std::string(1 << 20, '!')));
+  CHECK(message.rfind("file.gltf: ", 0) == 0);
+  CHECK(message.size() < 700);
+}

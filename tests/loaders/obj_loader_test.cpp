@@ -164,3 +164,12 @@ TEST_CASE("obj: a line longer than 1 MiB in an OBJ or its MTL is refused before 
   // A line of exactly the limit is read.
   CHECK(obj_error(triangle + "#" + std::string((1 << 20) - 1, 'x') + "\n") == "no error");
 }
+
+TEST_CASE("obj: a texture or material name of 100 kB is quoted in a message of at most a few hundred bytes") {
+  std::string obj = "mtllib m.mtl\nusemtl red\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  std::string long_name = std::string(100000, 'n') + ".png";
+  std::string message = obj_error(obj, "newmtl red\nmap_Kd /" + long_name + "\n");
+  CHECK(message.find("map_Kd") != std::string::npos);  // refused: an absolute path
+  CHECK(message.find("... (100005 bytes)") != std::string::npos);
+  CHECK(message.size() < 700);
+}
