@@ -53,7 +53,9 @@ bool shard_already_rendered(const std::string& path, const ShardInfo& expected, 
   try {
     ShardInfo found = read_shard_info(path, budget);
     found.request_hash = expected.request_hash;
-    return found == expected;
+    if (!(found == expected)) return false;
+    read_shard_film(path, found, budget);  // its accumulators intact: a damaged shard is rendered again
+    return true;
   } catch (const std::runtime_error&) {
     return false;  // not a shard of ours (or damaged): rendering it again replaces it
   }

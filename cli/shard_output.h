@@ -19,8 +19,9 @@ ShardInfo make_shard_info(const PreparedScene& prepared, const ResolvedSettings&
                           const std::string& request_hash);
 
 // Whether `path` already holds exactly this shard, complete (--skip-existing after loading). A
-// missing, unreadable, partial or different file is not: the shard is rendered again. The
-// request hash is not compared: a command line spelled differently may make the same shard.
+// missing, unreadable, partial, damaged (its size or checksum wrong) or different file is not: the
+// shard is rendered again. The request hash is not compared: a command line spelled differently
+// may make the same shard.
 bool shard_already_rendered(const std::string& path, const ShardInfo& expected, MemoryBudget* budget);
 
 // "radiant: OUTPUT already holds this shard, complete; skipped" on stderr, unless quiet.

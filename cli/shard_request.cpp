@@ -57,9 +57,11 @@ bool shard_unchanged_before_load(const std::string& output, const std::string& s
       return false;
     std::vector<std::string> files = {scene_path};
     files.insert(files.end(), found.inputs.begin(), found.inputs.end());
-    return files_hash(files) == found.scene_hash;
+    if (files_hash(files) != found.scene_hash) return false;
+    read_shard_film(output, found, budget);  // its accumulators intact: a damaged shard is rendered again
+    return true;
   } catch (const std::runtime_error&) {
-    return false;  // not a shard, or a file it read is gone: the full check decides
+    return false;  // not a shard, damaged, or a file it read is gone: the full check decides
   }
 }
 

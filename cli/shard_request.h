@@ -24,8 +24,9 @@ std::string resolved_path(const std::string& path);
 std::string shard_request_hash(const CLI::App& app, const std::string& scene_path);
 
 // Whether `output` already holds, complete, the shard this command line makes, as far as can be
-// known without loading: its request hash, radiant version and Embree ISA are this run's, and the
-// scene file and every other file its render read hash as they did then. False whenever that
+// known without loading: its request hash, radiant version and Embree ISA are this run's, the
+// scene file and every other file its render read hash as they did then, and its size and
+// checksum show it undamaged. False whenever that
 // cannot be shown (no file, an older shard without a request hash, a file gone): the caller
 // then loads the scene and checks the whole metadata.
 bool shard_unchanged_before_load(const std::string& output, const std::string& scene_path, const std::string& request_hash,

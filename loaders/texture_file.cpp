@@ -14,12 +14,12 @@ ImageDesc read_texture_file(const std::filesystem::path& path, const std::string
   try {
     input = open_image_file(path.string(), error, options.budget);
   } catch (const MemoryLimitError& e) {
-    throw LoadError(where + ": image '" + name + "': " + e.what());
+    throw LoadError(where + ": image '" + escaped(name) + "': " + e.what());
   }
-  if (!input) throw LoadError(where + ": cannot read image '" + name + "'");
+  if (!input) throw LoadError(where + ": cannot read image '" + escaped(name) + "'");
   const ImageHeader& spec = input->header();
   int channels = std::min(spec.channels, 4);
-  std::string image_label = where + ": image '" + name + "' (" + std::to_string(spec.width) + "x" +
+  std::string image_label = where + ": image '" + escaped(name) + "' (" + std::to_string(spec.width) + "x" +
                             std::to_string(spec.height) + ")";
   uint64_t texels = uint64_t(std::max(spec.width, 0)) * uint64_t(std::max(spec.height, 0));
   if (texels == 0 || channels <= 0) throw LoadError(image_label + ": the image is empty");
@@ -30,7 +30,7 @@ ImageDesc read_texture_file(const std::filesystem::path& path, const std::string
   image.width = spec.width, image.height = spec.height, image.channels = channels;
   image.texels8.resize(texels * channels);
   if (!input->read(channels, PixelType::uint8, image.texels8.data()))
-    throw LoadError(where + ": cannot decode image '" + name + "': " + input->error());
+    throw LoadError(where + ": cannot decode image '" + escaped(name) + "': " + one_line(input->error()));
   return image;
 }
 

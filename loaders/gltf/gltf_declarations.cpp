@@ -6,6 +6,7 @@
 #include <map>
 #include <memory>
 
+#include "gltf/gltf_index_fields.h"
 #include "load_scene.h"
 
 namespace radiant {
@@ -58,6 +59,11 @@ struct JsonReader {
   const std::string& file;
   bool keeping;
   GltfJsonCounts counts;
+  // Whether numbers are checked against what their member holds (gltf_index_fields.h), and the
+  // full path followed for that: its steps, and the text that names it ("nodes[3].camera").
+  bool checking_numbers = false;
+  std::vector<JsonStep> steps;
+  std::string location;
   size_t at = 0;
   static constexpr int max_depth = 128;
   static constexpr int path_depth = 4;
@@ -100,11 +106,19 @@ struct JsonReader {
         ++counts.values;  // a member name is a string tinygltf keeps too
         size_t key_start = at;
         skip_string();
+        size_t key_length = at - key_start - 2;
         std::string key;
-        if (path != deep && at - key_start - 2 <= longest_path_key) key = in.substr(key_start + 1, at - key_start - 2);
+        if (path != deep && key_length <= longest_path_key) key = in.substr(key_start + 1, key_length);
         expect(':');
         std::string member_path = child_path(path, depth, (path.empty() ? "" : ".") + key);
+        size_t location_length = location.size();
+        if (checking_numbers) {
+          std::string name = key_length <= longest_path_key ? in.substr(key_start + 1, key_length) : "...";
+          location += (location.empty() ? "" : ".") + name;
+          steps.push_back({std::move(name), false});
+        }
         JsonValue member = value(depth + 1, member_path);
+        if (checking_numbers) steps.pop_back(), location.resize(location_length);
         if (keep && is_kept(member_path)) v.members[key] = std::move(member);
       } while (take(','));
       expect('}');
@@ -115,7 +129,13 @@ struct JsonReader {
       std::string item_path = child_path(path, depth, "[]");
       uint64_t items = 0;
       do {
+        size_t location_length = location.size();
+        if (checking_numbers) {
+          location += "[" + std::to_string(items) + "]";
+          steps.push_back({steps.empty() ? "" : steps.back().name, true});
+        }
         JsonValue item = value(depth + 1, item_path);
+        if (checking_numbers) steps.pop_back(), location.resize(location_length);
         ++items;
         if (keep) v.items.push_back(std::move(item));
       } while (take(','));
@@ -144,6 +164,10 @@ struct JsonReader {
     size_t start = at;
     while (at < in.size() && std::strchr("+-0123456789.eE", in[at])) ++at;
     if (start == at) fail("unexpected character");
+    if (checking_numbers) {
+      std::string problem = gltf_number_problem(gltf_number_kind(steps), std::string_view(in).substr(start, at - start));
+      if (!problem.empty()) throw LoadError(file + ": " + (location.empty() ? "" : location + ": ") + problem);
+    }
     return keep ? std::strtod(in.substr(start, at - start).c_str(), nullptr) : 0;
   }
   // Escapes are decoded as tinygltf decodes them, so that URIs compare equal to the ones it asks
@@ -256,6 +280,7 @@ static JsonValue read_json(JsonReader& reader) {
 
 GltfJsonCounts count_gltf_json(const std::string& json, const std::string& file) {
   JsonReader reader{json, file, false, {}};
+  reader.checking_numbers = true;
   read_json(reader);
   return reader.counts;
 }

@@ -29,7 +29,8 @@ struct GltfJsonCounts {
   std::map<std::string, uint64_t> elements;
 };
 
-// Checks a glTF JSON document and counts it; throws LoadError prefixed with `file`.
+// Checks a glTF JSON document and counts it; throws LoadError prefixed with `file`, and with the
+// JSON path for an index or byte count that is not a valid integer (gltf_index_fields.h).
 GltfJsonCounts count_gltf_json(const std::string& json, const std::string& file);
 
 // Reads the declarations of a glTF JSON document; throws LoadError prefixed with `file`.

@@ -61,6 +61,26 @@ void check_declarations(const GltfDeclarations& declared, const std::string& pat
   }
 }
 
+// tinygltf's message, placed where it names no element: "File size mismatch : PATH,
+// requestedBytes N, but got M" becomes the byteLength of the buffer whose uri PATH ends with.
+std::string placed_tinygltf_error(const std::string& error, const GltfDeclarations& declared) {
+  const std::string mismatch = "File size mismatch : ", requested = ", requestedBytes ", got = ", but got ";
+  size_t at = error.find(mismatch), numbers = error.find(requested, at), found = error.find(got, numbers);
+  if (at == std::string::npos || numbers == std::string::npos || found == std::string::npos) return one_line(error);
+  std::string file = error.substr(at + mismatch.size(), numbers - at - mismatch.size());
+  std::string wanted = error.substr(numbers + requested.size(), found - numbers - requested.size());
+  std::string held = one_line(error.substr(found + got.size()));
+  held = held.substr(0, held.find_first_not_of("0123456789"));
+  for (size_t i = 0; i < declared.buffer_uris.size(); ++i) {
+    const std::string& uri = declared.buffer_uris[i];
+    if (uri.empty() || uri == data_uri_marker || file.size() < uri.size() ||
+        file.compare(file.size() - uri.size(), uri.size(), uri) != 0)
+      continue;
+    return element("buffers", i) + ".byteLength: " + wanted + " bytes, but '" + escaped(uri) + "' holds " + held;
+  }
+  return one_line(error);
+}
+
 tinygltf::Model parse(const std::string& path, const std::string& bytes, const LoadOptions& options,
                       SceneDesc& scene) {
   bool binary = bytes.compare(0, 4, "glTF") == 0;
@@ -111,7 +131,7 @@ tinygltf::Model parse(const std::string& path, const std::string& bytes, const L
                     one_line(e.what()) + ")");
   }
   if (!access.error.empty()) throw LoadError(access.error);
-  if (!ok) throw LoadError(path + ": " + (error.empty() ? "invalid glTF" : one_line(error)));
+  if (!ok) throw LoadError(path + ": " + (error.empty() ? "invalid glTF" : placed_tinygltf_error(error, declared)));
   if (!warning.empty()) scene.warnings.push_back(path + ": " + one_line(warning));
   decode_buffer_view_images(model, access);
   return model;

@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "file_access.h"
+#include "text_lines.h"
 #include "obj/obj_material_names.h"
 #include "obj/obj_materials.h"
 #include "obj/obj_messages.h"
@@ -54,6 +55,9 @@ struct MtlReader : tinyobj::MaterialReader {
       std::ifstream in(path);
       if (!in) throw LoadError(label + ": cannot open");
       std::string mtl_file = (std::filesystem::path(file).parent_path() / name).string();
+      check_line_lengths(in, mtl_file);  // before any line is read whole
+      in.clear();
+      in.seekg(0);
       check_mtl_numbers(in, mtl_file);
       in.clear();
       in.seekg(0);
@@ -102,6 +106,8 @@ ObjData parse_obj(const std::string& path, const LoadOptions& options, std::vect
     in.clear();
     in.seekg(0);
   };
+  rewind();
+  check_line_lengths(in, path);  // before any line is read whole
   rewind();
   check_obj_numbers(in, path);
   rewind();

@@ -58,7 +58,7 @@ MaterialDesc convert_mtl_material(ObjTextureLoader& textures, const tinyobj::mat
     material.alpha = float(source.dissolve);
     if (material.alpha < 1) material.alpha_mode = AlphaMode::blend;
   }
-  std::string where = textures.file + ": material '" + source.name + "'";
+  std::string where = textures.file + ": material '" + escaped(source.name) + "'";
   auto texture = [&](const std::string& name, const tinyobj::texture_option_t& option, const char* key) {
     TextureRef ref;
     if (!name.empty()) ref.texture = load_obj_texture(textures, name, option, where + " " + key);

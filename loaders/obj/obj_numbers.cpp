@@ -1,5 +1,6 @@
 #include "obj/obj_numbers.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -90,11 +91,38 @@ void check_statement(const NumberStatement& statement, const std::vector<Word>& 
   }
 }
 
-void check_numbers(std::istream& in, const std::string& file, const std::vector<NumberStatement>& statements) {
+// The indices of an `f`, `l` or `p` statement (v, v/vt, v//vn, v/vt/vn): tinyobjloader reads them
+// with atoi, which wraps past 32 bits (4294967299 reads as 3), so an index written with more
+// digits than an int holds is refused here.
+void check_element_indices(const std::vector<Word>& words, const std::string& place) {
+  for (size_t i = 1; i < words.size(); ++i) {
+    const std::string& text = words[i].text;
+    for (size_t start = 0; start <= text.size();) {
+      size_t end = std::min(text.find('/', start), text.size());
+      std::string part = text.substr(start, end - start);
+      size_t digits_from = !part.empty() && (part[0] == '-' || part[0] == '+') ? 1 : 0;
+      bool integer = part.size() > digits_from &&
+                     std::all_of(part.begin() + long(digits_from), part.end(), [](char c) { return c >= '0' && c <= '9'; });
+      if (integer && (part.size() - digits_from > 10 || std::abs(std::stoll(part)) > std::numeric_limits<int>::max())) {
+        std::string shown = "'";
+        shown += part.substr(0, 40);
+        shown += part.size() > 40 ? "...'" : "'";
+        throw LoadError(place + ":" + std::to_string(words[i].column + start) + ": " + words[0].text + ": index " +
+                        shown + " is out of range (indices are at most 2147483647 in magnitude)");
+      }
+      start = end + 1;
+    }
+  }
+}
+
+void check_numbers(std::istream& in, const std::string& file, const std::vector<NumberStatement>& statements,
+                   bool with_elements) {
   std::string line;
   for (size_t number = 1; std::getline(in, line); ++number) {
     std::vector<Word> words = words_of(line);
     if (words.empty()) continue;
+    if (with_elements && (words[0].text == "f" || words[0].text == "l" || words[0].text == "p"))
+      check_element_indices(words, file + ":" + std::to_string(number));
     for (const NumberStatement& statement : statements)
       if (words[0].text == statement.keyword) check_statement(statement, words, file + ":" + std::to_string(number));
   }
@@ -102,8 +130,8 @@ void check_numbers(std::istream& in, const std::string& file, const std::vector<
 
 }  // namespace
 
-void check_obj_numbers(std::istream& in, const std::string& file) { check_numbers(in, file, obj_statements); }
+void check_obj_numbers(std::istream& in, const std::string& file) { check_numbers(in, file, obj_statements, true); }
 
-void check_mtl_numbers(std::istream& in, const std::string& file) { check_numbers(in, file, mtl_statements); }
+void check_mtl_numbers(std::istream& in, const std::string& file) { check_numbers(in, file, mtl_statements, false); }
 
 }  // namespace radiant

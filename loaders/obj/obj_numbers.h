@@ -9,6 +9,7 @@
 namespace radiant {
 
 // `v`, `vn` (at least three numbers each), `vt` and `vp`: every argument a number finite as a float.
+// `f`, `l` and `p`: every index within a 32-bit int (tinyobjloader wraps larger ones).
 void check_obj_numbers(std::istream& in, const std::string& file);
 
 // The numeric MTL statements (Ka, Kd, Ks, Ke, Kt, Tf, Ns, Ni, d, Tr, illum and the PBR ones):

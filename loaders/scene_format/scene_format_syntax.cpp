@@ -38,8 +38,7 @@ static bool read_line(std::istream& in, std::string& line, const std::string& di
   if (c == std::char_traits<char>::eof()) return false;
   while (c != std::char_traits<char>::eof() && c != '\n') {
     if (line.size() == max_line_length)
-      fail_at(display_name, {"", line_number, 1},
-              "line is longer than " + std::to_string(max_line_length) + " characters");
+      fail_at(display_name, {"", line_number, 1}, line_too_long_message());
     line += char(c);
     c = buffer->sbumpc();
   }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "memory/memory_budget.h"
+#include "text_lines.h"
 
 namespace radiant::scene_format {
 
@@ -38,8 +39,7 @@ struct SceneText {
   std::vector<Block> blocks;
 };
 
-// Longest line accepted, so hostile input cannot make one line eat all memory.
-constexpr size_t max_line_length = 1 << 20;
+using radiant::max_line_length;  // text_lines.h: the limit every text format shares
 
 // Reads `in` to the end, charging every statement's tokens to `budget` before keeping them (a
 // two-byte word takes a 48-byte Token). Throws LoadError on over-long lines, on text the budget

@@ -1,15 +1,19 @@
 #include "film/shard_file.h"
 
+#include <algorithm>
 #include <array>
 #include <bit>
+#include <cstdio>
 #include <charconv>
 #include <cmath>
 #include <memory>
 #include <utility>
 #include <stdexcept>
 
+#include "image/exr_header_check.h"
 #include "image/image_io.h"
 #include "image/render_metadata.h"
+#include "math/fnv_hash.h"
 
 namespace radiant {
 
@@ -98,6 +102,53 @@ std::vector<int64_t> parse_numbers(const std::string& name, const std::string& t
 
 void check(bool ok, const std::string& path, const std::string& why) {
   if (!ok) throw std::runtime_error(path + ": " + why);
+}
+
+constexpr const char* checksum_attribute = "radiant:checksum";
+
+std::string hex(uint64_t value) {
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(value));
+  return text;
+}
+
+// The radiant attributes other than the checksum, by name, those with a value: what the file
+// says about itself.
+uint64_t metadata_hash(const ImageMetadata& metadata) {
+  ImageMetadata attributes = radiant_attributes(metadata);
+  std::sort(attributes.begin(), attributes.end());
+  uint64_t hash = fnv_offset;
+  for (const auto& [key, value] : attributes) {
+    if (key == checksum_attribute || value.empty()) continue;  // an empty attribute is not written
+    hash = fnv1a(hash, key.c_str(), key.size() + 1);  // with its NUL, so that key and value cannot trade bytes
+    hash = fnv1a(hash, value.c_str(), value.size() + 1);
+  }
+  return hash;
+}
+
+// Every accumulator word (all channels but the mean R, G, B a viewer shows), pixel by pixel, each
+// pixel's channels by name: the file's order and the writer's agree on that.
+uint64_t accumulator_hash(const std::vector<std::string>& names, const uint32_t* words, size_t pixels) {
+  std::vector<size_t> order;
+  for (size_t c = 0; c < names.size(); ++c)
+    if (names[c] != "R" && names[c] != "G" && names[c] != "B") order.push_back(c);
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return names[a] < names[b]; });
+  uint64_t hash = fnv_offset;
+  for (size_t i = 0; i < pixels; ++i)
+    for (size_t c : order) {
+      uint32_t word = words[i * names.size() + c];
+      unsigned char bytes[4] = {uint8_t(word), uint8_t(word >> 8), uint8_t(word >> 16), uint8_t(word >> 24)};
+      hash = fnv1a(hash, bytes, sizeof bytes);
+    }
+  return hash;
+}
+
+// The recorded checksum's two halves: the metadata's hash and the accumulators'.
+std::pair<std::string, std::string> recorded_checksum(const ImageMetadata& metadata, const std::string& path) {
+  std::optional<std::string> text = find_attribute(metadata, checksum_attribute);
+  check(text.has_value(), path, "no radiant:checksum attribute, so its contents cannot be verified");
+  check(text->size() == 33 && (*text)[16] == ' ', path, "its radiant:checksum is malformed (damaged?)");
+  return {text->substr(0, 16), text->substr(17)};
 }
 
 }  // namespace
@@ -214,6 +265,7 @@ void write_shard(TemporaryFile& file, const Film& film, const ShardInfo& info, c
   spec.zip = true;
   spec.metadata = shard_metadata(info);
   add_missing_attributes(spec.metadata, record);  // seed, spp and sampler are the shard's own
+  std::erase_if(spec.metadata, [](const auto& attribute) { return attribute.first == checksum_attribute; });
   size_t stride = spec.channel_names.size();
   MemoryCharge memory(budget, saturating_multiply(film.pixels.size(), stride * sizeof(uint32_t)),
                       file.target() + ": the shard's channels");
@@ -236,13 +288,20 @@ void write_shard(TemporaryFile& file, const Film& film, const ShardInfo& info, c
       *out++ = uint32_t(low), *out++ = uint32_t(low >> 32);
     }
   }
+  spec.metadata.emplace_back(checksum_attribute, shard_checksum(spec.metadata, spec.channel_names, words.data(),
+                                                                film.pixels.size()));
   write_image_file(file, spec, words.data());
+}
+
+std::string shard_checksum(const ImageMetadata& metadata, const std::vector<std::string>& channel_names,
+                           const uint32_t* words, size_t pixels) {
+  return hex(metadata_hash(metadata)) + " " + hex(accumulator_hash(channel_names, words, pixels));
 }
 
 ShardInfo read_shard_info(const std::string& path, MemoryBudget* budget) {
   std::string error;
   std::unique_ptr<ImageSource> source = open_image_file(path, error, budget);
-  check(source != nullptr, path, error);
+  check(source != nullptr, path, error.empty() ? "cannot be read as an image (damaged?)" : error);
   const ImageHeader& header = source->header();
   ShardInfo info;
   try {
@@ -250,6 +309,10 @@ ShardInfo read_shard_info(const std::string& path, MemoryBudget* budget) {
   } catch (const std::runtime_error& e) {
     throw std::runtime_error(path + ": " + e.what());
   }
+  check(recorded_checksum(header.metadata, path).first == hex(metadata_hash(header.metadata)), path,
+        "its metadata does not match its radiant:checksum: the file is damaged");
+  std::string extent = exr_extent_problem(path);
+  check(extent.empty(), path, extent);
   check(header.x == info.x0 && header.y == info.y0 && header.width == info.x1 - info.x0 &&
             header.height == info.y1 - info.y0 && header.depth == 1,
         path, "its data window does not match its radiant:region");
@@ -262,7 +325,7 @@ ShardInfo read_shard_info(const std::string& path, MemoryBudget* budget) {
 LoadedShard read_shard_film(const std::string& path, const ShardInfo& info, MemoryBudget* budget) {
   std::string error;
   std::unique_ptr<ImageSource> source = open_image_file(path, error, budget);
-  check(source != nullptr, path, error);
+  check(source != nullptr, path, error.empty() ? "cannot be read as an image (damaged?)" : error);
   const ImageHeader& header = source->header();
   bool with_aovs = !info.aovs.empty();
   std::vector<std::string> names = channel_names(info.transparent, with_aovs);
@@ -286,7 +349,15 @@ LoadedShard read_shard_film(const std::string& path, const ShardInfo& info, Memo
   MemoryCharge film_memory(budget, saturating_multiply(pixels, film_pixel_bytes(with_aovs, info.transparent)),
                            path + ": the shard's film");
   std::vector<uint32_t> words(pixels * size_t(header.channels));
-  check(source->read_channels(0, header.channels, PixelType::uint32, words.data()), path, source->error());
+  if (!source->read_channels(0, header.channels, PixelType::uint32, words.data())) {
+    std::string why = source->error();
+    check(false, path, why.empty() ? "its pixels cannot be decoded: the file is damaged or cut short" : why);
+  }
+  auto [metadata_sum, accumulator_sum] = recorded_checksum(header.metadata, path);
+  check(metadata_sum == hex(metadata_hash(header.metadata)), path,
+        "its metadata does not match its radiant:checksum: the file is damaged");
+  check(accumulator_sum == hex(accumulator_hash(header.channel_names, words.data(), pixels)), path,
+        "its accumulators do not match its radiant:checksum: the file is damaged");
 
   Film film = make_film(width, height, with_aovs, info.transparent);
   film.x = info.x0, film.y = info.y0, film.full_width = info.full_width, film.full_height = info.full_height;

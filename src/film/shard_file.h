@@ -60,8 +60,16 @@ ShardInfo parse_shard_metadata(const ImageMetadata& metadata);
 void write_shard(TemporaryFile& file, const Film& film, const ShardInfo& info, const ImageMetadata& record,
                  MemoryBudget* budget);
 
-// The metadata of the shard at `path`, checked against its windows. Throws std::runtime_error
-// "path: why" for a file that is not a shard radiant can merge.
+// The radiant:checksum a shard records: FNV-1a (16 hex digits) over its radiant attributes other
+// than the checksum, by name, then a space and FNV-1a over its accumulator words (every channel
+// but R, G, B), pixel by pixel, each pixel's channels by name. `words` holds `pixels` pixels of
+// `channel_names.size()` words each, in that channel order.
+std::string shard_checksum(const ImageMetadata& metadata, const std::vector<std::string>& channel_names,
+                           const uint32_t* words, size_t pixels);
+
+// The metadata of the shard at `path`, checked against its windows, its checksum (the metadata
+// half) and the file's size (its last EXR chunk ends where the file does). Throws
+// std::runtime_error "path: why" for a file that is not a shard radiant can merge.
 ShardInfo read_shard_info(const std::string& path, MemoryBudget* budget);
 
 // A shard's film and its charge against the budget, held as long as the film.
@@ -71,9 +79,9 @@ struct LoadedShard {
 };
 
 // The film of the shard at `path` (with AOV sums when its info lists AOVs, coverage sums when
-// it is transparent), charging `budget`
-// for it and for the read buffer first. Throws std::runtime_error "path: why" (a pixel names
-// itself) and MemoryLimitError.
+// it is transparent), charging `budget` for it and for the read buffer first, its accumulators
+// verified against its checksum. Throws std::runtime_error "path: why" (a pixel names itself) and
+// MemoryLimitError.
 LoadedShard read_shard_film(const std::string& path, const ShardInfo& info, MemoryBudget* budget);
 
 }  // namespace radiant

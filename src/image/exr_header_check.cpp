@@ -176,6 +176,40 @@ std::string header_problem(const std::string& path, uint64_t& decoder_bytes) {
 
 }  // namespace
 
+std::string exr_extent_problem(const std::string& path) {
+  Reader reader;
+  std::error_code ec;
+  reader.size = std::filesystem::file_size(path, ec);
+  if (ec) return "";
+  reader.in.open(path, std::ios::binary);
+  std::optional<uint32_t> magic = reader.u32(), version = reader.u32();
+  if (!magic || *magic != exr_magic || !version || (*version & (multipart_flag | tiled_flag))) return "";
+  Part part;
+  bool empty = false;
+  if (!read_header(reader, (*version & long_names_flag) ? 255 : 31, false, part, empty).empty() || !part.has_window ||
+      part.tiled)
+    return "";  // check_exr_header says what is wrong, or the layout is not one this walk knows
+  uint64_t chunks = uint64_t((part.height + lines_per_chunk(part.compression) - 1) / lines_per_chunk(part.compression));
+  if (chunks > (reader.size - reader.at) / 8) return "its offset table is cut short";
+  uint64_t table_end = reader.at + 8 * chunks, last = 0;
+  for (uint64_t i = 0; i < chunks; ++i) {
+    std::optional<uint32_t> low = reader.u32(), high = reader.u32();
+    uint64_t offset = uint64_t(*low) | uint64_t(*high) << 32;
+    if (offset < table_end || offset > reader.size - std::min<uint64_t>(reader.size, 8))
+      return "chunk " + std::to_string(i) + " starts at byte " + std::to_string(offset) + ", outside the file's " +
+             std::to_string(reader.size) + " bytes";
+    last = std::max(last, offset);
+  }
+  reader.in.seekg(std::streamoff(last));
+  reader.at = last;
+  std::optional<uint32_t> line = reader.u32(), packed = reader.u32();
+  uint64_t end = last + 8 + packed.value_or(0);
+  if (!line || !packed || end != reader.size)
+    return "the file is " + std::to_string(reader.size) + " bytes but its last chunk ends at byte " + std::to_string(end) +
+           " (cut short or extended)";
+  return "";
+}
+
 ExrHeaderCheck check_exr_header(const std::string& path) {
   ExrHeaderCheck check;
   check.problem = header_problem(path, check.decoder_bytes);

@@ -23,4 +23,9 @@ struct ExrHeaderCheck {
 
 ExrHeaderCheck check_exr_header(const std::string& path);
 
+// For a single-part scanline OpenEXR file: "" when its offset table points inside the file and its
+// last chunk ends exactly where the file does, else why not, in words. "" for other files. Reads
+// the headers, the offset table and one chunk's 8-byte prefix: a cheap check for a file cut short.
+std::string exr_extent_problem(const std::string& path);
+
 }  // namespace radiant

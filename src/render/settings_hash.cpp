@@ -6,16 +6,11 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "math/fnv_hash.h"
+
 namespace radiant {
 
 namespace {
-
-constexpr uint64_t fnv_offset = 0xcbf29ce484222325ull, fnv_prime = 0x100000001b3ull;
-
-uint64_t fnv1a(uint64_t hash, const char* data, size_t size) {
-  for (size_t i = 0; i < size; ++i) hash = (hash ^ uint8_t(data[i])) * fnv_prime;
-  return hash;
-}
 
 std::string hex(uint64_t value) {
   char text[17];

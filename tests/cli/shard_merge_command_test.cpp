@@ -264,3 +264,45 @@ TEST_CASE("batch cli: --shard I/K renders render lines I, I+K, ... of the script
   quiet_ok("batch " + quoted(file) + " --shard 1/2");
   for (int i = 0; i < 5; ++i) CHECK(fs::exists(dir.file("v" + std::to_string(i) + ".png")) == (i % 2 == 1));
 }
+
+TEST_CASE("merge cli: a damaged shard is refused naming it and what is wrong, and nothing is written") {
+  ScratchDir dir("merge-damaged");
+  std::string scene = quoted(source_path("assets/cornell.gltf")), base = " --width 8 --height 8 --spp 2 --max-depth 2";
+  for (int i : {0, 1})
+    quiet_ok("render " + scene + " -o " + quoted(dir.file("s" + std::to_string(i) + ".exr")) + base + " --shard " +
+             std::to_string(i) + "/2");
+  std::string bytes = read_bytes(dir.file("s1.exr"));
+  fs::path out = dir.file("out.png");
+  auto merge_with_s1 = [&](const std::string& s1) {
+    dir.write("s1.exr", s1);
+    return run_radiant("merge " + quoted(dir.file("s0.exr")) + " " + quoted(dir.file("s1.exr")) + " -o " + quoted(out));
+  };
+  CommandResult cut = merge_with_s1(bytes.substr(0, bytes.size() - 10));
+  CHECK(cut.exit_code == 1);
+  CHECK(dir.without_path(cut.err) == "radiant: s1.exr: the file is " + std::to_string(bytes.size() - 10) +
+                                         " bytes but its last chunk ends at byte " + std::to_string(bytes.size()) +
+                                         " (cut short or extended)\n");
+  CHECK_FALSE(fs::exists(out));
+  // A bit flipped in each of 40 places: refused with a reason naming the shard, or merged unchanged.
+  CommandResult intact = merge_with_s1(bytes);
+  REQUIRE(intact.exit_code == 0);
+  std::string merged = read_bytes(out);
+  fs::remove(out);
+  for (size_t k = 0; k < 40; ++k) {
+    std::string flipped = bytes;
+    size_t at = k * bytes.size() / 40;
+    flipped[at] = char(flipped[at] ^ 0x10);
+    CAPTURE(at);
+    CommandResult r = merge_with_s1(flipped);
+    if (r.exit_code == 0) {
+      CHECK(read_bytes(out) == merged);
+      fs::remove(out);
+      continue;
+    }
+    std::string line = dir.without_path(r.err);
+    CHECK(r.exit_code == 1);
+    CHECK(line.rfind("radiant: s1.exr: ", 0) == 0);
+    CHECK(line.size() > std::string("radiant: s1.exr: \n").size());
+    CHECK_FALSE(fs::exists(out));
+  }
+}

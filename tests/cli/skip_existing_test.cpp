@@ -113,3 +113,28 @@ TEST_CASE("skip existing: another shard's file or a file that is not a shard at 
   std::ofstream(cube.shard, std::ios::binary) << "not an image";
   render_written(cube, "--skip-existing --quiet");
 }
+
+TEST_CASE("skip existing: a shard cut short or with a bit flipped is rendered again, repairing it") {
+  CubeFolder cube;
+  render_written(cube, "--quiet");
+  std::string intact = read_bytes(cube.shard);
+  SUBCASE("cut short by 10 bytes") { std::ofstream(cube.shard, std::ios::binary) << intact.substr(0, intact.size() - 10); }
+  SUBCASE("a bit flipped in its pixels") {
+    std::string flipped = intact;
+    flipped[flipped.size() - 20] ^= 4;
+    std::ofstream(cube.shard, std::ios::binary) << flipped;
+  }
+  SUBCASE("a metadata value edited in place") {
+    std::string edited = intact;
+    size_t at = edited.find("radiant:seed");
+    REQUIRE(at != std::string::npos);
+    at = edited.find('0', at + 12);  // the seed's digit, after the attribute's type and size
+    REQUIRE(at != std::string::npos);
+    edited[at] = '7';
+    std::ofstream(cube.shard, std::ios::binary) << edited;
+  }
+  render_written(cube, "--skip-existing --quiet");
+  CommandResult again = cube.render("--skip-existing");  // repaired: the next run skips it
+  CHECK(again.exit_code == 0);
+  CHECK(cube.dir.without_path(again.err) == skipped_line);
+}

@@ -195,6 +195,7 @@ TEST_CASE("gltf errors: negative light intensity and color, emissive factor and 
 }
 
 TEST_CASE("gltf errors: indices and texCoords in extensions are checked before any conversion to int") {
+  // Numbers that are not JSON integers are refused before tinygltf reads them (it would drop them).
   // `light: 1e10` was cast straight to int (undefined behaviour, caught by UBSan).
   auto with_light_index = [&](const std::string& index) {
     GltfBuilder b = quad_builder();
@@ -204,9 +205,9 @@ TEST_CASE("gltf errors: indices and texCoords in extensions are checked before a
                            "\"extensionsUsed\":[\"KHR_lights_punctual\"]"));
   };
   std::string where = "file.gltf: nodes[0].extensions.KHR_lights_punctual.light: ";
-  CHECK(with_light_index("1e10") == where + "light 1e+10 out of range (1 lights)");
-  CHECK(with_light_index("-1e300") == where + "light -1e+300 out of range (1 lights)");
-  CHECK(with_light_index("0.5") == where + "light 0.5 is not a whole number");
+  CHECK(with_light_index("1e10") == where + "1e10 is not an integer from 0 to 2147483647");
+  CHECK(with_light_index("-1e300") == where + "-1e300 is not an integer from 0 to 2147483647");
+  CHECK(with_light_index("0.5") == where + "0.5 is not an integer from 0 to 2147483647");
   CHECK(with_light_index("\"0\"") == where + "expected a light index, found a non-number");
   CHECK(with_light_index("0") == "no error");
   auto with_texture = [&](const std::string& material) {
@@ -222,14 +223,14 @@ TEST_CASE("gltf errors: indices and texCoords in extensions are checked before a
   CHECK(with_texture("{\"pbrMetallicRoughness\":{\"baseColorTexture\":{\"index\":0,\"extensions\":"
                      "{\"KHR_texture_transform\":{\"texCoord\":1e10}}}}}") ==
         "file.gltf: materials[0].pbrMetallicRoughness.baseColorTexture.extensions.KHR_texture_transform.texCoord: "
-        "TEXCOORD_1e+10 is not supported (0 or 1)");
+        "1e10 is not an integer from 0 to 2147483647");
   CHECK(with_texture("{\"extensions\":{\"KHR_materials_transmission\":{\"transmissionTexture\":{\"index\":1e10}}}}") ==
-        "file.gltf: materials[0].extensions.KHR_materials_transmission.transmissionTexture.index: texture 1e+10 out "
-        "of range (1 textures)");
+        "file.gltf: materials[0].extensions.KHR_materials_transmission.transmissionTexture.index: 1e10 is not an "
+        "integer from 0 to 2147483647");
   CHECK(with_texture("{\"extensions\":{\"KHR_materials_transmission\":{\"transmissionTexture\":{\"index\":0,"
                      "\"texCoord\":-3e9}}}}") ==
         "file.gltf: materials[0].extensions.KHR_materials_transmission.transmissionTexture.texCoord: "
-        "TEXCOORD_-3e+09 is not supported (0 or 1)");
+        "-3e9 is not an integer from 0 to 2147483647");
   CHECK(with_texture("{\"extensions\":{\"KHR_materials_specular\":{\"specularColorTexture\":{\"index\":7}}}}") ==
         "file.gltf: materials[0].extensions.KHR_materials_specular.specularColorTexture.index: texture 7 out "
         "of range (1 textures)");
@@ -330,4 +331,63 @@ TEST_CASE("gltf errors: glTF 1.0 and GLB version 1 are refused as such") {
   CHECK(error_of(glb, "file.glb") == "no error");
   glb[4] = 1;  // the header's version field
   CHECK(error_of(glb, "file.glb") == "file.glb: GLB version 1 is not supported (radiant reads glTF 2.x)");
+}
+
+TEST_CASE("gltf errors: an index or byte offset that is not a non-negative JSON integer is refused, not dropped") {
+  GltfBuilder b = quad_builder();
+  std::string valid = b.gltf(std::string(quad_mesh) + ",\"nodes\":[{\"mesh\":0}],\"scenes\":[{\"nodes\":[0]}]");
+  // `valid` with its first `from` replaced by `to`.
+  auto edited = [&](const std::string& from, const std::string& to) {
+    std::string text = valid;
+    size_t at = text.find(from);
+    REQUIRE(at != std::string::npos);
+    return error_of(text.replace(at, from.size(), to));
+  };
+  CHECK(edited("\"indices\":1", "\"indices\":1e30") ==
+        "file.gltf: meshes[0].primitives[0].indices: 1e30 is not an integer from 0 to 2147483647");
+  CHECK(edited("\"indices\":1", "\"indices\":0.5") ==
+        "file.gltf: meshes[0].primitives[0].indices: 0.5 is not an integer from 0 to 2147483647");
+  CHECK(edited("{\"mesh\":0}", "{\"mesh\":0,\"camera\":-1}") ==
+        "file.gltf: nodes[0].camera: -1 is not an integer from 0 to 2147483647");
+  CHECK(edited("{\"mesh\":0}", "{\"mesh\":0,\"camera\":4294967296}") ==
+        "file.gltf: nodes[0].camera: 4294967296 is not an integer from 0 to 2147483647");
+  CHECK(edited("\"byteOffset\":48", "\"byteOffset\":-4") ==
+        "file.gltf: bufferViews[1].byteOffset: -4 is not an integer from 0 to 2^53");
+  CHECK(edited("\"scenes\":", "\"scene\":-1,\"scenes\":") == "file.gltf: scene: -1 is not an integer from 0 to 2147483647");
+  CHECK(edited("\"nodes\":[0]", "\"nodes\":[1.0]") == "file.gltf: scenes[0].nodes[0]: 1.0 is not an integer from 0 to 2147483647");
+  CHECK(edited("\"POSITION\":0", "\"POSITION\":-0.0") ==
+        "file.gltf: meshes[0].primitives[0].attributes.POSITION: -0.0 is not an integer from 0 to 2147483647");
+  // A number quoted in the message is cut short.
+  std::string long_number = "1" + std::string(500, '0');
+  CHECK(edited("\"indices\":1", "\"indices\":" + long_number) == "file.gltf: meshes[0].primitives[0].indices: " +
+                                                                   long_number.substr(0, 40) +
+                                                                   "... is not an integer from 0 to 2147483647");
+  // The application's own data in extras may hold any number.
+  CHECK(edited("{\"mesh\":0}", "{\"mesh\":0,\"extras\":{\"camera\":-1.5,\"nodes\":[0.5]}}") == "no error");
+  CHECK(edited("\"byteOffset\":48", "\"byteOffset\":48") == "no error");
+}
+
+TEST_CASE("gltf errors: tinygltf's messages without a place get one, and quote at most a few hundred bytes") {
+  GltfBuilder b = quad_builder();
+  std::string valid = b.gltf(std::string(quad_mesh) + placed);
+  auto edited = [&](const std::string& from, const std::string& to) {
+    std::string text = valid;
+    size_t at = text.find(from);
+    REQUIRE(at != std::string::npos);
+    return text.replace(at, from.size(), to);
+  };
+  // nlohmann's "number overflow parsing '1e309'" named no place.
+  CHECK(error_of(edited("\"type\":\"VEC3\"", "\"type\":\"VEC3\",\"max\":[1,1e309,0]")) ==
+        "file.gltf: accessors[0].max[1]: 1e309 is beyond the range of a double");
+  // "File size mismatch : PATH, requestedBytes 60, but got 50" named no buffer.
+  ScratchDir dir("gltf-short-buffer");
+  std::string data_uri = valid.substr(valid.find("data:application"));
+  data_uri = data_uri.substr(0, data_uri.find('"'));
+  dir.write("short.bin", std::string(50, '\0'));
+  CHECK(load_error(dir, dir.write("file.gltf", edited(data_uri, "short.bin"))) ==
+        "file.gltf: buffers[0].byteLength: 60 bytes, but 'short.bin' holds 50");
+  // A data URI that does not decode was echoed whole (42 MB lines).
+  std::string message = error_of(edited(data_uri, "data:application/octet-stream;base64," + std::string(1 << 20, '!')));
+  CHECK(message.rfind("file.gltf: ", 0) == 0);
+  CHECK(message.size() < 700);
 }

@@ -138,7 +138,7 @@ TEST_CASE("gltf instancing: bad attributes are errors naming the extension's JSO
         path + ".attributes.ROTATION: must be FLOAT, or normalized BYTE or SHORT");
   CHECK(error("\"TRANSLATION\":99") == path + ".attributes.TRANSLATION: accessor 99 out of range (" +
                                            std::to_string(b.accessors.size()) + " accessors)");
-  CHECK(error("\"TRANSLATION\":0.5") == path + ".attributes.TRANSLATION: accessor 0.5 is not a whole number");
+  CHECK(error("\"TRANSLATION\":0.5") == path + ".attributes.TRANSLATION: 0.5 is not an integer from 0 to 2147483647");
   CHECK(error("\"_ID\":0") == path + ".attributes: names none of TRANSLATION, ROTATION and SCALE");
   CHECK(load_error(instanced_quad(b, "{}")) ==
         path + ".attributes: missing (an object naming TRANSLATION, ROTATION or SCALE accessors)");

@@ -138,3 +138,38 @@ TEST_CASE("obj: MTL numbers are checked, and negative colors and emission are re
   CHECK(obj_error(obj, "newmtl lamp\n\tKe 1e39 0 0\n") == "m.mtl:2:5: Ke: '1e39' does not fit in a float");
   CHECK(obj_error(obj, "newmtl lamp\nKe 4 4 4\nNi 1.5\nd 1\nillum 2\n") == "no error");
 }
+
+TEST_CASE("obj: a face index past 32 bits is refused naming it, not wrapped to another vertex") {
+  std::string vertices = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  std::string range = " is out of range (indices are at most 2147483647 in magnitude)";
+  CHECK(obj_error(vertices + "f 4294967299 1 2\n") == "a.obj:4:3: f: index '4294967299'" + range);
+  CHECK(obj_error(vertices + "f 1 2 -2147483649\n") == "a.obj:4:7: f: index '-2147483649'" + range);
+  CHECK(obj_error(vertices + "vt 0 0\nf 1 2/99999999999999999999999/1 3\n") ==
+        "a.obj:5:7: f: index '99999999999999999999999'" + range);
+  CHECK(obj_error(vertices + "l 1 18446744073709551617\n") == "a.obj:4:5: l: index '18446744073709551617'" + range);
+  // The largest index an int holds is an ordinary out-of-range index.
+  CHECK(obj_error(vertices + "f 1 2 2147483647\n") == "a.obj:4:7: vertex index 2147483647 out of range (3 vertices)");
+  CHECK(obj_error(vertices + "f -3 -2 -1\n") == "no error");
+}
+
+TEST_CASE("obj: a line longer than 1 MiB in an OBJ or its MTL is refused before it is read whole") {
+  std::string triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  std::string long_comment = "# " + std::string(1 << 20, 'x') + "\n";
+  CHECK(obj_error(triangle + long_comment) == "a.obj:5: line is longer than 1048576 characters");
+  CHECK(obj_error("v 0 0 " + std::string(1 << 20, '0') + "1\n" + triangle) ==
+        "a.obj:1: line is longer than 1048576 characters");
+  std::string with_library = "mtllib m.mtl\nusemtl red\n" + triangle;
+  CHECK(obj_error(with_library, "newmtl red\nKd 0.5 0.5 0." + std::string(1 << 20, '5') + "\n") ==
+        "m.mtl:2: line is longer than 1048576 characters");
+  // A line of exactly the limit is read.
+  CHECK(obj_error(triangle + "#" + std::string((1 << 20) - 1, 'x') + "\n") == "no error");
+}
+
+TEST_CASE("obj: a texture or material name of 100 kB is quoted in a message of at most a few hundred bytes") {
+  std::string obj = "mtllib m.mtl\nusemtl red\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  std::string long_name = std::string(100000, 'n') + ".png";
+  std::string message = obj_error(obj, "newmtl red\nmap_Kd /" + long_name + "\n");
+  CHECK(message.find("map_Kd") != std::string::npos);  // refused: an absolute path
+  CHECK(message.find("... (100005 bytes)") != std::string::npos);
+  CHECK(message.size() < 700);
+}
