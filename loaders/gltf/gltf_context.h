@@ -22,13 +22,13 @@ struct GltfContext {
   const std::string& file;  // the path as given, prefixed to every message
   const LoadOptions& options;
   SceneDesc& scene;
-  std::vector<std::vector<int>> mesh_parts;  // glTF mesh -> its MeshDesc indices (one per primitive)
-  std::vector<std::vector<StrokeDesc>> mesh_strokes;  // glTF mesh -> its points and lines, in object space
-  std::map<int, int> mirrored_meshes;        // MeshDesc -> its copy with reversed winding
+  std::vector<std::vector<int>> mesh_parts = {};  // glTF mesh -> its MeshDesc indices (one per primitive)
+  std::vector<std::vector<StrokeDesc>> mesh_strokes = {};  // glTF mesh -> its points and lines, in object space
+  std::map<int, int> mirrored_meshes = {};   // MeshDesc -> its copy with reversed winding
   int default_material = -1;                 // the glTF default material, made on first use
   int variant = -1;                          // the KHR_materials_variants index in use, or -1
   // (texture, glossinessFactor) -> the roughness texture made from its alpha (KHR_materials_pbrSpecularGlossiness)
-  std::map<std::pair<int, float>, int> roughness_from_glossiness;
+  std::map<std::pair<int, float>, int> roughness_from_glossiness = {};
 
   // Throws `file: where: message`.
   [[noreturn]] void fail(const std::string& where, const std::string& message) const {

@@ -160,7 +160,7 @@ std::shared_ptr<GltfDocument> read_gltf_document(const std::string& path, const 
     std::string bytes = read_gltf_file(path, options);
     document->model = parse(path, bytes, options, reading);
   }
-  GltfContext context{document->model, path, options, reading, {}, {}, {}, -1};
+  GltfContext context{.model = document->model, .file = path, .options = options, .scene = reading};
   decode_meshopt_views(document->model, context);
   decode_draco_primitives(document->model, context);
   document->warnings = std::move(reading.warnings);
@@ -180,7 +180,7 @@ SceneFileChoices gltf_choices(const GltfDocument& document) {
   }
   LoadOptions options;
   SceneDesc unused;
-  choices.material_variants = variant_names(GltfContext{model, document.path, options, unused, {}, {}, -1});
+  choices.material_variants = variant_names(GltfContext{.model = model, .file = document.path, .options = options, .scene = unused});
   return choices;
 }
 
@@ -191,7 +191,7 @@ SceneDesc gltf_scene(GltfDocument& document, const LoadOptions& given) {
   SceneDesc scene;
   scene.name = std::filesystem::path(document.path).stem().string();
   scene.warnings = document.warnings;
-  GltfContext context{model, document.path, options, scene, {}, {}, {}, -1};
+  GltfContext context{.model = model, .file = document.path, .options = options, .scene = scene};
   context.variant = selected_variant(context);
   for (const std::string& name : model.extensionsUsed)
     if (!is_supported(name)) context.warn("extension " + name + " is not supported and is ignored");

@@ -107,7 +107,7 @@ TEST_CASE("interrupt: SIGTERM mid-render to HDR writes the image so far, three c
   std::string bytes = read_bytes(out);
   std::string header = bytes.substr(0, bytes.find("\n\n"));
   CHECK(header.rfind("#?RADIANCE\n", 0) == 0);
-  CHECK(header.find("\nradiant:partial=interrupted by SIGTERM\n") != std::string::npos);
+  CHECK(header.find("\nradiant:partial=interrupted by SIGTERM at ") != std::string::npos);
 }
 
 TEST_CASE("interrupt: SIGHUP, SIGUSR1 and SIGALRM end a render as SIGINT does: partial image, no temporary, 128 + signal") {
@@ -119,7 +119,7 @@ TEST_CASE("interrupt: SIGHUP, SIGUSR1 and SIGALRM end a render as SIGINT does: p
     CommandResult r = interrupt(args_with({"render", scene, "-o", out, "--stats", stats}, slow_render), signal);
     CHECK(r.exit_code == 128 + signal);
     std::string name = std::string("SIG") + sigabbrev_np(signal);
-    CHECK(image_attribute(out, "radiant:partial") == "interrupted by " + name);
+    CHECK(image_attribute(out, "radiant:partial").rfind("interrupted by " + name + " at ", 0) == 0);
     CHECK(hidden_files(dir.path).empty());
   }
 }

@@ -78,7 +78,8 @@ TEST_CASE("gltf: lines load beside triangles and radiant info counts their segme
   std::string path = dir.write("lines.gltf", b.gltf(one_primitive(prims))).string();
   CommandResult info = run_radiant("info " + path);
   CHECK(info.exit_code == 0);
-  CHECK(info.out.find("2 line segments, 0 points") != std::string::npos);
+  CHECK(info.out.find("2 line segments") != std::string::npos);
+  CHECK(info.out.find("point") == std::string::npos);  // no count of a kind the file has none of
   CommandResult json = run_radiant("info --json " + path);
   CHECK(json.out.find("\"line_segments\": 2") != std::string::npos);
 }
