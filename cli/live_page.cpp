@@ -3,6 +3,7 @@
 #include <httplib.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <mutex>
 #include <stdexcept>
@@ -133,6 +134,10 @@ LivePage::LivePage(const std::string& address, std::function<void(const std::str
                                                                      : -1);
   if (s.port <= 0) throw std::runtime_error("--serve: cannot listen on " + address);
   s.thread = std::thread([&s] { s.server.listen_after_bind(); });
+  // stop() does nothing before the server runs: a page stopped that early would never end its
+  // thread. Wait for it (it runs within microseconds).
+  for (int waited = 0; !s.server.is_running() && waited < 5000; ++waited)
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
 }
 
 LivePage::~LivePage() {
