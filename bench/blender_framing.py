@@ -2,9 +2,15 @@
 the front view of the meshes' bounding box (docs/cli.md, "The framing camera"), a square image,
 40 degrees vertical field of view."""
 import math
+import sys
 
 import bpy
+import numpy
 from mathutils import Vector
+
+# Debian 12's Blender 3.4 glTF importer still uses numpy.bool, which its numpy (1.24) removed.
+if not hasattr(numpy, "bool"):
+    numpy.bool = bool
 
 
 def to_gltf(v):
@@ -64,3 +70,20 @@ def add_framing_camera(scene):
     camera.rotation_euler = direction.to_track_quat("-Z", "Y").to_euler()
     scene.camera = camera
     return "%r,%r,%r %r,%r,%r %r,%r,%r" % (*position, *target, *up)
+
+
+def import_and_frame(scene_path):
+    """Imports SCENE_PATH (glTF, or OBJ with Blender 3.4's importer) into an empty scene, adds
+    radiant's framing camera and prints "camera: FROM AT UP" for radiant's flags; returns the
+    scene, or exits when nothing was imported."""
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    if scene_path.lower().endswith(".obj"):
+        bpy.ops.wm.obj_import(filepath=scene_path)
+    else:
+        bpy.ops.import_scene.gltf(filepath=scene_path)
+    scene = bpy.context.scene
+    camera = add_framing_camera(scene)
+    if camera is None:
+        sys.exit("no meshes imported")
+    print("camera: " + camera)
+    return scene

@@ -13,28 +13,17 @@ import os
 import sys
 
 import bpy
-import numpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from blender_framing import add_framing_camera  # noqa: E402
+from blender_framing import import_and_frame  # noqa: E402
 from cycles_like_radiant import configure_cycles  # noqa: E402
-
-# Debian 12's Blender 3.4 glTF importer still uses numpy.bool, which its numpy (1.24) removed.
-if not hasattr(numpy, "bool"):
-    numpy.bool = bool
 
 args = sys.argv[sys.argv.index("--") + 1:]
 scene_path, out_path = args[0], args[1]
 size, spp, max_depth, seed = (int(a) for a in args[2:6])
 env_path = args[6]
 
-bpy.ops.wm.read_factory_settings(use_empty=True)
-bpy.ops.import_scene.gltf(filepath=scene_path)
-scene = bpy.context.scene
-camera = add_framing_camera(scene)
-if camera is None:
-    sys.exit("no meshes imported")
-print("camera: " + camera)
+scene = import_and_frame(scene_path)
 
 configure_cycles(scene, size, spp, max_depth, seed)
 world = bpy.data.worlds.new("environment")
