@@ -49,7 +49,4 @@ void check_image_output(const std::string& path);
 // std::runtime_error naming the target and the writer's reason.
 void write_image(TemporaryFile& file, const OutputImage& image);
 
-// Linear to sRGB transfer function (IEC 61966-2-1), for values in [0, 1].
-float linear_to_srgb(float linear);
-
 }  // namespace radiant
