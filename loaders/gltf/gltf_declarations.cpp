@@ -6,7 +6,8 @@
 #include <map>
 #include <memory>
 
-#include "load_scene.h"
+#include "message_text.h"
+#include "scene/load_error.h"
 
 namespace radiant {
 
