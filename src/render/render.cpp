@@ -20,7 +20,7 @@
 #include "integrators/path.h"
 #include "integrators/surface_lanes.h"
 #include "integrators/whitted.h"
-#include "materials/volume_absorption.h"
+#include "scene/volume_absorption.h"
 #include "render/camera.h"
 #include "render/progress_meter.h"
 #include "sampling/pixel_filter.h"
