@@ -7,9 +7,8 @@
 #
 # Each is pinned to its own core (taskset), and the cores swap every round, so that a fixed
 # difference between the cores cancels in the geometric mean of the ratios over an even number
-# of rounds (printed too). On the eighteenth session's VM, in most rounds one of the two runs
-# took about 4.0 s and the other 3.1 s for the same work, and the slow core changed between
-# rounds: such noise only averages out. Changes of a few percent are better measured in
+# of rounds (printed too). On a 2-core VM one core can run the same work at 3.1 s and the other
+# at 4.0 s, and which core is slow can change between rounds: such noise only averages out. Changes of a few percent are better measured in
 # instructions (docs/performance.md, "How to measure an instruction count").
 #
 # Usage: bench/ab_pair.sh BINARY_A BINARY_B [--rounds 10] [--size 256] [--spp 32]

@@ -4,11 +4,11 @@
 # and the same background; which one starts first alternates, and so do the cores: each is
 # pinned to one (taskset) and they swap every round, so that a fixed difference between the
 # cores' speeds cancels in the geometric mean of the ratios over an even number of rounds, as
-# in bench/ab_pair.sh. Unpinned, the forty-fourth session's AMD EPYC gave the same `.scene` box
+# in bench/ab_pair.sh. Unpinned, a 2-core AMD EPYC VM gave the same `.scene` box
 # 0.80 in some rounds and 1.22 in others; pinned, one run's tutorial took 1.97-2.24 s on core 0
 # and 2.40-2.65 s on core 1. On a virtual machine whose
 # effective clock drifts between runs (bench/embree_cornell.sh has seen the tutorial take 9.5 s
-# and 13.9 s for the same render in one session), this ratio is steadier than one of runs in
+# and 13.9 s for the same render within an hour), this ratio is steadier than one of runs in
 # turn. It measures one thread each, not the two-thread render the other benchmark times; both
 # processes' whole CPU time counts (loading and building included, as in that one's wall time).
 # radiant writes PNG: EXR and PPM load OpenImageIO, about 0.4 s of start-up on this machine.
@@ -17,7 +17,7 @@
 #                                       [--scene cornell.scene|cornell.gltf|cornell-lambertian.gltf]
 #                                       [--tutorial-kernel default|watertight]
 # (--tutorial-kernel watertight: the tutorial on the triangle kernel radiant's robust scenes get,
-# embree_render_robust, for a like-for-like ratio; the issue's targets are against its default.)
+# embree_render_robust, for a like-for-like ratio; radiant's targets are against its default.)
 # Needs: embree-tools (pathtracer).
 set -euo pipefail
 cd "$(dirname "$0")/.."

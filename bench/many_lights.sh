@@ -30,8 +30,8 @@
 # --references: keep the two references in DIR and reuse them when they are there for this size
 # and sample count, so that two builds are measured against the same ones (and the 4096-spp
 # renders are made once).
-# --binary: another build of radiant, e.g. a copy of the session's starting build, to measure it
-# the same way in the same session; without it build/radiant is brought up to date first.)
+# --binary: another build of radiant, e.g. a copy of the build before a change, to measure it
+# the same way in the same hour; without it build/radiant is brought up to date first.)
 # A smoke test that it works (seconds, not a measurement):
 #   bench/many_lights.sh --width 32 --height 24 --seconds 0.5 --reference-spp 64 --repeats 1 --max-load 99
 # Needs: openimageio-tools (oiiotool; scripts/setup.sh installs it).

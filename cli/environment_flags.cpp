@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "option_parsing.h"
+#include "number_parsing.h"
 
 namespace radiant::cli {
 

@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "commands.h"
+#include "accel/light_enclosure.h"
 #include "image_info.h"
 #include "json_output.h"
 #include "load_scene.h"
@@ -184,6 +185,7 @@ int info_main(int argc, char** argv) {
     SceneFileChoices choices = scene_file_choices(file);
     SceneDesc scene = scene_from_file(file, options);
     SceneSummary summary = summarize_scene(scene);
+    for (std::string& warning : enclosed_light_warnings(scene)) summary.warnings.push_back(std::move(warning));
     EffectSet effects = analyze_effects(scene);
     std::string reason;
     // The plain command's environment: the file's own, or the studio when nothing lights it.

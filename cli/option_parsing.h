@@ -11,15 +11,10 @@
 
 #include "log_level.h"
 #include "memory/memory_budget.h"
+#include "number_parsing.h"
 #include "render/render_options.h"
 
 namespace radiant::cli {
-
-// Validators for numeric flags. CLI11's Range and PositiveNumber let NaN through (every
-// comparison with it is false) and check a double, while most flags are stored in a float:
-// these take numbers finite in a float and in [low, high], or (0, high] for the positive one.
-CLI::Validator number_in(double low, double high);
-CLI::Validator positive_number(double high = std::numeric_limits<float>::max());
 
 // Parses a command's arguments (argv[0] is the command) with what CLI11 does not check: a flag
 // given twice (`--spp 4 --spp=8`) is an error naming both, and an unknown flag is an error that
@@ -30,9 +25,6 @@ void parse_arguments(CLI::App& app, int argc, char** argv);
 void parse_arguments(CLI::App& app, std::vector<std::string> words);
 
 // Each throws CLI::ValidationError naming `flag` on bad input. Numbers must be finite as floats.
-vec3 parse_vec3(const std::string& flag, const std::string& text);
-// Comma-separated numbers, as many as given.
-std::vector<float> parse_numbers(const std::string& flag, const std::string& text);
 RenderMode parse_mode(const std::string& flag, const std::string& text);
 SamplerKind parse_sampler(const std::string& flag, const std::string& text);
 LightSampler parse_light_sampler(const std::string& flag, const std::string& text);

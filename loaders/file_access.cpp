@@ -2,7 +2,8 @@
 
 #include <fstream>
 
-#include "load_scene.h"
+#include "load_options.h"
+#include "message_text.h"
 #include "memory/input_file.h"
 
 namespace radiant {

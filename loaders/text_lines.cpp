@@ -1,6 +1,6 @@
 #include "text_lines.h"
 
-#include "load_scene.h"
+#include "scene/load_error.h"
 
 namespace radiant {
 

@@ -3,6 +3,7 @@
 #include "file_access.h"
 #include "image/image_io.h"
 #include "memory/memory_budget.h"
+#include "message_text.h"
 
 namespace radiant {
 

@@ -5,7 +5,8 @@
 #include <filesystem>
 #include <string>
 
-#include "load_scene.h"
+#include "load_options.h"
+#include "scene/scene_desc.h"
 
 namespace radiant {
 

@@ -1,5 +1,6 @@
 #include "gltf/gltf_accessors.h"
 
+#include <algorithm>
 #include <cstring>
 
 namespace radiant {

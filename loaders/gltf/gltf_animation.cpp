@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "gltf/gltf_accessors.h"
+#include "message_text.h"
 
 namespace radiant {
 

@@ -13,7 +13,8 @@
 #include <utility>
 #include <vector>
 
-#include "load_scene.h"
+#include "load_options.h"
+#include "scene/scene_desc.h"
 
 namespace radiant {
 

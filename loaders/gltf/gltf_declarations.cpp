@@ -7,7 +7,8 @@
 #include <memory>
 
 #include "gltf/gltf_index_fields.h"
-#include "load_scene.h"
+#include "message_text.h"
+#include "scene/load_error.h"
 
 namespace radiant {
 

@@ -5,6 +5,7 @@
 #include "file_access.h"
 #include "gltf/gltf_context.h"
 #include "gltf/gltf_memory.h"
+#include "message_text.h"
 
 namespace radiant {
 

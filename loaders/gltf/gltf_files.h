@@ -10,7 +10,7 @@
 #include <string>
 
 #include "gltf/gltf_declarations.h"
-#include "load_scene.h"
+#include "load_options.h"
 
 namespace radiant {
 

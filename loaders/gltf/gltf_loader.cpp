@@ -17,6 +17,7 @@
 #include "gltf/gltf_meshes.h"
 #include "gltf/gltf_meshopt.h"
 #include "gltf/gltf_nodes.h"
+#include "message_text.h"
 
 namespace radiant {
 

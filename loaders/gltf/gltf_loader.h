@@ -7,7 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "load_scene.h"
+#include "load_options.h"
+#include "scene_file_choices.h"
+#include "scene/scene_desc.h"
 
 namespace radiant {
 

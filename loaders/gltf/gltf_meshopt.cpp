@@ -5,6 +5,8 @@
 
 #include <cmath>
 
+#include "message_text.h"
+
 namespace radiant {
 
 namespace {

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "gltf/gltf_materials.h"
+#include "gltf/gltf_material_values.h"
 #include "materials/metallic_roughness.h"
 
 namespace radiant {

@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "file_access.h"
+#include "message_text.h"
 #include "text_lines.h"
 #include "obj/obj_material_names.h"
 #include "obj/obj_materials.h"

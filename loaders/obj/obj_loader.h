@@ -3,7 +3,8 @@
 
 #include <string>
 
-#include "load_scene.h"
+#include "load_options.h"
+#include "scene/scene_desc.h"
 
 namespace radiant {
 

@@ -2,6 +2,7 @@
 
 #include "file_access.h"
 #include "memory/input_file.h"
+#include "message_text.h"
 #include "obj/obj_paths.h"
 #include "texture_file.h"
 

@@ -7,7 +7,8 @@
 #include <map>
 #include <string>
 
-#include "load_scene.h"
+#include "load_options.h"
+#include "scene/scene_desc.h"
 
 namespace radiant {
 

@@ -6,7 +6,7 @@
 #include <regex>
 #include <sstream>
 
-#include "load_scene.h"
+#include "message_text.h"
 
 namespace radiant {
 

@@ -7,7 +7,8 @@
 #include <limits>
 #include <vector>
 
-#include "load_scene.h"
+#include "message_text.h"
+#include "scene/load_error.h"
 
 namespace radiant {
 

@@ -4,7 +4,7 @@
 #include <map>
 #include <string>
 
-#include "load_scene.h"
+#include "load_options.h"
 #include "scene/scene_desc.h"
 #include "scene_format/scene_format_syntax.h"
 

@@ -4,7 +4,8 @@
 #include <istream>
 #include <string>
 
-#include "load_scene.h"
+#include "load_options.h"
+#include "scene/scene_desc.h"
 
 namespace radiant {
 

@@ -1,6 +1,6 @@
 #include "scene_format/scene_format_syntax.h"
 
-#include "load_scene.h"
+#include "scene/load_error.h"
 
 namespace radiant::scene_format {
 

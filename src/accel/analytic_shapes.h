@@ -36,9 +36,6 @@ ShapeHit complete_shape_hit(const ShapeDesc& shape, const Ray& ray, const ShapeC
 // Nearest hit with t in (tmin, tmax); false when there is none.
 bool intersect_shape(const ShapeDesc& shape, const Ray& ray, float tmin, ShapeHit& hit);
 
-// World-space bounds; infinite shapes get finite bounds of +-`infinite_extent`.
-void shape_bounds(const ShapeDesc& shape, float infinite_extent, vec3& lower, vec3& upper);
-
 // Reprojects an approximate hit point (with the hit's normal) onto the shape and bounds the
 // rounding error of the result.
 void refine_shape_point(const ShapeDesc& shape, vec3 approximate, vec3 normal, vec3& point, vec3& error);

@@ -3,7 +3,6 @@
 #include <cmath>
 #include <utility>
 
-#include "accel/scene_accel.h"
 
 namespace radiant {
 
@@ -102,17 +101,17 @@ bool shape_hit_in_range(float max_ray_coordinate, const Ray& ray, double t) {
   return std::abs(p.x) <= bound && std::abs(p.y) <= bound && std::abs(p.z) <= bound;
 }
 
-HitId nearest_shape_directly(const SceneAccel& accel, const Ray& ray) {
-  const std::vector<ShapeDesc>& shapes = accel.scene->shapes;
+HitId nearest_shape_directly(const DirectShapes& direct, const std::vector<ShapeDesc>& shapes, float max_ray_coordinate,
+                             const Ray& ray) {
   // Its tmax shrinks to each nearer hit, as Embree's tfar does; spheres are culled against the
   // whole ray, since a nearer hit is found only later. Only the nearest gets its normal and uv.
   Ray remaining = ray;
   ShapeCrossing nearest;
   int nearest_shape = -1;
-  for_each_candidate(accel.direct_shapes, ray, [&](int i) {
+  for_each_candidate(direct, ray, [&](int i) {
     ShapeCrossing crossing;
     if (!cross_shape(shapes[size_t(i)], remaining, 0, crossing) ||
-        !shape_hit_in_range(accel.max_ray_coordinate, ray, crossing.t))
+        !shape_hit_in_range(max_ray_coordinate, ray, crossing.t))
       return false;
     remaining.tmax = float(crossing.t);
     nearest = crossing;
@@ -130,12 +129,12 @@ HitId nearest_shape_directly(const SceneAccel& accel, const Ray& ray) {
   return id;
 }
 
-bool shapes_block_directly(const SceneAccel& accel, const Ray& ray) {
-  const std::vector<ShapeDesc>& shapes = accel.scene->shapes;
-  return for_each_candidate(accel.direct_shapes, ray, [&](int i) {
+bool shapes_block_directly(const DirectShapes& direct, const std::vector<ShapeDesc>& shapes, float max_ray_coordinate,
+                           const Ray& ray) {
+  return for_each_candidate(direct, ray, [&](int i) {
     ShapeCrossing crossing;
     return cross_shape(shapes[size_t(i)], ray, 0, crossing) &&
-           shape_hit_in_range(accel.max_ray_coordinate, ray, crossing.t);
+           shape_hit_in_range(max_ray_coordinate, ray, crossing.t);
   });
 }
 

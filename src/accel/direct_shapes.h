@@ -11,13 +11,11 @@
 #include <vector>
 
 #include "accel/analytic_shapes.h"
+#include "accel/hit_id.h"
 #include "accel/ray.h"
 #include "scene/scene_desc.h"
 
 namespace radiant {
-
-struct HitId;
-struct SceneAccel;
 
 // The most shapes traced directly; beyond it Embree's BVH is cheaper.
 constexpr size_t max_shapes_traced_directly = 16;
@@ -43,9 +41,11 @@ DirectShapes direct_shapes_of(const SceneDesc& scene);
 // planes and tubes can be hit beyond it, so this cuts them off at a distance no view resolves.
 bool shape_hit_in_range(float max_ray_coordinate, const Ray& ray, double t);
 
-// The nearest shape hit with t in (0, ray.tmax), as intersect_nearest reports it.
-HitId nearest_shape_directly(const SceneAccel& accel, const Ray& ray);
-// Whether any shape is hit with t in (0, ray.tmax).
-bool shapes_block_directly(const SceneAccel& accel, const Ray& ray);
+// The nearest of `shapes` hit with t in (0, ray.tmax), as intersect_nearest reports it.
+HitId nearest_shape_directly(const DirectShapes& direct, const std::vector<ShapeDesc>& shapes, float max_ray_coordinate,
+                             const Ray& ray);
+// Whether any of `shapes` is hit with t in (0, ray.tmax).
+bool shapes_block_directly(const DirectShapes& direct, const std::vector<ShapeDesc>& shapes, float max_ray_coordinate,
+                           const Ray& ray);
 
 }  // namespace radiant

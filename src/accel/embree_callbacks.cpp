@@ -2,7 +2,10 @@
 
 #include <limits>
 
+#include "accel/accel_structure.h"
 #include "accel/analytic_shapes.h"
+#include "materials/surface.h"
+#include "scene/shape_bounds.h"
 
 namespace radiant {
 

@@ -4,8 +4,6 @@
 
 #include <embree3/rtcore.h>
 
-#include "accel/scene_accel.h"
-
 namespace radiant {
 
 // The analytic shapes as one user geometry; its user data is the SceneAccel.

@@ -83,7 +83,8 @@ HitId intersect_nearest(const SceneAccel& accel, const Ray& ray, FaceCulling cul
     count_untraceable(accel);
     return {};
   }
-  if (accel.direct_shapes.enabled) return nearest_shape_directly(accel, ray);
+  if (accel.direct_shapes.enabled)
+    return nearest_shape_directly(accel.direct_shapes, accel.scene->shapes, accel.max_ray_coordinate, ray);
   RTCIntersectContext context = query_context(accel, RayCoherence::incoherent, culling);
   rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
@@ -174,7 +175,8 @@ bool is_occluded(const SceneAccel& accel, const Ray& ray) {
     count_untraceable(accel);
     return true;
   }
-  if (accel.direct_shapes.enabled) return shapes_block_directly(accel, ray);
+  if (accel.direct_shapes.enabled)
+    return shapes_block_directly(accel.direct_shapes, accel.scene->shapes, accel.max_ray_coordinate, ray);
   RTCIntersectContext context = query_context(accel, RayCoherence::incoherent, FaceCulling::none);
   rtcOccluded1(accel.top, &context, &r);
   return r.tfar < 0;

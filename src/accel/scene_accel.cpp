@@ -15,11 +15,11 @@
 #include "accel/embree_callbacks.h"
 #include "accel/embree_isa.h"
 #include "scene/coordinate_range.h"
+#include "scene/shape_bounds.h"
 
 namespace radiant {
 
 namespace {
-
 
 struct DeviceError {
   std::string message;
@@ -44,7 +44,6 @@ void throw_on_device_error() {
     throw std::runtime_error(m);
   }
 }
-
 
 // What hit decoding needs of instance i's transform: its inverse, orientation and identity.
 void record_instance_transform(SceneAccel& accel, int i) {
@@ -277,13 +276,6 @@ void attach_strokes(SceneAccel& accel, const StrokeSizing& sizing) {
 }
 
 }  // namespace
-
-SceneAccel::~SceneAccel() {
-  for (RTCScene s : mesh_scenes)
-    if (s) rtcReleaseScene(s);
-  if (top) rtcReleaseScene(top);
-  if (device) rtcReleaseDevice(device);
-}
 
 std::unique_ptr<SceneAccel> build_scene_accel(const SceneDesc& scene, AccelLayout layout, const StrokeSizing& strokes) {
   auto accel = std::make_unique<SceneAccel>();

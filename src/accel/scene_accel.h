@@ -1,7 +1,5 @@
-// The Embree acceleration structure of a SceneDesc: a mesh placed once, whose world-space
-// vertices are exact floats, sits on the top level (a flat BVH, Embree's fastest); any other
-// mesh is one RTCScene shared by its instances; the analytic shapes are one user geometry. A
-// scene of a few shapes and no meshes is traced without Embree (accel/direct_shapes.h).
+// Building, updating and querying the accelerator (accel/accel_structure.h): nearest hits,
+// occlusion, hit decoding and the rays spawned from a hit.
 #pragma once
 
 #include <embree3/rtcore.h>
@@ -11,7 +9,9 @@
 #include <memory>
 #include <vector>
 
+#include "accel/accel_structure.h"
 #include "accel/direct_shapes.h"
+#include "accel/hit_id.h"
 #include "accel/ray.h"
 #include "accel/stroke_geometry.h"
 #include "materials/surface.h"
@@ -19,56 +19,6 @@
 #include "scene/scene_desc.h"
 
 namespace radiant {
-
-// Where a ray hit: a triangle of an instance, an analytic shape, or a line or point.
-struct HitId {
-  int instance = -1;   // >= 0 for triangles
-  int shape = -1;      // >= 0 for analytic shapes
-  int stroke = -1;     // >= 0 for lines and points (primitive: the segment or point)
-  uint32_t primitive = 0;
-  float t = 0;
-  vec2 barycentric;    // Embree's (u, v) for triangles, the shape's uv for shapes
-  vec3 geometric_normal_raw;  // Embree's Ng (unnormalised, world space for shapes)
-  bool valid() const { return instance >= 0 || shape >= 0 || stroke >= 0; }
-};
-
-struct SceneAccel {
-  const SceneDesc* scene = nullptr;
-  RTCDevice device = nullptr;
-  RTCScene top = nullptr;
-  std::vector<RTCScene> mesh_scenes;  // per mesh; null for meshes on the top level
-  std::vector<int> instanced;         // the instances traced through an object space of their own
-  std::vector<mat4> instance_inverse;  // world to object, per instance
-  std::vector<float> instance_orientation;  // sign of the transform's determinant
-  std::vector<char> instance_identity;      // the transform is the identity (hits skip it)
-  unsigned shape_geometry = RTC_INVALID_GEOMETRY_ID;
-  // Strokes take the geometry IDs from here on, one each (after the instances and the shapes').
-  unsigned first_stroke_geometry = RTC_INVALID_GEOMETRY_ID;
-  std::vector<float> stroke_max_radius;  // per stroke, for its hits' error bounds
-  // What the hit filters (accel/embree_callbacks.h) know of a mesh: its geometries' user data.
-  struct MeshFilter {
-    const SceneAccel* accel;
-    int mesh;
-    bool single_sided;  // its material is single-sided: camera rays pass its back faces
-  };
-  std::vector<MeshFilter> mesh_filters;  // one per mesh
-  // Some mesh is single-sided: its scenes take Embree's context filter, which camera rays set.
-  bool has_single_sided = false;
-  // Every traced ray keeps its origin within this (and its direction within twice this), so that
-  // in every instance's object space it stays inside Embree's range (scene/coordinate_range.h).
-  // Hits on infinite shapes beyond it are not taken.
-  float max_ray_coordinate = 0;
-  // Rays refused by that bound (a valid scene casts none): taken as misses, or as blocked
-  // shadow rays, and reported in the render's statistics.
-  mutable std::atomic<uint64_t> untraceable_rays{0};
-  // A few analytic shapes and no meshes: traced without Embree.
-  DirectShapes direct_shapes;
-
-  SceneAccel() = default;
-  SceneAccel(const SceneAccel&) = delete;
-  SceneAccel& operator=(const SceneAccel&) = delete;
-  ~SceneAccel();
-};
 
 // How the top level is built. `single_level`: one BVH over every triangle placed there, the
 // fastest to trace. `two_level`: Embree's low-quality scene build, a BVH of per-geometry BVHs,

@@ -10,7 +10,7 @@
 #include <cstring>
 #include <map>
 
-#include "image/image_io.h"
+#include "output/file_extension.h"
 
 namespace radiant {
 

@@ -155,11 +155,4 @@ void write_image_file(TemporaryFile& file, const ImageWriteSpec& spec, const voi
   if (!error.empty()) file.fail(error);
 }
 
-std::string lowercase_extension(const std::string& path) {
-  std::string extension = fs::path(path).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return char(std::tolower(c)); });
-  return extension;
-}
-
 }  // namespace radiant

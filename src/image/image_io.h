@@ -8,6 +8,7 @@
 
 #include "image/image_io_module.h"
 #include "memory/memory_budget.h"
+#include "output/file_extension.h"
 #include "output/temporary_file.h"
 
 namespace radiant {
@@ -36,7 +37,5 @@ ImageHeader read_image_header(const std::string& path, MemoryBudget* budget);
 // std::runtime_error naming the target.
 void write_image_file(TemporaryFile& file, const ImageWriteSpec& spec, const void* pixels);
 
-// The path's extension in lower case, with its dot (".png"), or "".
-std::string lowercase_extension(const std::string& path);
 
 }  // namespace radiant

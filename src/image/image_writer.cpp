@@ -90,10 +90,6 @@ bool stores_alpha(const std::string& path) {
   return ext == ".png" || ext == ".tif" || ext == ".tiff" || ext == ".exr";
 }
 
-float linear_to_srgb(float v) {
-  return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
-}
-
 void check_image_output(const std::string& path) {
   OutputImage color_only;  // what decides the writer: the format and the first three channels
   color_only.channels = {"R", "G", "B"};

@@ -53,7 +53,4 @@ void write_image(TemporaryFile& file, const OutputImage& image);
 // reason in `error`, on failure.
 std::vector<unsigned char> encode_preview_png(const OutputImage& image, std::string& error);
 
-// Linear to sRGB transfer function (IEC 61966-2-1), for values in [0, 1].
-float linear_to_srgb(float linear);
-
 }  // namespace radiant

@@ -9,7 +9,7 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "image/image_io.h"
+#include "output/file_extension.h"
 #include "image/parallel_deflate.h"
 
 namespace radiant {

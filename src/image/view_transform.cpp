@@ -5,9 +5,11 @@
 #include <iterator>
 #include <stdexcept>
 
-#include "image/image_writer.h"
-
 namespace radiant {
+
+float linear_to_srgb(float v) {
+  return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
+}
 
 namespace {
 

@@ -28,6 +28,9 @@ struct DisplaySettings {
   bool operator==(const DisplaySettings&) const = default;
 };
 
+// Linear to sRGB transfer function (IEC 61966-2-1), for values in [0, 1].
+float linear_to_srgb(float linear);
+
 // The display values in [0, 1] of a linear color.
 color3 display_encode(color3 linear, const DisplaySettings& display);
 

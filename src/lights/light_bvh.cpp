@@ -183,7 +183,7 @@ void collapse_to_wide_nodes(const std::vector<BinaryNode>& binary, LightBvh& bvh
 // of [0, total) is [start[k], start[k + 1]) (the last lane's ends at total); its probability
 // rated[k] / total. One function for sampling and for the probability walk, so both agree.
 // Inline: called, it kept p and n in memory across the call and returned the shares through the
-// stack, on every step of the descent (2.7% of a many-lights render, thirtieth session).
+// stack, on every step of the descent (2.7% of a many-lights render).
 struct LaneShares {
   float rated[light_node_width];
   float start[light_node_width];  // 0, rated[0], rated[0] + rated[1], ... (summed as sum_shares says)

@@ -20,7 +20,7 @@
 #include "integrators/path.h"
 #include "integrators/surface_lanes.h"
 #include "integrators/whitted.h"
-#include "materials/volume_absorption.h"
+#include "scene/volume_absorption.h"
 #include "render/camera.h"
 #include "render/pass_schedule.h"
 #include "render/progress_meter.h"
@@ -349,6 +349,15 @@ CameraDesc world_view_camera(const WorldPlacement& world, const SceneSettings& s
   return camera;
 }
 
+// How the view of `options` sizes the prepared scene's lines and points.
+static StrokeSizing view_stroke_sizing(const PreparedScene& prepared, const RenderOptions& options) {
+  if (prepared.scene->strokes.empty() || !options.line_width.in_pixels) return {options.line_width, {}};
+  bool framed = false;
+  CameraDesc camera = world_view_camera(prepared, options, framed);
+  int height = resolved_image_height(options, *prepared.scene, camera);
+  return stroke_sizing_for(*prepared.scene, options.line_width, camera, height, prepared.origin);
+}
+
 PreparedScene prepare_scene(SceneDesc scene, const RenderOptions& options, AccelLayout layout) {
   PreparedScene prepared;
   prepared.budget = options.memory;
@@ -358,7 +367,7 @@ PreparedScene prepare_scene(SceneDesc scene, const RenderOptions& options, Accel
   bool framed = false;
   prepared.origin = choose_render_origin(prepared.world, world_view_camera(prepared, options, framed).position);
   place_at_render_origin(*prepared.scene, prepared.world, prepared.origin);
-  prepared.stroke_sizing = stroke_sizing_for(prepared, options);
+  prepared.stroke_sizing = view_stroke_sizing(prepared, options);
   build_accel(prepared);
   prepared.effects = analyze_effects(*prepared.scene);
   if (options.texture_filter == TextureFilterMode::trilinear)
@@ -375,7 +384,7 @@ double prepare_view(PreparedScene& prepared, const RenderOptions& options) {
     place_at_render_origin(*prepared.scene, prepared.world, origin);
   }
   // Lines and points a number of pixels wide follow the view.
-  StrokeSizing sizing = stroke_sizing_for(prepared, options);
+  StrokeSizing sizing = view_stroke_sizing(prepared, options);
   if (!moved && same_sizing(sizing, prepared.stroke_sizing)) return 0;
   prepared.stroke_sizing = sizing;
   build_accel(prepared);

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "render/render_space.h"
+
 namespace radiant {
 
 // At unit distance for the projections that widen with distance, everywhere for the orthographic one.
@@ -19,14 +21,12 @@ PixelFootprint pixel_footprint(const CameraDesc& camera, vec3 position, int heig
   return f;
 }
 
-StrokeSizing stroke_sizing_for(const PreparedScene& prepared, const RenderOptions& options) {
+StrokeSizing stroke_sizing_for(const SceneDesc& scene, LineWidth width, const CameraDesc& camera, int height,
+                               dvec3 origin) {
   StrokeSizing sizing;
-  sizing.line_width = options.line_width;
-  if (prepared.scene->strokes.empty() || !options.line_width.in_pixels) return sizing;
-  bool framed = false;
-  CameraDesc camera = world_view_camera(prepared, options, framed);
-  int height = resolved_image_height(options, *prepared.scene, camera);
-  sizing.footprint = pixel_footprint(camera, to_render_space(camera.position, prepared.origin), height);
+  sizing.line_width = width;
+  if (scene.strokes.empty() || !width.in_pixels) return sizing;
+  sizing.footprint = pixel_footprint(camera, to_render_space(camera.position, origin), height);
   return sizing;
 }
 

@@ -2,14 +2,19 @@
 // world size of a pixel at each vertex's distance from the view's camera.
 #pragma once
 
-#include "render/render.h"
+#include "accel/stroke_geometry.h"
+#include "math/dvec3.h"
+#include "math/vec.h"
+#include "scene/scene_desc.h"
 
 namespace radiant {
 
 // One pixel's world size for `camera` (at render-space `position`) in an image `height` tall.
 PixelFootprint pixel_footprint(const CameraDesc& camera, vec3 position, int height);
-// How the view of `options` sizes the prepared scene's lines and points (in its render space).
-StrokeSizing stroke_sizing_for(const PreparedScene& prepared, const RenderOptions& options);
+// How a view sizes `scene`'s lines and points: `camera` (world space) seeing an image `height`
+// tall, the scene placed in the render space of `origin`.
+StrokeSizing stroke_sizing_for(const SceneDesc& scene, LineWidth width, const CameraDesc& camera, int height,
+                               dvec3 origin);
 bool same_sizing(const StrokeSizing& a, const StrokeSizing& b);
 
 }  // namespace radiant

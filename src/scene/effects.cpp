@@ -3,7 +3,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "materials/volume_absorption.h"
+#include "scene/volume_absorption.h"
 
 namespace radiant {
 

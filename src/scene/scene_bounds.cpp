@@ -2,7 +2,7 @@
 
 #include <limits>
 
-#include "accel/analytic_shapes.h"
+#include "scene/shape_bounds.h"
 
 namespace radiant {
 

@@ -4,7 +4,6 @@
 #include <limits>
 
 #include "scene/scene_bounds.h"
-#include "accel/scene_accel.h"
 
 namespace radiant {
 
@@ -33,18 +32,6 @@ void count_geometry(const SceneDesc& scene, SceneSummary& s) {
     s.geometry_bytes += stroke.positions.size() * sizeof(vec3) + stroke.colors.size() * sizeof(vec4) +
                         stroke.segments.size() * sizeof(uint32_t);
   }
-}
-
-// A light is enclosed when rays in all six axis directions hit the back of some surface.
-bool light_is_enclosed(const SceneAccel& accel, vec3 position) {
-  const vec3 directions[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-  for (vec3 d : directions) {
-    Ray ray{position, normalize(d + vec3{0.0123f, 0.0071f, 0.0037f})};
-    HitId id = intersect_nearest(accel, ray);
-    if (!id.valid()) return false;
-    if (make_surface_hit(accel, ray, id).front_face) return false;
-  }
-  return true;
 }
 
 }  // namespace
@@ -81,18 +68,6 @@ SceneSummary summarize_scene(const SceneDesc& scene) {
     s.warnings.push_back(std::string(s.emissive_materials ? "no lights or environment, and no emissive material bright enough to light it"
                                                           : "no lights, emissive materials or environment") +
                          ": rendered under the built-in studio environment unless --env is given");
-  bool point_lights = std::any_of(scene.lights.begin(), scene.lights.end(), [](const LightDesc& l) {
-    return l.kind == LightKind::point || l.kind == LightKind::spot;
-  });
-  if (point_lights && (!scene.instances.empty() || !scene.shapes.empty() || !scene.strokes.empty())) {  // an accelerator only to test them
-    auto accel = build_scene_accel(scene);
-    for (size_t i = 0; i < scene.lights.size(); ++i) {
-      const LightDesc& l = scene.lights[i];
-      if ((l.kind == LightKind::point || l.kind == LightKind::spot) && light_is_enclosed(*accel, l.position))
-        s.warnings.push_back("light " + (l.name.empty() ? "#" + std::to_string(i) : "'" + l.name + "'") +
-                             " is inside closed geometry: it lights only the inside");
-    }
-  }
   return s;
 }
 

@@ -30,8 +30,8 @@ inline bool is_lamp(const MaterialDesc& m) { return max_component(m.emission) > 
 // than lamp_radiance. Files that do not get the built-in studio environment by default.
 bool lights_itself(const SceneDesc& scene);
 
-// Counts and bounds, plus warnings: no light at all, lights enclosed by geometry (checked by
-// casting rays from each point or spot light), and the loader's own warnings.
+// Counts and bounds, plus warnings: no light at all, and the loader's own warnings (lights
+// enclosed by geometry need an accelerator: accel/light_enclosure.h).
 SceneSummary summarize_scene(const SceneDesc& scene);
 
 }  // namespace radiant

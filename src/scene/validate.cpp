@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "load_scene.h"
+#include "scene/load_error.h"
 #include "scene/coordinate_range.h"
 
 namespace radiant {

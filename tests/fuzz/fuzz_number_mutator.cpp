@@ -2,7 +2,7 @@
 // mutation in four swaps a number of the input for a hostile magnitude (past Embree's ray limit
 // of about 1.8e18, at the edges of float and int, zero, denormals). Byte-level mutation rarely
 // turns "1000" into "2e18", yet whole-render number mutation is what found the Embree abort
-// class (issue 15); the other three mutations are libFuzzer's own.
+// class; the other three mutations are libFuzzer's own.
 #include <cctype>
 #include <cstddef>
 #include <cstdint>

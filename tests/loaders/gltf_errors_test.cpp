@@ -143,7 +143,7 @@ TEST_CASE("gltf errors: reading one accessor from many primitives is charged eve
 }
 
 TEST_CASE("gltf errors: non-finite texture coordinates, tangents and vertex colors name the attribute") {
-  // A NaN COLOR_0 used to reach the albedo AOV while the color stayed clean.
+  // A NaN COLOR_0 must not reach the albedo AOV even where the color stays clean.
   float nan = std::nanf(""), inf = std::numeric_limits<float>::infinity();
   struct Case {
     const char* attribute;

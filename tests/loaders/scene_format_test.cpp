@@ -191,7 +191,7 @@ static SceneDesc load_asset(const std::string& name) {
   return load_scene_format(in, path.string(), path.parent_path().string(), {});
 }
 
-TEST_CASE("asset first-render.scene: the scene of the issue, converted") {
+TEST_CASE("asset first-render.scene: the classic first render, converted") {
   SceneDesc scene = load_asset("first-render.scene");
   REQUIRE(scene.cameras.size() == 1);
   const CameraDesc& camera = scene.cameras[0];
