@@ -242,7 +242,7 @@ class Session {
     if (!scene_) throw std::invalid_argument("no scene yet: 'render FILE' loads one");
     SessionRequest request{line, scene_, scene_path_, current_job()};
     check_outputs(request.job);
-    console_.render_started(request.job.output);
+    if (!request.job.options.quiet) console_.render_started(request.job.output);
     renderer_.start(std::move(request));
   }
 
