@@ -53,7 +53,7 @@ TEST_CASE("coloured metal: a rough yellow metal in a white furnace reflects what
   o.env_color = color3{1, 1, 1};
   color3 face = film_mean(render_scene(scene, o).film);
   INFO("face ", face.x, " ", face.y, " ", face.z);
-  // Cycles, Multiscatter GGX, 1024 spp: (0.981, 0.850, 0.154) a few degrees off normal.
+  // Cycles, Multiscatter GGX, 256 spp: (0.981, 0.850, 0.154), the face seen 14 degrees off its normal.
   CHECK(face.x == doctest::Approx(0.981).epsilon(0.03));
   CHECK(face.y == doctest::Approx(0.850).epsilon(0.03));
   CHECK(face.z == doctest::Approx(0.154).epsilon(0.12));
