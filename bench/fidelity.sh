@@ -87,11 +87,12 @@ for name in "${names[@]}"; do
     continue
   fi
   read -r from at _ <<<"$camera"
-  # --time 0: Blender's importer shows the first animation at its start (BrainStem, Fox and
-  # CesiumMan are posed by it); a file without animations keeps its static state.
+  # --frame 1 --fps 24: Blender's importer puts the first animation's time 0 at frame 0 of its
+  # 24 fps scene, which shows frame 1 (BrainStem, Fox and CesiumMan are posed by it); a file
+  # without animations keeps its static state.
   if ! build/radiant render "$file" -o "$radiant_exr" --width "$size" --height "$size" --spp "$spp" --mode path \
     --max-depth "$max_depth" --look-from "$from" --look-at "$at" --up 0,1,0 --fov 40 --env "$env_map" \
-    --background env --time 0 --seed 2 --quiet 2>"$out/$name-radiant.err"; then
+    --background env --frame 1 --fps 24 --seed 2 --quiet 2>"$out/$name-radiant.err"; then
     printf '| %s | %s | radiant refused it: %s |\n' "$name" "$set_name" "$(head -n 1 "$out/$name-radiant.err")" >>"$table"
     continue
   fi
