@@ -1,6 +1,6 @@
 """Renders a glTF file with Blender Cycles for bench/fidelity.sh:
 
-    blender -b --factory-startup -P bench/fidelity.py -- SCENE OUT.exr SIZE SPP MAX_DEPTH SEED ENV.exr
+    blender -b --factory-startup -P bench/fidelity.py -- SCENE OUT.exr SIZE SPP MAX_DEPTH SEED ENV.exr [multiscatter]
 
 Imports the file with Blender's glTF importer, keeps the imported Principled BSDF materials, frames
 the meshes with radiant's framing camera (bench/blender_framing.py), lights them by the
@@ -8,6 +8,10 @@ equirectangular map ENV.exr (seen by the camera, as radiant's --background env) 
 own lights, and writes the linear image. Cycles does only radiant's work (no adaptive sampling,
 denoising or clamping, a one-pixel box filter; bench/cycles_like_radiant.py). Prints
 "camera: FROM AT UP" in glTF axes for radiant's --look-from/--look-at/--up and --fov 40.
+
+With "multiscatter", every imported Principled BSDF uses Multiscatter GGX, the energy-conserving
+microfacet model radiant's lobes follow; Blender 3.4's importer leaves them at single-scattering
+GGX, which returns a third of the light of a rough metal head on.
 """
 import os
 import sys
@@ -22,8 +26,14 @@ args = sys.argv[sys.argv.index("--") + 1:]
 scene_path, out_path = args[0], args[1]
 size, spp, max_depth, seed = (int(a) for a in args[2:6])
 env_path = args[6]
+multiscatter = len(args) > 7 and args[7] == "multiscatter"
 
 scene = import_and_frame(scene_path)
+if multiscatter:
+    for material in bpy.data.materials:
+        for node in material.node_tree.nodes if material.node_tree else ():
+            if node.type == "BSDF_PRINCIPLED":
+                node.distribution = "MULTI_GGX"
 
 configure_cycles(scene, size, spp, max_depth, seed)
 world = bpy.data.worlds.new("environment")

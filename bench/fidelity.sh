@@ -8,16 +8,19 @@
 # Not a timing: it may run on a busy machine.
 #
 # Usage: bench/fidelity.sh [--models DIR] [--size 256] [--spp 256] [--ref-spp 1024]
-#                          [--max-depth 8] [--out DIR] [NAME...]
+#                          [--max-depth 8] [--out DIR] [--multiscatter] [--radiant-only] [NAME...]
 #   DIR is the Models folder of a clone of KhronosGroup/glTF-Sample-Assets (default
 #   $GLTF_SAMPLE_ASSETS/Models); NAME a model folder in it (default: the main and held-out sets
 #   below). The environment is made here with oiiotool: a sky brighter overhead, a warm ground, a
 #   small bright key light. Output (default bench-fidelity): the images, table.md, contact-sheet.png.
+#   --multiscatter: Cycles' Principled BSDFs use Multiscatter GGX (energy-conserving, as radiant's
+#   lobes), not the single-scattering GGX Blender 3.4's importer leaves. --radiant-only: keep the
+#   Cycles renders already in DIR (and the camera recorded beside them) and render radiant again.
 # Needs: blender (installed here on first use, not in CI), openimageio-tools.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 models=${GLTF_SAMPLE_ASSETS:-$HOME/glTF-Sample-Assets}/Models
-size=256 spp=256 ref_spp=1024 max_depth=8 out=bench-fidelity names=()
+size=256 spp=256 ref_spp=1024 max_depth=8 out=bench-fidelity names=() multiscatter= radiant_only=0
 while (($#)); do
   case $1 in
     --models) models=$2; shift 2 ;;
@@ -26,6 +29,8 @@ while (($#)); do
     --ref-spp) ref_spp=$2; shift 2 ;;
     --max-depth) max_depth=$2; shift 2 ;;
     --out) out=$2; shift 2 ;;
+    --multiscatter) multiscatter=multiscatter; shift ;;
+    --radiant-only) radiant_only=1; shift ;;
     -*) echo "unknown option $1" >&2; exit 2 ;;
     *) names+=("$1"); shift ;;
   esac
@@ -41,7 +46,7 @@ for name in "${held_out[@]}"; do is_held_out[$name]=1; done
 ((${#names[@]})) || names=("${main_set[@]}" "${held_out[@]}")
 [ -d "$models" ] || { echo "fidelity: $models is missing: pass --models DIR (the Models folder of glTF-Sample-Assets)" >&2; exit 2; }
 source bench/quiet_machine.sh
-command -v blender >/dev/null || install_debian_packages blender
+((radiant_only)) || command -v blender >/dev/null || install_debian_packages blender
 cmake --build build --target radiant -j2 >/dev/null || exit 1
 mkdir -p "$out"
 
@@ -69,16 +74,25 @@ for name in "${names[@]}"; do
     continue
   fi
   cycles_exr="$out/$name-cycles.exr" radiant_exr="$out/$name-radiant.exr"
-  camera=$(blender -b --factory-startup -P bench/fidelity.py -- "$file" "$cycles_exr" "$size" "$ref_spp" \
-    "$max_depth" 1 "$(realpath "$env_map")" 2>&1 | awk '/^camera: / {print $2, $3, $4; exit}')
+  camera_file="$out/$name-camera.txt"
+  if ((radiant_only)); then
+    camera=$(cat "$camera_file" 2>/dev/null)
+  else
+    camera=$(blender -b --factory-startup -P bench/fidelity.py -- "$file" "$cycles_exr" "$size" "$ref_spp" \
+      "$max_depth" 1 "$(realpath "$env_map")" $multiscatter 2>&1 | awk '/^camera: / {print $2, $3, $4; exit}')
+    [ -n "$camera" ] && echo "$camera" >"$camera_file"
+  fi
   if [ -z "$camera" ] || [ ! -f "$cycles_exr" ]; then
     printf '| %s | %s | Blender did not import or render it |\n' "$name" "$set_name" >>"$table"
     continue
   fi
   read -r from at _ <<<"$camera"
+  # --frame 1 --fps 24: Blender's importer puts the first animation's time 0 at frame 0 of its
+  # 24 fps scene, which shows frame 1 (BrainStem, Fox and CesiumMan are posed by it); a file
+  # without animations keeps its static state.
   if ! build/radiant render "$file" -o "$radiant_exr" --width "$size" --height "$size" --spp "$spp" --mode path \
     --max-depth "$max_depth" --look-from "$from" --look-at "$at" --up 0,1,0 --fov 40 --env "$env_map" \
-    --background env --seed 2 --quiet 2>"$out/$name-radiant.err"; then
+    --background env --frame 1 --fps 24 --seed 2 --quiet 2>"$out/$name-radiant.err"; then
     printf '| %s | %s | radiant refused it: %s |\n' "$name" "$set_name" "$(head -n 1 "$out/$name-radiant.err")" >>"$table"
     continue
   fi

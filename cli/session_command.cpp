@@ -9,7 +9,8 @@
 //   wait                 until the render is done  info, help, quit
 //
 // Every command that changes the image cancels the render under way at its next tile and starts
-// the new one. The image is rewritten after each progressive pass; each finished render prints
+// the new one. The image is rewritten after each progressive pass (on a terminal, a status line
+// above the prompt shows the pass and spp reached: session_console.h); each finished render prints
 // one line on stdout. A bad command is reported with its line number and the session goes on;
 // `quit` (or the end of the input, after the last render finishes) exits with the code of the
 // last failure.
@@ -20,7 +21,6 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
-#include <mutex>
 #include <new>
 
 #include "command_line.h"
@@ -29,6 +29,7 @@
 #include "option_parsing.h"
 #include "output/output_set.h"
 #include "render_line.h"
+#include "session_console.h"
 #include "session_input.h"
 #include "session_renderer.h"
 #include "session_settings.h"
@@ -40,8 +41,6 @@ namespace radiant::cli {
 namespace {
 
 namespace fs = std::filesystem;
-
-const char* prompt = "radiant> ";
 
 const char* session_help =
     "Commands (units are the scene's, angles degrees, axes the world's):\n"
@@ -76,18 +75,27 @@ vec3 parse_numbers(const std::vector<std::string>& words) {
 }
 
 class Session {
+  SessionConsole console_;  // first: the render thread's reports use it until the thread stops
+
  public:
   void show_renders_in(Watchers watchers) { watchers_ = std::move(watchers); }
   Session(std::string output, SessionSettings settings, uint64_t memory_limit, std::string memory_source,
-          bool allow_external)
-      : output_(std::move(output)),
+          bool allow_external, ProgressStyle progress)
+      : console_(progress),
+        output_(std::move(output)),
         settings_(std::move(settings)),
         budget_(memory_limit, std::move(memory_source)),
         allow_external_(allow_external),
-        renderer_([this](int line, const std::string& error, const FinishedRender* finished) {
-          if (!error.empty()) fail(line, exit_failure, error);
-          else print_line(finished->summary);
-        }) {}
+        renderer_(
+            [this](int line, const std::string& error, const FinishedRender* finished) {
+              console_.render_ended();
+              if (!error.empty()) fail(line, exit_failure, error);
+              else print_line(finished->summary);
+            },
+            [this](const PassProgress* pass) {
+              if (!pass) console_.render_ended();
+              else console_.show_pass(pass->output, pass->pass, pass->samples, pass->total, pass->seconds);
+            }) {}
 
   // Runs one command; false for `quit`. Throws std::invalid_argument for a bad command.
   bool run(int line, const std::vector<std::string>& words) {
@@ -144,40 +152,20 @@ class Session {
 
   // A failure of command `line` (0: the command line): reported, and the exit code from now on.
   void fail(int line, int code, const std::string& message) {
-    std::lock_guard lock(print_mutex_);
-    above_prompt([&] { std::cerr << "radiant session: " << (line ? "line " + std::to_string(line) + ": " : "") << message << "\n"; });
+    console_.print_error("radiant session: " + (line ? "line " + std::to_string(line) + ": " : std::string()) + message);
     last_failure_ = code;
   }
 
   // On a terminal: the prompt, until a line is read; lines printed meanwhile go above it.
-  void show_prompt() {
-    std::lock_guard lock(print_mutex_);
-    std::cerr << prompt << std::flush;
-    prompt_shown_ = true;
-  }
-  void prompt_answered() {
-    std::lock_guard lock(print_mutex_);
-    prompt_shown_ = false;
-  }
+  void show_prompt() { console_.show_prompt(); }
+  void prompt_answered() { console_.prompt_answered(); }
 
   // Waits for the render under way (the end of the input).
   void finish() { renderer_.wait_idle(); }
   int exit_code() const { return last_failure_; }
 
  private:
-  void print_line(const std::string& text) {
-    std::lock_guard lock(print_mutex_);
-    above_prompt([&] { std::cout << text << (text.empty() || text.back() != '\n' ? "\n" : "") << std::flush; });
-  }
-
-  // Prints what `print` writes on the line of a prompt shown (erased first), then shows it again
-  // below: a render that finishes while the user types does not land after "radiant> ".
-  template <class Print>
-  void above_prompt(Print print) {
-    if (prompt_shown_) std::cerr << "\r\033[K" << std::flush;
-    print();
-    if (prompt_shown_) std::cerr << prompt << std::flush;
-  }
+  void print_line(const std::string& text) { console_.print_out(text); }
 
   // Replaces the scene only once the new one has loaded: a file that fails keeps the old one.
   void load(const std::string& path) {
@@ -224,7 +212,7 @@ class Session {
     RenderJob job = settings.job(output_, fs::current_path());
     job.options.memory = &budget_;
     job.watchers = watchers_;
-    job.options.progress = ProgressStyle::none;  // stdout reports each render; stderr stays for errors
+    job.options.progress = ProgressStyle::none;  // the session's console shows each pass instead
     // The image records the `render` command that makes it again.
     std::vector<std::string> words = {"render", scene_path_, "-o", output_};
     for (const std::string& word : settings.flag_words()) words.push_back(word);
@@ -254,6 +242,7 @@ class Session {
     if (!scene_) throw std::invalid_argument("no scene yet: 'render FILE' loads one");
     SessionRequest request{line, scene_, scene_path_, current_job()};
     check_outputs(request.job);
+    if (!request.job.options.quiet) console_.render_started(request.job.output);
     renderer_.start(std::move(request));
   }
 
@@ -296,8 +285,6 @@ class Session {
   MemoryCharge scene_memory_;  // what loading the scene charged to the budget
   std::optional<SessionView> view_;  // set once a command moved or turned the camera
   Watchers watchers_;  // --display-server, --serve: every view shown as it converges
-  std::mutex print_mutex_;
-  bool prompt_shown_ = false;  // guarded by print_mutex_
   std::atomic<int> last_failure_{exit_ok};
   SessionRenderer renderer_;  // last: its thread stops before the rest goes
 };
@@ -321,6 +308,11 @@ int session_main(int argc, char** argv) {
   SessionSettings settings;
   std::optional<uint64_t> max_memory_bytes;
   bool allow_external = false;
+  std::string progress = "auto";
+  app.add_option("--progress", progress,
+                 "Each pass's spp on stderr: auto (a status line above the prompt on a terminal, else none), "
+                 "bar, lines or none");
+  ProgressStyle progress_style = ProgressStyle::none;
   WatchFlags watch;
   watch.bind(app, true);
   std::unique_ptr<SessionInput> input;  // before the page that pushes to it, which stops first
@@ -332,8 +324,11 @@ int session_main(int argc, char** argv) {
     if (is_standard_output(output)) throw std::invalid_argument("-o -: a session rewrites its image after every pass; name a file");
     if (!flags.max_memory.empty()) max_memory_bytes = parse_memory_limit("--max-memory", flags.max_memory);
     allow_external = flags.allow_external_files;
+    // Off a terminal a session is driven by a program that reads its stdout: no progress unless asked.
+    progress_style = progress == "auto" && !isatty(STDERR_FILENO) ? ProgressStyle::none
+                                                                  : parse_progress("--progress", progress, false);
     settings.set_output(output);
-    settings.set_from_command_line(app, {"output", "max-memory", "allow-external-files", "display-server", "serve"});
+    settings.set_from_command_line(app, {"output", "max-memory", "allow-external-files", "display-server", "serve", "progress"});
     RenderJob job = settings.job(output, fs::current_path());
     check_outputs_spare_inputs(scene_path, job.options.env_map, {}, render_job_outputs(job));
     check_render_job_outputs(job);
@@ -350,7 +345,7 @@ int session_main(int argc, char** argv) {
   }
 
   Session session(output, settings, max_memory_bytes.value_or(default_memory_limit()),
-                  max_memory_bytes ? "--max-memory" : default_memory_limit_source, allow_external);
+                  max_memory_bytes ? "--max-memory" : default_memory_limit_source, allow_external, progress_style);
   session.show_renders_in(watchers);
   std::vector<std::string> first;
   if (!scene_path.empty()) first = {"render", scene_path};

@@ -13,7 +13,8 @@
 
 namespace radiant::cli {
 
-SessionRenderer::SessionRenderer(Reporter report) : report_(std::move(report)), thread_([this] { run(); }) {}
+SessionRenderer::SessionRenderer(Reporter report, ProgressReporter progress)
+    : report_(std::move(report)), progress_(std::move(progress)), thread_([this] { run(); }) {}
 
 SessionRenderer::~SessionRenderer() {
   {
@@ -65,6 +66,7 @@ void SessionRenderer::run() {
         stop_ = 0;  // under the lock: a start() after this point stops this render
       }
       render(request);
+      progress_(nullptr);
     }  // the request's hold on the scene ends before the session may replace the scene
     {
       std::lock_guard lock(mutex_);
@@ -103,12 +105,18 @@ void SessionRenderer::render(const SessionRequest& request) {
       return image;
     };
     auto start = Clock::now();
+    int pass = 0;
     // Each pass short of the last replaces the image, so a viewer that reloads shows it sharpen;
     // the finished render is written below, with its statistics.
     options.on_pass = [&](const Film& film, uint32_t samples) {
       if (stop_) return;
-      job.watchers.show(job.output, film, samples, total, std::chrono::duration<double>(Clock::now() - start).count(),
-                        {job.options.exposure, settings.view}, job.options.quiet);
+      double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+      job.watchers.show(job.output, film, samples, total, seconds, {job.options.exposure, settings.view},
+                        job.options.quiet);
+      if (!job.options.quiet) {
+        PassProgress progress{job.output, ++pass, samples, total, seconds};
+        progress_(&progress);
+      }
       if (samples >= total) return;
       RenderResult so_far;  // rays are counted when the render ends: a pass records none
       so_far.settings = settings;

@@ -30,12 +30,23 @@ struct FinishedRender {
   std::string summary;
 };
 
+// A progressive pass of the render under way: every pixel of `output` holds `samples` of `total`.
+struct PassProgress {
+  std::string output;
+  int pass = 0;
+  uint32_t samples = 0, total = 0;
+  double seconds = 0;
+};
+
 class SessionRenderer {
  public:
   // `report(line, message)` is called from the render thread: an error of the request from
   // command `line` (message empty: none) and, when it finishes, `finished` holds its result.
   using Reporter = std::function<void(int line, const std::string& error, const FinishedRender* finished)>;
-  explicit SessionRenderer(Reporter report);
+  // `progress(pass)` is called from the render thread after each pass of a render that is not
+  // quiet, and with null once the render has ended, however it ended.
+  using ProgressReporter = std::function<void(const PassProgress* pass)>;
+  SessionRenderer(Reporter report, ProgressReporter progress);
   ~SessionRenderer();  // cancels what runs and joins the thread
   SessionRenderer(const SessionRenderer&) = delete;
   SessionRenderer& operator=(const SessionRenderer&) = delete;
@@ -55,6 +66,7 @@ class SessionRenderer {
   void render(const SessionRequest& request);
 
   Reporter report_;
+  ProgressReporter progress_;
   mutable std::mutex mutex_;
   std::condition_variable changed_;
   std::optional<SessionRequest> pending_;

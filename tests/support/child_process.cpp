@@ -56,11 +56,16 @@ RadiantProcess::RadiantProcess(const std::vector<std::string>& args, const Child
   int stdin_pipe[2] = {-1, -1};
   if (setup.piped_stdin && pipe2(stdin_pipe, O_CLOEXEC) != 0) throw std::runtime_error("pipe failed");
   pid_ = fork();
-  if (pid_ == 0) exec_child(argv, setup, stdin_pipe[0], stdout_fd, stderr_fd);
+  bool typed_stdin = setup.terminal_stdin && setup.terminal_stderr;
+  if (pid_ == 0) exec_child(argv, setup, typed_stdin ? stderr_fd : stdin_pipe[0], stdout_fd, stderr_fd);
   close(stdout_fd);
   close(stderr_fd);
   if (setup.piped_stdin) close(stdin_pipe[0]);
   stdin_ = stdin_pipe[1];
+  if (typed_stdin) {
+    stdin_ = fcntl(terminal_, F_DUPFD_CLOEXEC, 0);
+    stdin_is_terminal_ = true;
+  }
   if (pid_ < 0) throw std::runtime_error("fork failed");
 }
 
@@ -74,7 +79,7 @@ RadiantProcess::~RadiantProcess() {
 }
 
 void RadiantProcess::write_stdin(const std::string& text) {
-  if (stdin_ < 0) throw std::logic_error("write_stdin needs piped_stdin");
+  if (stdin_ < 0) throw std::logic_error("write_stdin needs piped_stdin or terminal_stdin");
   signal(SIGPIPE, SIG_IGN);  // a child that has exited fails the write instead of killing the tests
   for (size_t done = 0; done < text.size();) {
     ssize_t wrote = write(stdin_, text.data() + done, text.size() - done);
@@ -84,6 +89,7 @@ void RadiantProcess::write_stdin(const std::string& text) {
 }
 
 void RadiantProcess::close_stdin() {
+  if (stdin_ >= 0 && stdin_is_terminal_ && pid_ > 0) (void)!write(stdin_, "\x04", 1);  // the end of input
   if (stdin_ >= 0) close(stdin_);
   stdin_ = -1;
 }

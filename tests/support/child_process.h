@@ -20,6 +20,9 @@ struct ChildSetup {
   bool unprivileged = false;    // when the tests run as root, the child runs as nobody (uid 65534)
   bool terminal_stderr = false;  // stderr is a pseudo-terminal, as in an interactive shell
   bool piped_stdin = false;      // stdin is a pipe the test writes to (write_stdin), else empty
+  // stdin is the pseudo-terminal too (needs terminal_stderr): write_stdin types on it, and the
+  // terminal echoes what is typed; close_stdin types Ctrl-D.
+  bool terminal_stdin = false;
 };
 
 class RadiantProcess {
@@ -34,7 +37,7 @@ class RadiantProcess {
   // With a terminal stderr: reads it until `text` has appeared; false after `timeout_seconds`.
   bool wait_for_stderr(const std::string& text, double timeout_seconds);
   void send(int signal) const;
-  // With piped_stdin: writes `text` to the child's standard input; closing it is the end of input.
+  // With piped_stdin or terminal_stdin: writes `text` to the child's standard input; closing it is the end of input.
   void write_stdin(const std::string& text);
   void close_stdin();
   // Reads standard output until `text` has appeared `count` times; false after `timeout_seconds`.
@@ -48,7 +51,8 @@ class RadiantProcess {
   ScratchDir io_{"child"};
   pid_t pid_ = -1;
   int terminal_ = -1;  // the pseudo-terminal's master side
-  int stdin_ = -1;     // the write end of the child's stdin pipe
+  int stdin_ = -1;     // the write end of the child's stdin pipe, or the terminal's master side
+  bool stdin_is_terminal_ = false;
   std::string terminal_text_;
 };
 
