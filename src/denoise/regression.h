@@ -25,7 +25,7 @@ struct CandidateImages {
   std::vector<color3> even, odd;
 };
 
-// The candidates of `bandwidths` (NL-means k), fitted on `in`'s halves with `variance` (the
+// The candidates of `bandwidths` (NL-means k, at least 0.5), fitted on `in`'s halves with `variance` (the
 // variance of the whole image's mean, smoothed) for the weights. Tile-parallel on the calling
 // task arena's threads; every pixel's result depends on its neighbours only, never on the
 // tiling or thread count.
