@@ -14,7 +14,7 @@
 
 namespace radiant {
 
-constexpr int denoise_window_radius = 6;  // neighbours within 6 pixels each way: a 13x13 window
+constexpr int denoise_window_radius = 5;  // neighbours within 5 pixels each way: an 11x11 window
 constexpr int denoise_patch_radius = 1;   // NL-means compares 3x3 patches
 constexpr int denoise_tile_size = 16;     // the regression works on 16x16 tiles, one per task
 
