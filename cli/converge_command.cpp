@@ -37,6 +37,7 @@ const char* converge_examples =
     "\nExamples:\n"
     "  radiant converge assets/cornell.gltf --mode path,naive --out report\n"
     "  radiant converge assets/cornell.gltf --spp-ladder 1,4,16,64 --target-error 0.01\n"
+    "  radiant converge assets/cornell.gltf --mode path --denoise --max-spp 64\n"
     "  radiant converge assets/showcase.scene --supersampling --width 96 --height 54\n"
     "  radiant render assets/cornell.gltf -o converged.exr --width 64 --height 64 --spp 4096\n"
     "  radiant converge assets/cornell.gltf --reference converged.exr --mode path\n";
@@ -53,6 +54,7 @@ struct ConvergeFlags {
   double target_error = 0, edge_fraction = default_edge_fraction;
   TimingPolicy timing;
   bool supersampling = false;
+  bool denoise = false;  // a denoised ladder beside each mode's raw one
 };
 
 std::vector<std::string> split_list(const std::string& text) {
@@ -124,6 +126,9 @@ std::vector<RenderMode> resolve_modes(const PreparedScene& prepared, RenderOptio
 
 std::string scene_title(const std::string& scene_path) { return fs::path(scene_path).filename().string(); }
 
+// The name of a mode's denoised series.
+std::string denoised_name(RenderMode mode) { return std::string(mode_name(mode)) + "+denoise"; }
+
 ConvergeSeries make_series(std::string name, std::vector<LadderStep> steps, double target_error) {
   ConvergeSeries series{std::move(name), std::move(steps), {}, {}};
   Prediction prediction = predict_target(series.steps, target_error);
@@ -162,7 +167,16 @@ ConvergeReport ladder_report(const PreparedScene& prepared, const RenderOptions&
     if (noted.insert(key).second) report.references.push_back(note_for(reference, key, flags.reference_file));
     progress(options, std::string("ladder of ") + mode_name(mode));
     std::vector<LadderStep> steps = run_ladder(prepared, mode_options, ladder, reference, flags.timing);
-    report.series.push_back(make_series(mode_name(mode), std::move(steps), flags.target_error));
+    // Without a target, --denoise asks what the raw ladder's best error costs with the denoiser.
+    double target = flags.target_error > 0 || !flags.denoise ? flags.target_error : steps.back().error.rmse;
+    report.target_error = std::max(report.target_error, target);
+    report.series.push_back(make_series(mode_name(mode), std::move(steps), report.target_error));
+    if (!flags.denoise) continue;
+    progress(options, std::string("denoised ladder of ") + mode_name(mode));
+    mode_options.denoise = true;
+    report.series.push_back(make_series(denoised_name(mode),
+                                        run_ladder(prepared, mode_options, ladder, reference, flags.timing),
+                                        report.target_error));
   }
   return report;
 }
@@ -310,6 +324,9 @@ void bind_flags(CLI::App& app, ConvergeFlags& flags) {
   app.add_option("--timing-runs", flags.timing.min_runs,
                  "Time each step as the median of at least N runs (default 1, 3 with --supersampling; short steps run more)")
       ->check(CLI::Range(1, 100));
+  app.add_flag("--denoise", flags.denoise,
+               "Also a denoised ladder per mode (the denoiser's time counted), and the time each needs to reach "
+               "--target-error (default: the raw ladder's last error)");
   app.add_flag("--supersampling", flags.supersampling, "The anti-aliasing table: 1, 81 and 324 spp for each sampler, edge error");
   app.add_option("--samplers", flags.samplers, "Samplers of --supersampling (default grid,random,jittered,sobol)");
 }
@@ -358,7 +375,7 @@ void run_converge(const std::string& scene_path, ConvergeFlags& flags, std::vect
   report.width = size.width;
   report.height = size.height;
   report.edge_fraction = flags.edge_fraction;
-  report.target_error = flags.target_error;
+  if (flags.target_error > 0) report.target_error = flags.target_error;
   report.title = scene_title(scene_path) + (flags.supersampling ? ": anti-aliasing error at edges against render time"
                                                                 : ": RMSE against render time");
   report.chart_metadata = converge_chart_metadata(report, command_line, options.seed);
@@ -384,6 +401,8 @@ int converge_main(int argc, char** argv) {
     parse_samplers(flags.samplers);
     if (flags.supersampling && modes.size() > 1)
       throw CLI::ValidationError("--mode", "--supersampling compares samplers of one mode");
+    if (flags.supersampling && flags.denoise)
+      throw CLI::ValidationError("--denoise", "adds denoised ladders of modes: not with --supersampling");
     ladder = !flags.spp_ladder.empty() ? parse_spp_list("--spp-ladder", flags.spp_ladder)
              : flags.supersampling     ? std::vector<int>{1, 81, 324}
                                        : doubling_ladder(flags.max_spp);

@@ -22,6 +22,7 @@ std::string csv_number(double value) {
 Json step_json(const ConvergeSeries& series, const LadderStep& step) {
   return {{"spp", step.spp},
           {"seconds", json_number(step.seconds)},
+          {"denoise_seconds", json_number(step.denoise_seconds)},
           {"rays", step.rays},
           {"rmse", json_number(step.error.rmse)},
           {"relative_mse", json_number(step.error.relative_mse)},
@@ -143,11 +144,11 @@ std::string converge_table(const ConvergeReport& report) {
   for (const ReferenceNote& r : report.references)
     text += r.file.empty() ? format("reference: %s, %d spp, %.2f s\n", r.mode.c_str(), r.spp, r.seconds)
                            : "reference: " + r.file + "\n";
-  text += format("%-10s %-8s %6s %10s %12s %10s %10s %8s %10s %8s\n", "series", "sampler", "spp", "seconds", "rays", "RMSE",
+  text += format("%-13s %-8s %6s %10s %12s %10s %10s %8s %10s %8s\n", "series", "sampler", "spp", "seconds", "rays", "RMSE",
                  "relMSE", "PSNR", "edge RMSE", "time x");
   for (const ConvergeSeries& s : report.series)
     for (const LadderStep& step : s.steps)
-      text += format("%-10s %-8s %6d %10.4f %12llu %10.5f %10.5f %8.2f %10.5f %8.1f\n", s.name.c_str(),
+      text += format("%-13s %-8s %6d %10.4f %12llu %10.5f %10.5f %8.2f %10.5f %8.1f\n", s.name.c_str(),
                      sampler_name(step.sampler), step.spp, step.seconds, (unsigned long long)step.rays, step.error.rmse,
                      step.error.relative_mse, step.error.psnr, step.error.edge_rmse, time_multiple(s, step));
   for (const ConvergeSeries& s : report.series) {

@@ -1,5 +1,6 @@
 // `radiant merge SHARD... -o OUT`: the shards of one render, checked to belong together and to
 // cover the image x [0, spp) exactly once, added exactly and written like `render` writes.
+#include <algorithm>
 #include <iostream>
 
 #include "command_line.h"
@@ -21,7 +22,9 @@ const char* merge_examples =
     "  for i in 0 1 2 3; do radiant render assets/cornell.gltf -o shard-$i.exr --shard $i/4; done\n"
     "  radiant merge shard-*.exr -o image.exr\n"
     "  radiant merge shard-*.exr -o image.png\n"
-    "  radiant merge shard-0.exr shard-1.exr -o half.exr --keep-accum   # one shard again, for a later merge\n";
+    "  radiant merge shard-0.exr shard-1.exr -o half.exr --keep-accum   # one shard again, for a later merge\n"
+    "  for i in 0 1; do radiant render assets/cornell.gltf -o d-$i.exr --shard $i/2 --aov albedo,normal,depth,halves,variance; done\n"
+    "  radiant merge d-*.exr -o merged.exr && radiant denoise merged.exr -o clean.png   # denoised after the merge\n";
 
 // What the merged image records: the shards' render (their settings, the merged spp, their render
 // times and rays summed, the first one's command line) and how many were merged. Shards rendered
@@ -68,11 +71,12 @@ void merge_shards(const std::vector<std::string>& paths, const std::string& outp
     throw std::runtime_error("the shards are of a --transparent render: -o needs an output with alpha: PNG, TIFF or EXR "
                              "(got '" + output + "')");
   bool with_aovs = !merged.aovs.empty();
+  bool with_halves = std::find(merged.aovs.begin(), merged.aovs.end(), "halves") != merged.aovs.end();
   int width = merged.x1 - merged.x0, height = merged.y1 - merged.y0;
   size_t channels = output_channel_names(merged.aovs, merged.transparent).size();
-  MemoryCharge image_memory(&budget, render_image_bytes(width, height, channels, with_aovs, merged.transparent),
+  MemoryCharge image_memory(&budget, render_image_bytes(width, height, channels, with_aovs, merged.transparent, with_halves),
                             output + ": the merged " + std::to_string(width) + "x" + std::to_string(height) + " film and image");
-  Film film = make_film(width, height, with_aovs, merged.transparent);
+  Film film = make_film(width, height, with_aovs, merged.transparent, with_halves);
   film.x = merged.x0, film.y = merged.y0, film.full_width = merged.full_width, film.full_height = merged.full_height;
   for (const NamedShard& shard : shards) add_shard(film, read_shard_film(shard.path, shard.info, &budget).film);
   ImageMetadata record = metadata ? merged_metadata(shards, merged, command_line, budget) : ImageMetadata{};

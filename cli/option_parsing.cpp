@@ -405,8 +405,6 @@ void RenderFlags::finish() {
     throw CLI::ValidationError("--aov", "noisy is the image before denoising: it needs --denoise");
   if (options.denoise && (!shard.empty() || !sample_range.empty()))
     throw CLI::ValidationError("--denoise", "is a step after merge: not with --shard or --sample-range");
-  if (wants_aov(options.aovs, "halves") && (!shard.empty() || !sample_range.empty()))
-    throw CLI::ValidationError("--aov", "a shard keeps no half images: halves is not for --shard or --sample-range");
   if (!look_from.empty()) options.camera_override.look_from = parse_vec3("--look-from", look_from);
   if (!look_at.empty()) options.camera_override.look_at = parse_vec3("--look-at", look_at);
   if (!up.empty()) {

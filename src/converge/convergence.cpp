@@ -1,8 +1,13 @@
 #include "converge/convergence.h"
 
+#include <tbb/task_arena.h>
+
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
+
+#include "denoise/denoise.h"
 
 namespace radiant {
 
@@ -18,6 +23,7 @@ bool is_float_image(const CompareImage& image) { return image.color_space != "sR
 
 Reference render_reference(const PreparedScene& prepared, RenderOptions options, int spp, double edge_fraction) {
   options.spp = spp;
+  options.denoise = false;  // the reference is the converged render itself
   options.seed += reference_seed_offset;
   options.noise_threshold = 0;
   options.time_limit_seconds = 0;
@@ -80,7 +86,19 @@ LadderStep run_step(const PreparedScene& prepared, RenderOptions options, int sp
   step.spp = spp;
   step.seconds = median;
   step.rays = result.stats.rays.total();
-  step.error = measure_error(film_to_compare_image(result.film, reference.srgb), reference.image, reference.edges);
+  if (!options.denoise) {
+    step.error = measure_error(film_to_compare_image(result.film, reference.srgb), reference.image, reference.edges);
+    return step;
+  }
+  std::vector<color3> denoised;
+  tbb::task_arena arena(worker_threads(options.threads));
+  auto start = std::chrono::steady_clock::now();
+  arena.execute([&] { denoised = denoise_film(result.film, options.memory, "converge"); });
+  step.denoised = true;
+  step.denoise_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  step.seconds += step.denoise_seconds;
+  step.error = measure_error(colors_to_compare_image(denoised, result.film.width, result.film.height, reference.srgb),
+                             reference.image, reference.edges);
   return step;
 }
 

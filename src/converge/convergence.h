@@ -50,7 +50,10 @@ struct LadderStep {
   RenderMode mode = RenderMode::path;
   SamplerKind sampler = SamplerKind::jittered;
   int spp = 1;
-  double seconds = 0;  // render time (Embree build excluded), the median of the timing runs
+  bool denoised = false;      // measured on the denoised image (options.denoise)
+  double seconds = 0;         // render time (Embree build excluded), the median of the timing runs,
+                              // plus the denoiser's time when denoised
+  double denoise_seconds = 0;  // the denoiser's part of it
   uint64_t rays = 0;   // rays cast, all kinds
   ErrorMetrics error;
 };
@@ -65,7 +68,8 @@ struct TimingPolicy {
 // 1, 2, 4, ... up to `max_spp` (and `max_spp` itself when it is not a power of two).
 std::vector<int> doubling_ladder(int max_spp);
 
-// Renders `options` at `spp` and measures it against `reference` (same size).
+// Renders `options` at `spp` and measures it against `reference` (same size); with
+// options.denoise, the denoised image, timed with the denoiser on the render's threads.
 LadderStep run_step(const PreparedScene& prepared, RenderOptions options, int spp, const Reference& reference,
                     const TimingPolicy& timing = {});
 

@@ -27,20 +27,25 @@ float sobel_magnitude(const CompareImage& image, int x, int y) {
 
 }  // namespace
 
-CompareImage film_to_compare_image(const Film& film, bool srgb) {
+CompareImage colors_to_compare_image(const std::vector<color3>& colors, int width, int height, bool srgb) {
   CompareImage image;
   image.path = "render";
-  image.width = film.width;
-  image.height = film.height;
+  image.width = width;
+  image.height = height;
   image.channel_names = {"R", "G", "B"};
   image.color_space = srgb ? "sRGB" : "Linear";
-  image.values.reserve(film.pixels.size() * 3);
-  for (const FilmPixel& p : film.pixels) {
-    color3 mean = pixel_mean(p);
+  image.values.reserve(colors.size() * 3);
+  for (const color3& color : colors)
     for (int c = 0; c < 3; ++c)
-      image.values.push_back(srgb ? linear_to_srgb(std::clamp(mean[c], 0.0f, 1.0f)) : mean[c]);
-  }
+      image.values.push_back(srgb ? linear_to_srgb(std::clamp(color[c], 0.0f, 1.0f)) : color[c]);
   return image;
+}
+
+CompareImage film_to_compare_image(const Film& film, bool srgb) {
+  std::vector<color3> means;
+  means.reserve(film.pixels.size());
+  for (const FilmPixel& p : film.pixels) means.push_back(pixel_mean(p));
+  return colors_to_compare_image(means, film.width, film.height, srgb);
 }
 
 double relative_mse(const CompareImage& image, const CompareImage& reference) {

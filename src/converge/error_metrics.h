@@ -17,8 +17,12 @@ struct ErrorMetrics {
   double edge_rmse = 0;     // RMSE over the edge pixels only (0 without an edge mask)
 };
 
-// The film's mean radiance as a comparable image; `srgb` encodes it (clamped to [0,1]) to
-// compare against an 8-bit reference, which reads back sRGB-encoded.
+// Linear colours, one per pixel of a `width` x `height` image, as a comparable image; `srgb`
+// encodes them (clamped to [0,1]) to compare against an 8-bit reference, which reads back
+// sRGB-encoded.
+CompareImage colors_to_compare_image(const std::vector<color3>& colors, int width, int height, bool srgb);
+
+// The film's mean radiance as colors_to_compare_image makes it.
 CompareImage film_to_compare_image(const Film& film, bool srgb);
 
 // Mean over values of (a−b)² / (b² + 0.01), `b` being the reference (Rousselle et al. 2011,

@@ -22,6 +22,10 @@ constexpr int margin_side = denoise_tile_size + 2 * denoise_patch_radius;
 // A slope costs this fraction of the window's weight times its square: features that barely vary
 // in a window (a flat albedo) get no slope fitted to the colour's noise.
 constexpr double ridge = 1e-4;
+// NL-means distances are cut here: the weight e^-20 is nothing beside the pixel's own 1, and the
+// cut keeps exp_negative's argument within its range for bandwidths down to 0.5.
+constexpr float farthest_patch_distance = 20;
+constexpr float smallest_bandwidth = 0.5f;
 
 constexpr int halo_reach = denoise_window_radius + denoise_patch_radius;
 constexpr int halo_side = denoise_tile_size + 2 * halo_reach;  // the pixels a tile's fits read
@@ -35,17 +39,19 @@ struct Workspace {
   std::vector<float> even, odd;    // candidates x right_terms x tile_pixels
   std::vector<float> halo;         // halo_planes x halo_pixels: the image around the tile, edges clamped
   std::vector<float> patch_terms;  // margin_side^2: the NL-means term of each pixel around the tile
-  std::vector<float> distance, weight, inside;  // tile_pixels each
+  std::vector<float> distance, inside;  // tile_pixels each
   std::vector<float> x;            // unknowns x tile_pixels: 1 and the feature differences
+  std::vector<float> weighted_x;   // unknowns x tile_pixels: x times one candidate's weight
   std::vector<float> y_even, y_odd;  // 3 x tile_pixels: the neighbour's colour in each half
 };
 
 int clamp_index(int v, int size) { return std::clamp(v, 0, size - 1); }
 
-// exp(-x) for x >= 0, to about 2e-5 relative, in plain arithmetic that vectorises (the library's
-// exp was a third of the denoiser's time) and gives the same bits everywhere.
-inline float exp_negative(float x) {
-  float y = std::max(-x * 1.44269504f, -126.0f);  // exp(-x) = 2^y
+// exp(-x) for 0 <= x <= 87, to about 2e-5 relative, in plain arithmetic without branches that
+// vectorises (the library's exp was a third of the denoiser's time) and gives the same bits
+// everywhere.
+[[gnu::always_inline]] inline float exp_negative(float x) {
+  float y = -x * 1.44269504f;  // exp(-x) = 2^y, y >= -125.6
   int whole = int(y);                              // toward zero: y - whole is in (-1, 0]
   float z = (y - float(whole)) * 0.693147181f;     // 2^(y - whole) = e^z, z in (-0.7, 0]
   float e = 1 + z * (1 + z * (0.5f + z * (1.0f / 6 + z * (1.0f / 24 + z * (1.0f / 120 + z * (1.0f / 720))))));
@@ -53,8 +59,9 @@ inline float exp_negative(float x) {
 }
 
 // Solves the candidate's normal equations at one pixel for both halves and keeps the
-// intercepts: the fitted colour at the pixel's own features. A window whose fit is singular (all
-// weight on one pixel) gives its weighted mean.
+// intercepts: the fitted colour at the pixel's own features. Only the intercept is wanted, so one
+// solve, A u = e0, serves every right side: the intercept is u . b. A window whose fit is
+// singular (all weight on one pixel) gives its weighted mean.
 void solve_pixel(const float* normal, const float* even, const float* odd, int stride, color3& even_out,
                  color3& odd_out) {
   double a[unknowns][unknowns];
@@ -78,41 +85,48 @@ void solve_pixel(const float* normal, const float* even, const float* odd, int s
       a[i][j] = s / a[j][j];
     }
   }
+  double u[unknowns] = {};
+  if (!singular) {
+    double z[unknowns];
+    for (int i = 0; i < unknowns; ++i) {
+      double v = i == 0 ? 1.0 : 0.0;
+      for (int k = 0; k < i; ++k) v -= a[i][k] * z[k];
+      z[i] = v / a[i][i];
+    }
+    for (int i = unknowns - 1; i >= 0; --i) {
+      double v = z[i];
+      for (int k = i + 1; k < unknowns; ++k) v -= a[k][i] * u[k];
+      u[i] = v / a[i][i];
+    }
+  } else if (weight > 0) {
+    u[0] = 1 / weight;  // the weighted mean: the intercept alone
+  }
   const float* rights[2] = {even, odd};
   color3* outs[2] = {&even_out, &odd_out};
   for (int h = 0; h < 2; ++h)
     for (int c = 0; c < 3; ++c) {
-      const float* b = rights[h];
-      if (singular) {
-        (*outs[h])[c] = weight > 0 ? float(b[c * stride] / weight) : 0.0f;
-        continue;
-      }
-      double z[unknowns], s[unknowns];
-      for (int i = 0; i < unknowns; ++i) {
-        double v = b[(i * 3 + c) * stride];
-        for (int k = 0; k < i; ++k) v -= a[i][k] * z[k];
-        z[i] = v / a[i][i];
-      }
-      for (int i = unknowns - 1; i >= 0; --i) {
-        double v = z[i];
-        for (int k = i + 1; k < unknowns; ++k) v -= a[k][i] * s[k];
-        s[i] = v / a[i][i];
-      }
-      (*outs[h])[c] = float(s[0]);
+      double v = 0;
+      for (int i = 0; i < unknowns; ++i) v += u[i] * rights[h][(i * 3 + c) * stride];
+      (*outs[h])[c] = float(v);
     }
 }
 
 // The weighted products of one offset's neighbours added to a tile's sums: x x^T and x y for both
-// halves, one plane per term, pixels innermost. Without fused multiply-adds either way, so the
-// AVX2 copy gives the baseline's bits (math/lane_isa.h).
-[[gnu::always_inline]] inline void add_products_body(const float* weight, const float* x, const float* y_even,
-                                                     const float* y_odd, float* normal, float* even, float* odd) {
+// halves, one plane per term, pixels innermost, weighted by the NL-means weights of `distance`
+// at bandwidth 1 / sqrt(inverse_k2) (x's first plane is 1). Without fused multiply-adds either
+// way, so the AVX2 copy gives the baseline's bits (math/lane_isa.h).
+[[gnu::always_inline]] inline void add_products_body(const float* distance, const float* inside, float inverse_k2,
+                                                     const float* x, const float* y_even, const float* y_odd,
+                                                     float* weighted_x, float* normal, float* even, float* odd) {
+  for (int t = 0; t < tile_pixels; ++t) weighted_x[t] = inside[t] * exp_negative(distance[t] * inverse_k2);
+  for (int a = 1; a < unknowns; ++a)
+    for (int t = 0; t < tile_pixels; ++t) weighted_x[a * tile_pixels + t] = weighted_x[t] * x[a * tile_pixels + t];
   for (int a = 0, term = 0; a < unknowns; ++a) {
-    const float* xa = &x[a * tile_pixels];
+    const float* wxa = &weighted_x[a * tile_pixels];
     for (int b = a; b < unknowns; ++b, ++term) {
       const float* xb = &x[b * tile_pixels];
       float* sum = normal + term * tile_pixels;
-      for (int t = 0; t < tile_pixels; ++t) sum[t] += weight[t] * xa[t] * xb[t];
+      for (int t = 0; t < tile_pixels; ++t) sum[t] += wxa[t] * xb[t];
     }
     for (int c = 0; c < 3; ++c) {
       const float* ye = &y_even[c * tile_pixels];
@@ -120,22 +134,22 @@ void solve_pixel(const float* normal, const float* even, const float* odd, int s
       float* sum_even = even + (a * 3 + c) * tile_pixels;
       float* sum_odd = odd + (a * 3 + c) * tile_pixels;
       for (int t = 0; t < tile_pixels; ++t) {
-        float wx = weight[t] * xa[t];
-        sum_even[t] += wx * ye[t];
-        sum_odd[t] += wx * yo[t];
+        sum_even[t] += wxa[t] * ye[t];
+        sum_odd[t] += wxa[t] * yo[t];
       }
     }
   }
 }
 
-void add_products(const float* weight, const float* x, const float* y_even, const float* y_odd, float* normal,
-                  float* even, float* odd) {
-  add_products_body(weight, x, y_even, y_odd, normal, even, odd);
+void add_products(const float* distance, const float* inside, float inverse_k2, const float* x, const float* y_even,
+                  const float* y_odd, float* weighted_x, float* normal, float* even, float* odd) {
+  add_products_body(distance, inside, inverse_k2, x, y_even, y_odd, weighted_x, normal, even, odd);
 }
 
-__attribute__((target("avx2"))) void add_products_avx2(const float* weight, const float* x, const float* y_even,
-                                                       const float* y_odd, float* normal, float* even, float* odd) {
-  add_products_body(weight, x, y_even, y_odd, normal, even, odd);
+__attribute__((target("avx2"))) void add_products_avx2(const float* distance, const float* inside, float inverse_k2,
+                                                       const float* x, const float* y_even, const float* y_odd,
+                                                       float* weighted_x, float* normal, float* even, float* odd) {
+  add_products_body(distance, inside, inverse_k2, x, y_even, y_odd, weighted_x, normal, even, odd);
 }
 
 struct TileRegression {
@@ -207,7 +221,7 @@ struct TileRegression {
             float sum = 0;
             for (int py = 0; py <= 2 * pr; ++py)
               for (int px = 0; px <= 2 * pr; ++px) sum += w.patch_terms[(ty + py) * margin_side + tx + px];
-            w.distance[t0 + tx] = std::max(0.0f, sum * (1 / patch_area));
+            w.distance[t0 + tx] = std::clamp(sum * (1 / patch_area), 0.0f, farthest_patch_distance);
             int nx = x0 + tx + dx;
             w.inside[t0 + tx] = row_inside && nx >= 0 && nx < width ? 1.0f : 0.0f;
             w.x[t0 + tx] = 1;
@@ -223,7 +237,7 @@ struct TileRegression {
               w.y_odd[c * tile_pixels + t0 + tx] = q[(9 + c) * halo_pixels + tx];
             }
         }
-        for (int cand = 0; cand < candidates; ++cand) accumulate(w, cand, tw, th);
+        for (int cand = 0; cand < candidates; ++cand) accumulate(w, cand);
       }
     for (int cand = 0; cand < candidates; ++cand)
       for (int ty = 0; ty < th; ++ty)
@@ -238,20 +252,18 @@ struct TileRegression {
   }
 
   // Adds this offset's neighbours, weighted for candidate `cand`, to its normal equations.
-  void accumulate(Workspace& w, int cand, int tw, int th) const {
-    float inverse_k2 = 1 / (bandwidths[cand] * bandwidths[cand]);
-    for (int ty = 0; ty < th; ++ty)
-      for (int tx = 0; tx < tw; ++tx) {
-        int t = ty * denoise_tile_size + tx;
-        w.weight[t] = w.inside[t] * exp_negative(w.distance[t] * inverse_k2);
-      }
+  void accumulate(Workspace& w, int cand) const {
+    float bandwidth = std::max(bandwidths[cand], smallest_bandwidth);
+    float inverse_k2 = 1 / (bandwidth * bandwidth);
     float* normal = &w.normal[size_t(cand) * normal_terms * tile_pixels];
     float* even = &w.even[size_t(cand) * right_terms * tile_pixels];
     float* odd = &w.odd[size_t(cand) * right_terms * tile_pixels];
     if (resolve_lane_isa(LaneIsa::best) == LaneIsa::avx2)
-      add_products_avx2(w.weight.data(), w.x.data(), w.y_even.data(), w.y_odd.data(), normal, even, odd);
+      add_products_avx2(w.distance.data(), w.inside.data(), inverse_k2, w.x.data(), w.y_even.data(), w.y_odd.data(),
+                        w.weighted_x.data(), normal, even, odd);
     else
-      add_products(w.weight.data(), w.x.data(), w.y_even.data(), w.y_odd.data(), normal, even, odd);
+      add_products(w.distance.data(), w.inside.data(), inverse_k2, w.x.data(), w.y_even.data(), w.y_odd.data(),
+                   w.weighted_x.data(), normal, even, odd);
   }
 };
 
@@ -259,7 +271,7 @@ struct TileRegression {
 
 uint64_t regression_workspace_bytes(int candidates) {
   return sizeof(float) * (uint64_t(candidates) * (normal_terms + 2 * right_terms) * tile_pixels +
-                          halo_planes * halo_pixels + margin_side * margin_side + (3 + unknowns + 6) * tile_pixels);
+                          halo_planes * halo_pixels + margin_side * margin_side + (2 + 2 * unknowns + 6) * tile_pixels);
 }
 
 std::vector<CandidateImages> regress_candidates(const DenoiseInput& in, const std::vector<color3>& variance,
@@ -275,8 +287,8 @@ std::vector<CandidateImages> regress_candidates(const DenoiseInput& in, const st
     w.odd.resize(candidates * right_terms * tile_pixels);
     w.halo.resize(size_t(halo_planes) * halo_pixels);
     w.patch_terms.resize(margin_side * margin_side);
-    w.distance.resize(tile_pixels), w.weight.resize(tile_pixels, 0.0f), w.inside.resize(tile_pixels, 0.0f);
-    w.x.resize(unknowns * tile_pixels, 0.0f);
+    w.distance.resize(tile_pixels, 0.0f), w.inside.resize(tile_pixels, 0.0f);
+    w.x.resize(unknowns * tile_pixels, 0.0f), w.weighted_x.resize(unknowns * tile_pixels, 0.0f);
     w.y_even.resize(3 * tile_pixels, 0.0f), w.y_odd.resize(3 * tile_pixels, 0.0f);
     return w;
   });

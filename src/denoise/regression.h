@@ -14,7 +14,7 @@
 
 namespace radiant {
 
-constexpr int denoise_window_radius = 6;  // neighbours within 6 pixels each way: a 13x13 window
+constexpr int denoise_window_radius = 5;  // neighbours within 5 pixels each way: an 11x11 window
 constexpr int denoise_patch_radius = 1;   // NL-means compares 3x3 patches
 constexpr int denoise_tile_size = 16;     // the regression works on 16x16 tiles, one per task
 
@@ -25,7 +25,7 @@ struct CandidateImages {
   std::vector<color3> even, odd;
 };
 
-// The candidates of `bandwidths` (NL-means k), fitted on `in`'s halves with `variance` (the
+// The candidates of `bandwidths` (NL-means k, at least 0.5), fitted on `in`'s halves with `variance` (the
 // variance of the whole image's mean, smoothed) for the weights. Tile-parallel on the calling
 // task arena's threads; every pixel's result depends on its neighbours only, never on the
 // tiling or thread count.

@@ -22,15 +22,16 @@ namespace {
 constexpr const char* shard_format = "radiant shard 1";
 constexpr int words_per_sum = 5;  // top bin, high bin in two halves, low bin in two halves
 constexpr int color_channels = 3, count_channels = 2;  // samples, negative_samples
-constexpr int max_sums = 14;
+constexpr int max_sums = 17;
 
-// The exact sums of one pixel in channel order: color sums, squares, coverage, then the AOV sums.
+// The exact sums of one pixel in channel order: color sums, squares, coverage, the AOV sums, then
+// the odd half's color sums.
 struct PixelSums {
   std::array<ExactSum*, max_sums> sums{};
   int count = 0;
 };
 
-PixelSums pixel_sums(FilmPixel& p, ExactSum* alpha, FilmAovs* a) {
+PixelSums pixel_sums(FilmPixel& p, ExactSum* alpha, FilmAovs* a, FilmHalf* odd) {
   PixelSums s;
   for (ExactSum& sum : p.sum) s.sums[s.count++] = &sum;
   for (ExactSum& sum : p.sum_squares) s.sums[s.count++] = &sum;
@@ -40,17 +41,27 @@ PixelSums pixel_sums(FilmPixel& p, ExactSum* alpha, FilmAovs* a) {
     for (ExactSum& sum : a->normal) s.sums[s.count++] = &sum;
     s.sums[s.count++] = &a->depth;
   }
+  if (odd)
+    for (ExactSum& sum : odd->sum) s.sums[s.count++] = &sum;
   return s;
 }
 
-std::vector<std::string> channel_names(bool with_alpha, bool with_aovs) {
+// The odd half's sample counts follow every sum's words, so that the channels before them keep
+// their places with and without halves.
+std::vector<std::string> channel_names(bool with_alpha, bool with_aovs, bool with_halves) {
   std::vector<std::string> sums = {"sum.R", "sum.G", "sum.B", "sum2.R", "sum2.G", "sum2.B"};
   if (with_alpha) sums.push_back("alpha.A");
   if (with_aovs) sums.insert(sums.end(), {"albedo.R", "albedo.G", "albedo.B", "normal.X", "normal.Y", "normal.Z", "depth.Z"});
+  if (with_halves) sums.insert(sums.end(), {"odd.R", "odd.G", "odd.B"});
   std::vector<std::string> names = {"R", "G", "B", "samples", "negative_samples"};
   for (const std::string& sum : sums)
     for (const char* word : {".t", ".h0", ".h1", ".l0", ".l1"}) names.push_back(sum + word);
+  if (with_halves) names.insert(names.end(), {"odd.samples", "odd.negative_samples"});
   return names;
+}
+
+bool lists_halves(const std::vector<std::string>& aovs) {
+  return std::find(aovs.begin(), aovs.end(), "halves") != aovs.end();
 }
 
 std::string join(const std::vector<std::string>& words, char separator) {
@@ -253,11 +264,11 @@ ShardInfo parse_shard_metadata(const ImageMetadata& metadata) {
 
 void write_shard(TemporaryFile& file, const Film& film, const ShardInfo& info, const ImageMetadata& record,
                  MemoryBudget* budget) {
-  bool with_aovs = !film.aovs.empty(), with_alpha = !film.alpha.empty();
+  bool with_aovs = !film.aovs.empty(), with_alpha = !film.alpha.empty(), with_halves = !film.odd_half.empty();
   ImageWriteSpec spec;
   spec.width = film.width, spec.height = film.height;
   spec.x = film.x, spec.y = film.y, spec.full_width = film.full_width, spec.full_height = film.full_height;
-  spec.channel_names = channel_names(with_alpha, with_aovs);
+  spec.channel_names = channel_names(with_alpha, with_aovs, with_halves);
   spec.type = PixelType::float32;
   spec.channel_types.assign(spec.channel_names.size(), PixelType::uint32);
   for (int c = 0; c < color_channels; ++c) spec.channel_types[size_t(c)] = PixelType::float32;
@@ -275,11 +286,13 @@ void write_shard(TemporaryFile& file, const Film& film, const ShardInfo& info, c
     FilmPixel pixel = film.pixels[i];
     FilmAovs aovs = with_aovs ? film.aovs[i] : FilmAovs{};
     ExactSum alpha = with_alpha ? film.alpha[i] : ExactSum{};
+    FilmHalf odd = with_halves ? film.odd_half[i] : FilmHalf{};
     color3 mean = pixel_mean(pixel);
     for (int c = 0; c < color_channels; ++c) *out++ = std::bit_cast<uint32_t>(mean[c]);
     *out++ = pixel.samples;
     *out++ = pixel.negative_samples;
-    PixelSums sums = pixel_sums(pixel, with_alpha ? &alpha : nullptr, with_aovs ? &aovs : nullptr);
+    PixelSums sums = pixel_sums(pixel, with_alpha ? &alpha : nullptr, with_aovs ? &aovs : nullptr,
+                                with_halves ? &odd : nullptr);
     for (int s = 0; s < sums.count; ++s) {
       const ExactSum& sum = *sums.sums[size_t(s)];
       uint64_t high = uint64_t(sum.high()), low = uint64_t(sum.low());
@@ -287,6 +300,7 @@ void write_shard(TemporaryFile& file, const Film& film, const ShardInfo& info, c
       *out++ = uint32_t(high), *out++ = uint32_t(high >> 32);
       *out++ = uint32_t(low), *out++ = uint32_t(low >> 32);
     }
+    if (with_halves) *out++ = odd.samples, *out++ = odd.negative_samples;
   }
   spec.metadata.emplace_back(checksum_attribute, shard_checksum(spec.metadata, spec.channel_names, words.data(),
                                                                 film.pixels.size()));
@@ -327,8 +341,8 @@ LoadedShard read_shard_film(const std::string& path, const ShardInfo& info, Memo
   std::unique_ptr<ImageSource> source = open_image_file(path, error, budget);
   check(source != nullptr, path, error.empty() ? "cannot be read as an image (damaged?)" : error);
   const ImageHeader& header = source->header();
-  bool with_aovs = !info.aovs.empty();
-  std::vector<std::string> names = channel_names(info.transparent, with_aovs);
+  bool with_aovs = !info.aovs.empty(), with_halves = lists_halves(info.aovs);
+  std::vector<std::string> names = channel_names(info.transparent, with_aovs, with_halves);
   // Where each channel radiant needs lies in the file (EXR stores channels sorted by name).
   std::vector<int> file_channel(names.size());
   for (size_t n = color_channels; n < names.size(); ++n) {
@@ -346,7 +360,8 @@ LoadedShard read_shard_film(const std::string& path, const ShardInfo& info, Memo
   uint64_t pixels = uint64_t(width) * uint64_t(height);
   MemoryCharge read_memory(budget, saturating_multiply(pixels, uint64_t(header.channels) * sizeof(uint32_t)),
                            path + ": the shard's channels");
-  MemoryCharge film_memory(budget, saturating_multiply(pixels, film_pixel_bytes(with_aovs, info.transparent)),
+  MemoryCharge film_memory(budget,
+                           saturating_multiply(pixels, film_pixel_bytes(with_aovs, info.transparent, with_halves)),
                            path + ": the shard's film");
   std::vector<uint32_t> words(pixels * size_t(header.channels));
   if (!source->read_channels(0, header.channels, PixelType::uint32, words.data())) {
@@ -359,7 +374,7 @@ LoadedShard read_shard_film(const std::string& path, const ShardInfo& info, Memo
   check(accumulator_sum == hex(accumulator_hash(header.channel_names, words.data(), pixels)), path,
         "its accumulators do not match its radiant:checksum: the file is damaged");
 
-  Film film = make_film(width, height, with_aovs, info.transparent);
+  Film film = make_film(width, height, with_aovs, info.transparent, with_halves);
   film.x = info.x0, film.y = info.y0, film.full_width = info.full_width, film.full_height = info.full_height;
   uint32_t range = info.sample_end - info.sample_begin;
   for (size_t i = 0; i < film.pixels.size(); ++i) {
@@ -374,7 +389,17 @@ LoadedShard read_shard_film(const std::string& path, const ShardInfo& info, Memo
     if (pixel.samples > range) check(false, path, place() + " holds more samples than its sample range");
     pixel.negative_samples = word(color_channels + 1);
     if (pixel.negative_samples > pixel.samples) check(false, path, place() + " holds more negative samples than samples");
-    PixelSums sums = pixel_sums(pixel, info.transparent ? &film.alpha[i] : nullptr, with_aovs ? &film.aovs[i] : nullptr);
+    FilmHalf* odd = with_halves ? &film.odd_half[i] : nullptr;
+    PixelSums sums = pixel_sums(pixel, info.transparent ? &film.alpha[i] : nullptr, with_aovs ? &film.aovs[i] : nullptr,
+                                odd);
+    if (odd) {
+      size_t counts = color_channels + count_channels + size_t(sums.count) * words_per_sum;
+      odd->samples = word(counts);
+      if (odd->samples > pixel.samples) check(false, path, place() + " holds more odd samples than samples");
+      odd->negative_samples = word(counts + 1);
+      if (odd->negative_samples > odd->samples || odd->negative_samples > pixel.negative_samples)
+        check(false, path, place() + " holds more negative odd samples than it can");
+    }
     for (int s = 0; s < sums.count; ++s) {
       size_t first = color_channels + count_channels + size_t(s) * words_per_sum;
       int64_t high = int64_t(uint64_t(word(first + 1)) | uint64_t(word(first + 2)) << 32);

@@ -4,6 +4,8 @@
 // src/film/film.h) and, for every exact sum (sum.R, sum2.R, ..., the coverage alpha.A of a
 // transparent render and the AOV sums albedo.R, normal.X, depth.Z when kept), five uint32
 // channels: its top bin (.t) and its high and low bins as two 32-bit halves each (.h0 .h1 .l0 .l1).
+// A render with --aov halves adds the odd-indexed samples' sums (odd.R, odd.G, odd.B, five words
+// each) and their counts (odd.samples, odd.negative_samples, uint32).
 #pragma once
 
 #include <string>
@@ -78,8 +80,8 @@ struct LoadedShard {
   MemoryCharge memory;
 };
 
-// The film of the shard at `path` (with AOV sums when its info lists AOVs, coverage sums when
-// it is transparent), charging `budget` for it and for the read buffer first, its accumulators
+// The film of the shard at `path` (with AOV sums when its info lists AOVs, the odd half when they
+// include halves, coverage sums when it is transparent), charging `budget` for it and for the read buffer first, its accumulators
 // verified against its checksum. Throws std::runtime_error "path: why" (a pixel names itself) and
 // MemoryLimitError.
 LoadedShard read_shard_film(const std::string& path, const ShardInfo& info, MemoryBudget* budget);

@@ -151,6 +151,7 @@ ShardInfo check_shards(const std::vector<NamedShard>& shards, bool whole_image) 
 void add_shard(Film& merged, const Film& shard) {
   bool aovs = !merged.aovs.empty() && !shard.aovs.empty();
   bool alpha = !merged.alpha.empty() && !shard.alpha.empty();
+  bool halves = !merged.odd_half.empty() && !shard.odd_half.empty();
   for (int y = 0; y < shard.height; ++y)
     for (int x = 0; x < shard.width; ++x) {
       size_t from = size_t(y) * shard.width + x;
@@ -158,6 +159,7 @@ void add_shard(Film& merged, const Film& shard) {
       add_pixel(merged.pixels[to], shard.pixels[from]);
       if (aovs) add_aovs(merged.aovs[to], shard.aovs[from]);
       if (alpha) merged.alpha[to].add(shard.alpha[from]);
+      if (halves) add_half(merged.odd_half[to], shard.odd_half[from]);
     }
 }
 

@@ -24,7 +24,7 @@ struct NamedShard {
 ShardInfo check_shards(const std::vector<NamedShard>& shards, bool whole_image = true);
 
 // Adds every sample of `shard` into `merged` (a film whose window holds the shard's, with AOV
-// and coverage sums when both have them).
+// coverage and odd-half sums when both have them).
 void add_shard(Film& merged, const Film& shard);
 
 }  // namespace radiant

@@ -1,4 +1,4 @@
-// --denoise on render and batch, --aov noisy and halves, and `radiant denoise IN.exr -o OUT`
+// --denoise on render and batch, --aov noisy and halves (in shards too), and `radiant denoise IN.exr -o OUT`
 // (docs/denoise.md): the same denoised colour either way, recorded as denoised, alpha kept, and
 // an EXR without the needed channels refused in one line.
 #include <doctest/doctest.h>
@@ -69,6 +69,32 @@ TEST_CASE("denoise cli: radiant denoise of an EXR with the halves gives render -
   CHECK(color_differences(from_render, from_command) == 0);
   CHECK(image_attribute(command, "radiant:denoised") == "yes");
   CHECK(channel(from_command, "even.R") >= 0);  // an EXR keeps every input channel
+}
+
+TEST_CASE("denoise cli: shards with --aov halves merge to the one render's channels, and the merge denoises like it") {
+  ScratchDir dir("denoise-shards");
+  fs::path scene = dir.write("sphere.scene", lit_sphere_scene);
+  const std::string aovs = " --aov albedo,normal,depth,variance,halves";
+  fs::path single = dir.file("single.exr"), merged = dir.file("merged.exr"), denoised = dir.file("denoised.exr");
+  fs::path rendered = dir.file("rendered.exr");
+  std::string shards;
+  for (int i = 0; i < 3; ++i) {
+    fs::path shard = dir.file("shard-" + std::to_string(i) + ".exr");
+    radiant_ok("render " + scene.string() + " -o " + shard.string() + small + aovs + " --shard " + std::to_string(i) +
+               "/3 --split both");
+    shards += " " + shard.string();
+  }
+  radiant_ok("merge" + shards + " -o " + merged.string() + " --quiet");
+  radiant_ok("render " + scene.string() + " -o " + single.string() + small + aovs);
+  TestImage from_shards = read_image(merged), from_render = read_image(single);
+  REQUIRE(from_shards.channel_names == from_render.channel_names);
+  REQUIRE(channel(from_shards, "odd.R") >= 0);
+  int different = 0;
+  for (size_t i = 0; i < from_render.pixels.size(); ++i) different += from_shards.pixels[i] != from_render.pixels[i];
+  CHECK(different == 0);
+  radiant_ok("denoise " + merged.string() + " -o " + denoised.string() + " --quiet");
+  radiant_ok("render " + scene.string() + " -o " + rendered.string() + small + " --denoise");
+  CHECK(color_differences(read_image(denoised), read_image(rendered)) == 0);
 }
 
 TEST_CASE("denoise cli: an EXR without the denoiser's channels is refused in one line, and nothing is written") {

@@ -41,6 +41,32 @@ bool is_number(const std::string& text) {
 
 }  // namespace
 
+TEST_CASE("converge cli: --denoise adds a denoised ladder, less error at 16 spp, and the time to the raw ladder's last error") {
+  ScratchDir dir("converge-denoise");
+  CommandResult r = run_radiant("converge " + quoted(source_path("assets/cornell.gltf")) +
+                                " --width 32 --height 32 --spp-ladder 4,16 --reference-spp 256 --mode path --denoise" +
+                                " --out " + quoted(dir.path));
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  auto rows = read_csv(dir.file("converge.csv"));
+  REQUIRE(rows.size() == 5);
+  CHECK(rows[1][0] == "path");
+  CHECK(rows[3][0] == "path+denoise");
+  CHECK(rows[4][3] == "16");
+  CHECK(std::stod(rows[4][6]) < std::stod(rows[2][6]));  // denoised 16 spp against raw 16 spp, RMSE
+  // Without --target-error both series are asked for the raw ladder's last RMSE.
+  CHECK(r.out.find("path: RMSE = ") != std::string::npos);
+  CHECK(r.out.find("path+denoise: RMSE = ") != std::string::npos);
+  CHECK(r.out.find("RMSE " + rows[2][6].substr(0, 4)) != std::string::npos);
+  nlohmann::json report = nlohmann::json::parse(read_bytes(dir.file("converge.json")));
+  CHECK(report["series"][1]["steps"][1]["denoise_seconds"].get<double>() > 0);
+  CHECK(report["series"][0]["steps"][1]["denoise_seconds"].get<double>() == 0);
+  CommandResult both = run_radiant("converge " + quoted(source_path("assets/cornell.gltf")) +
+                                   " --supersampling --denoise --out " + quoted(dir.path));
+  CHECK(both.exit_code == 2);
+  CHECK(both.err.find("--denoise: adds denoised ladders of modes: not with --supersampling") != std::string::npos);
+}
+
 TEST_CASE("converge cli: path and naive ladders write a well-formed CSV and JSON, one row per step") {
   ScratchDir dir("converge-ladder");
   CommandResult r = run_radiant("converge " + quoted(source_path("assets/cornell.gltf")) +
