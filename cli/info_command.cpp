@@ -5,6 +5,7 @@
 
 #include "commands.h"
 #include "accel/light_enclosure.h"
+#include "animation_flags.h"
 #include "image_info.h"
 #include "json_output.h"
 #include "load_scene.h"
@@ -159,8 +160,13 @@ int info_main(int argc, char** argv) {
   app.add_flag("--json", json, "Print one JSON object for scripts");
   app.add_option("--scene", gltf_scene, "glTF scene index");
   app.add_flag("--allow-external-files", allow_external, "Let scene files refer to files outside their folder");
+  // The moment a render would show, so that the effects (motion blur) are that render's.
+  AnimationFlags animation;
+  animation.bind(app);
+  LoadOptions options;
   try {
     parse_arguments(app, argc, argv);
+    animation.finish(options);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);
     std::cerr << "radiant info: " << e.what() << "\n";
@@ -176,7 +182,6 @@ int info_main(int argc, char** argv) {
       print_image_info(std::cout, scene_path, json);
       return exit_ok;
     }
-    LoadOptions options;
     options.allow_external_files = allow_external;
     options.gltf_scene = gltf_scene;
     MemoryBudget budget = command_memory_budget(std::nullopt);

@@ -24,6 +24,12 @@ struct LoadOptions {
   // the file's static state (docs/gltf-obj.md, "Animation").
   std::optional<double> animation_time;
   std::string animation;
+  // Motion blur (--shutter): the animation also sampled from animation_time + open to
+  // animation_time + close seconds, into the scene's motion steps (scene/motion_steps.h).
+  struct Shutter {
+    double open = 0, close = 0;
+  };
+  std::optional<Shutter> shutter;
   // Every file the load reads is appended here (load_scene sets it; SceneDesc::input_files).
   std::vector<std::string>* files_read = nullptr;
 };

@@ -9,6 +9,8 @@
   textured-cube.obj (+ .mtl, .png)         the cube as OBJ with a map_Kd texture
   lit-windows.gltf                         a facade of 128 windows, 16 of them lit through one
                                            emission texture, over a street: no other light
+  motion.gltf                              a box sliding across a ground and a box spinning
+                                           beside it, for motion blur (--shutter)
 
 Run from the repository root: python3 scripts/make_sample_models.py
 """
@@ -342,6 +344,36 @@ def turntable():
     write("turntable.gltf", json.dumps(gltf, indent=1) + "\n")
 
 
+def keyed(doc, times, values, width):
+    """Adds the input and output accessors of one animation sampler; returns the sampler."""
+    accessors = doc.gltf["accessors"]
+    accessors.append({"bufferView": doc.view(struct.pack("<%df" % len(times), *times)), "componentType": 5126,
+                      "count": len(times), "type": "SCALAR", "min": [min(times)], "max": [max(times)]})
+    accessors.append({"bufferView": doc.view(b"".join(struct.pack("<%df" % width, *v) for v in values)),
+                      "componentType": 5126, "count": len(values), "type": {3: "VEC3", 4: "VEC4"}[width]})
+    return {"input": len(accessors) - 2, "output": len(accessors) - 1, "interpolation": "LINEAR"}
+
+
+def motion():
+    doc = Document()
+    ground = doc.mesh("ground", quad(6), doc.material("ground", (0.6, 0.6, 0.6)))
+    box = doc.mesh("box", cube(0.4), doc.material("red", (0.85, 0.15, 0.1), roughness=0.5))
+    spinner = doc.mesh("spinner", cube(0.4), doc.material("blue", (0.1, 0.3, 0.9), roughness=0.5))
+    slider = doc.node(name="slider", mesh=box, translation=[-1.5, 0.4, 0.8])
+    spinning = doc.node(name="spinning", mesh=spinner, translation=[0, 0.4, -1])
+    # "move": the slider crosses 3 units in a second; the spinner turns once about +y meanwhile.
+    times = [0.0, 0.25, 0.5, 0.75, 1.0]
+    turns = [[0, math.sin(math.pi * t), 0, math.cos(math.pi * t)] for t in times]
+    doc.gltf["animations"] = [{"name": "move", "samplers": [
+        keyed(doc, [0.0, 1.0], [[-1.5, 0.4, 0.8], [1.5, 0.4, 0.8]], 3), keyed(doc, times, turns, 4)],
+        "channels": [{"sampler": 0, "target": {"node": slider, "path": "translation"}},
+                     {"sampler": 1, "target": {"node": spinning, "path": "rotation"}}]}]
+    roots = [doc.node(name="ground", mesh=ground), slider, spinning, doc.camera_node((0, 3, 4.5), (0, 0.3, 0)),
+             doc.light_node({"name": "sun", "type": "directional", "intensity": 3}, (1, 3, 2))]
+    gltf = doc.finish(roots, "data:application/octet-stream;base64," + base64.b64encode(bytes(doc.data)).decode())
+    write("motion.gltf", json.dumps(gltf, indent=1) + "\n")
+
+
 if __name__ == "__main__":
     os.makedirs(OUT, exist_ok=True)
     checker_cube()
@@ -350,3 +382,4 @@ if __name__ == "__main__":
     textured_cube_obj()
     lit_windows()
     turntable()
+    motion()

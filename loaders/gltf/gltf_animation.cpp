@@ -149,4 +149,24 @@ void apply_animation(tinygltf::Model& model, const GltfContext& context, int ind
   }
 }
 
+int motion_steps_between(const GltfContext& context, int index, double from, double to) {
+  const tinygltf::Animation& animation = context.model.animations.at(size_t(index));
+  std::string where = element("animations", size_t(index));
+  int intervals = 1;
+  for (const tinygltf::AnimationChannel& channel : animation.channels) {
+    if (channel.target_node < 0 || channel.sampler < 0 || size_t(channel.sampler) >= animation.samplers.size()) continue;
+    int type = channel.target_path == "rotation" ? TINYGLTF_TYPE_VEC4
+               : channel.target_path == "weights" ? TINYGLTF_TYPE_SCALAR
+                                                  : TINYGLTF_TYPE_VEC3;
+    Keys keys = read_keys(context, animation.samplers[size_t(channel.sampler)], type,
+                          where + "." + element("samplers", size_t(channel.sampler)));
+    if (keys.times.back() <= from || keys.times.front() >= to) continue;  // still all shutter long
+    int inside = 0;
+    for (float t : keys.times) inside += t > from && t < to;
+    bool curved = channel.target_path == "rotation" || keys.interpolation == Interpolation::cubic_spline;
+    intervals = std::max(intervals, (inside + 1) * (curved ? 2 : 1));
+  }
+  return std::min(intervals + 1, max_motion_steps);
+}
+
 }  // namespace radiant

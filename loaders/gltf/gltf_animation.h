@@ -16,4 +16,9 @@ int find_animation(const GltfContext& context, const std::string& which);
 // interpolation, and writes the values into `model`'s nodes (the model `context` reads).
 void apply_animation(tinygltf::Model& model, const GltfContext& context, int index, double seconds);
 
+// How many evenly spaced time steps follow animation `index` from `from` to `to` seconds (from <
+// to): one interval per stretch between its keys there, of the channel with the most, two for a
+// rotation's or a cubic spline's curve; from 2 to max_motion_steps.
+int motion_steps_between(const GltfContext& context, int index, double from, double to);
+
 }  // namespace radiant

@@ -18,6 +18,8 @@
 #include "gltf/gltf_meshopt.h"
 #include "gltf/gltf_nodes.h"
 #include "message_text.h"
+#include "scene/scene_memory.h"
+#include "scene/scene_motion.h"
 
 namespace radiant {
 
@@ -185,7 +187,8 @@ SceneFileChoices gltf_choices(const GltfDocument& document) {
   return choices;
 }
 
-SceneDesc gltf_scene(GltfDocument& document, const LoadOptions& given) {
+// The scene at options.animation_time alone.
+static SceneDesc posed_scene(GltfDocument& document, const LoadOptions& given) {
   BudgetedLoadOptions budgeted(given);
   const LoadOptions& options = budgeted.options;
   tinygltf::Model& model = document.model;
@@ -214,6 +217,39 @@ SceneDesc gltf_scene(GltfDocument& document, const LoadOptions& given) {
   convert_nodes(context);
   if (scene.degenerate_triangles_dropped > 0)
     context.warn(std::to_string(scene.degenerate_triangles_dropped) + " degenerate triangles dropped");
+  return scene;
+}
+
+// Motion blur: gives `scene` the motion steps of what the animation moves while the shutter is
+// open, from the scene posed at evenly spaced times across it (each charged while held).
+static void add_shutter_motion(GltfDocument& document, SceneDesc& scene, const LoadOptions& options) {
+  if (!options.shutter || !options.animation_time) return;
+  SceneDesc unused;
+  GltfContext context{.model = document.model, .file = document.path, .options = options, .scene = unused};
+  int animation = find_animation(context, options.animation);
+  double open = *options.animation_time + options.shutter->open, close = *options.animation_time + options.shutter->close;
+  if (animation < 0 || !(close > open)) return;
+  int count = motion_steps_between(context, animation, open, close);
+  std::vector<SceneDesc> steps;
+  steps.reserve(size_t(count));
+  for (int k = 0; k < count; ++k) {
+    LoadOptions at_step = options;
+    at_step.animation_time = open + (close - open) * double(k) / double(count - 1);
+    at_step.shutter.reset();
+    steps.push_back(posed_scene(document, at_step));
+    charge_load(options, scene_memory_bytes(steps.back()),
+                document.path + ": the scene at shutter step " + std::to_string(k));
+  }
+  if (!add_motion_steps(scene, steps))
+    scene.warnings.push_back(document.path + ": the scene changes its make-up while the shutter is open: no motion blur");
+  // The steps are gone now; what motion they gave is the scene's own.
+  for (const SceneDesc& step : steps) options.budget->release(scene_memory_bytes(step));
+}
+
+SceneDesc gltf_scene(GltfDocument& document, const LoadOptions& given) {
+  BudgetedLoadOptions budgeted(given);
+  SceneDesc scene = posed_scene(document, budgeted.options);
+  add_shutter_motion(document, scene, budgeted.options);
   return scene;
 }
 

@@ -335,7 +335,7 @@ void append_obj(SceneDesc& scene, const std::string& path, const mat4& transform
       shade_flat(mesh, normal_mapped);
     }
     if (normal_mapped && mesh.tangents.empty()) generate_tangents(mesh);
-    scene.instances.push_back({int(scene.meshes.size()), transform, mesh.name});
+    scene.instances.push_back({int(scene.meshes.size()), transform, mesh.name, {}});
     scene.meshes.push_back(std::move(mesh));
   }
   if (dropped > 0) scene.warnings.push_back(path + ": " + std::to_string(dropped) + " degenerate triangles dropped");

@@ -88,7 +88,7 @@ static void add_triangles(BuildContext& context, int material, const std::vector
     mesh.name = "faces of material " + scene.materials[size_t(material)].name;
     mesh.material = material;
     scene.meshes.push_back(mesh);
-    scene.instances.push_back({found->second, mat4{}, mesh.name});
+    scene.instances.push_back({found->second, mat4{}, mesh.name, {}});
   }
   MeshDesc& mesh = scene.meshes[size_t(found->second)];
   uint32_t first = uint32_t(mesh.positions.size());

@@ -22,11 +22,13 @@ uint64_t accel_build_bytes(const SceneDesc& scene) {
   std::vector<char> placed(scene.meshes.size(), 0);
   uint64_t bytes = 0;
   for (const InstanceDesc& instance : scene.instances) {
-    bytes = saturating_add(bytes, instance_cost);
+    // A moving instance holds a transform per time step; a deforming mesh a vertex copy per step.
+    bytes = saturating_add(bytes, instance_cost + instance.motion.size() * sizeof(mat4));
     if (instance.mesh < 0 || size_t(instance.mesh) >= scene.meshes.size() || placed[size_t(instance.mesh)]) continue;
     placed[size_t(instance.mesh)] = 1;
     const MeshDesc& mesh = scene.meshes[size_t(instance.mesh)];
     bytes = saturating_add(bytes, mesh.triangle_count() * triangle_cost + mesh.positions.size() * vertex_cost);
+    bytes = saturating_add(bytes, saturating_multiply(mesh.motion_positions.size(), mesh.positions.size() * vertex_cost));
   }
   for (const StrokeDesc& stroke : scene.strokes)
     bytes = saturating_add(bytes, saturating_add(stroke.primitive_count(), stroke.positions.size()) * stroke_primitive_cost);

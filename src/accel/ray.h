@@ -15,6 +15,8 @@ struct Ray {
   vec3 origin;
   vec3 direction;  // not necessarily unit
   float tmax = std::numeric_limits<float>::infinity();
+  // When within the shutter the ray travels, in [0, 1] (scene/motion_steps.h); 0 without motion.
+  float time = 0;
 };
 
 // Whether a ray along `direction` meets a surface on its front, the side its geometric normal

@@ -25,7 +25,7 @@ bool store_embree_ray(RTCRay& embree_ray, const Ray& ray, const SceneAccel& acce
   using float4 = float __attribute__((vector_size(16)));
   using int4 = int __attribute__((vector_size(16)));
   float4 origin = {ray.origin.x, ray.origin.y, ray.origin.z, 0.0f};  // tnear 0
-  float4 direction = {ray.direction.x, ray.direction.y, ray.direction.z, 0.0f};  // time 0
+  float4 direction = {ray.direction.x, ray.direction.y, ray.direction.z, ray.time};
   static_assert(offsetof(RTCRay, tnear) == 12 && offsetof(RTCRay, time) == 28);
   std::memcpy(&embree_ray.org_x, &origin, sizeof origin);
   std::memcpy(&embree_ray.dir_x, &direction, sizeof direction);

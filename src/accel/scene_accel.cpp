@@ -14,6 +14,7 @@
 #include "accel/direct_shapes.h"
 #include "accel/embree_callbacks.h"
 #include "accel/embree_isa.h"
+#include "accel/motion_geometry.h"
 #include "scene/coordinate_range.h"
 #include "scene/shape_bounds.h"
 
@@ -90,9 +91,12 @@ void replace_vertices(RTCGeometry geometry, const std::vector<vec3>& positions) 
 RTCGeometry new_triangle_geometry(SceneAccel& accel, int mesh_index, const std::vector<vec3>& positions) {
   const MeshDesc& mesh = accel.scene->meshes[mesh_index];
   RTCGeometry geometry = rtcNewGeometry(accel.device, RTC_GEOMETRY_TYPE_TRIANGLE);
-  write_vertices(static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                             3 * sizeof(float), positions.size())),
-                 positions);
+  if (!mesh.motion_positions.empty())  // deforming while the shutter is open (never laid out flat)
+    set_vertex_motion(geometry, mesh.motion_positions);
+  else
+    write_vertices(static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                               3 * sizeof(float), positions.size())),
+                   positions);
   auto* indices = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
       geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), mesh.triangle_count()));
   std::copy(mesh.indices.begin(), mesh.indices.begin() + 3 * mesh.triangle_count(), indices);
@@ -138,7 +142,8 @@ RTCGeometry new_placed_geometry(SceneAccel& accel, int i, bool flat, const std::
   if (!accel.mesh_scenes[instance.mesh]) accel.mesh_scenes[instance.mesh] = build_mesh_scene(accel, instance.mesh);
   RTCGeometry geometry = rtcNewGeometry(accel.device, RTC_GEOMETRY_TYPE_INSTANCE);
   rtcSetGeometryInstancedScene(geometry, accel.mesh_scenes[instance.mesh]);
-  set_instance_transform(geometry, instance.transform);
+  if (!instance.motion.empty()) set_transform_motion(geometry, instance.motion);
+  else set_instance_transform(geometry, instance.transform);
   rtcCommitGeometry(geometry);
   return geometry;
 }
@@ -148,6 +153,16 @@ std::vector<int> mesh_placements(const SceneDesc& scene) {
   std::vector<int> placements(scene.meshes.size(), 0);
   for (const InstanceDesc& instance : scene.instances) ++placements[instance.mesh];
   return placements;
+}
+
+// Whether instance i may sit flat on the top level: its mesh placed once, nothing of it moving
+// while the shutter is open (Embree moves instances and vertex buffers, not placed copies), and
+// every placed vertex an exact float (placed into `world_positions`).
+bool lies_flat(const SceneDesc& scene, const std::vector<int>& placements, const InstanceDesc& instance,
+               std::vector<vec3>& world_positions) {
+  const MeshDesc& mesh = scene.meshes[instance.mesh];
+  return placements[instance.mesh] == 1 && instance.motion.empty() && mesh.motion_positions.empty() &&
+         place_exactly(mesh, instance.transform, world_positions);
 }
 
 // Attaches every instance; records in accel.instanced those traced through an object space of
@@ -168,7 +183,7 @@ void attach_instances(SceneAccel& accel) {
   for (size_t i = 0; i < scene.instances.size(); ++i) {
     const InstanceDesc& instance = scene.instances[i];
     record_instance_transform(accel, int(i));
-    bool flat = placements[instance.mesh] == 1 && place_exactly(scene.meshes[instance.mesh], instance.transform, world_positions);
+    bool flat = lies_flat(scene, placements, instance, world_positions);
     if (!flat) accel.instanced.push_back(int(i));
     RTCGeometry geometry = new_placed_geometry(accel, int(i), flat, world_positions);
     rtcAttachGeometryByID(accel.top, geometry, unsigned(i));
@@ -320,7 +335,7 @@ void update_scene_accel(SceneAccel& accel, const SceneChanges& changes) {
     if (!deformed && !moved) continue;
     const MeshDesc& mesh = scene.meshes[instance.mesh];
     record_instance_transform(accel, int(i));
-    bool flat = placements[instance.mesh] == 1 && place_exactly(mesh, instance.transform, world_positions);
+    bool flat = lies_flat(scene, placements, instance, world_positions);
     RTCScene mesh_scene = accel.mesh_scenes[instance.mesh];
     if (deformed && mesh_scene && !mesh_updated[instance.mesh]) {  // kept current even while unused
       replace_vertices(rtcGetGeometry(mesh_scene, 0), mesh.positions);

@@ -78,9 +78,19 @@ struct SurfaceHit {
   SurfaceAttributes attributes;
   int material = -1;
   bool front_face = true;  // the ray arrived on the geometric normal's side
+  float time = 0;          // the time of the ray that found it: rays leaving it travel then too
 };
 
+// Decoded where the ray met it: a moving instance or deforming mesh at the ray's time.
 SurfaceHit make_surface_hit(const SceneAccel& accel, const Ray& ray, const HitId& id);
+
+// Whether hit `id` lies on a mesh that moves or deforms while the shutter is open, so that only
+// make_surface_hit, at the ray's time, places it (not the rendered pose).
+inline bool moves_during_shutter(const SceneAccel& accel, const HitId& id) {
+  if (id.instance < 0) return false;
+  const InstanceDesc& instance = accel.scene->instances[size_t(id.instance)];
+  return !instance.motion.empty() || !accel.scene->meshes[size_t(instance.mesh)].motion_positions.empty();
+}
 
 // Sets hit.attributes' uv footprint (duv_dx, duv_dy of each uv set) from the position footprint
 // dpdx, dpdy at a triangle hit, by least squares in the triangle's plane (pbrt-v4's
@@ -97,6 +107,7 @@ void set_uv_footprint(const SceneAccel& accel, const HitId& id, vec3 dpdx, vec3 
   ray.origin = offset_ray_origin(hit.position, hit.position_error, hit.geometric_normal, direction);
   ray.direction = direction;
   ray.tmax = std::numeric_limits<float>::infinity();
+  ray.time = hit.time;
 }
 inline Ray spawn_ray(const SurfaceHit& hit, vec3 direction) {
   Ray ray;
@@ -110,6 +121,7 @@ inline Ray spawn_ray(const SurfaceHit& hit, vec3 direction) {
   ray.origin = origin;
   ray.direction = target - origin;
   ray.tmax = 1 - 1e-4f;
+  ray.time = hit.time;
 }
 inline Ray spawn_ray_to(const SurfaceHit& hit, vec3 target) {
   Ray ray;

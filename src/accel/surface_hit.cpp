@@ -28,15 +28,44 @@ void triangle_uv_derivatives(const MeshDesc& mesh, const uint32_t* tri, vec3 e1,
   hit.dpdv = (e2 * d1.x - e1 * d2.x) * inverse;
 }
 
-void fill_triangle_hit(const SceneAccel& accel, const HitId& id, SurfaceHit& hit) {
+// An instance's placement at one time: its own transform, or where it is at a ray's time while
+// it moves (the transform Embree interpolated to find the hit).
+struct Placement {
+  mat4 moved_world, moved_object;
+  const mat4* to_world;
+  const mat4* to_object;
+  bool identity;
+  float orientation;
+};
+void place_at_time(const SceneAccel& accel, int index, float time, Placement& p) {
+  const InstanceDesc& instance = accel.scene->instances[size_t(index)];
+  if (instance.motion.empty()) {
+    p.to_world = &instance.transform, p.to_object = &accel.instance_inverse[size_t(index)];
+    p.identity = accel.instance_identity[size_t(index)], p.orientation = accel.instance_orientation[size_t(index)];
+    return;
+  }
+  p.moved_world = transform_at_time(instance.motion, time);
+  inverse_affine(p.moved_world, p.moved_object);
+  p.to_world = &p.moved_world, p.to_object = &p.moved_object;
+  p.identity = false, p.orientation = determinant3(p.moved_world) < 0 ? -1.0f : 1.0f;
+}
+
+void fill_triangle_hit(const SceneAccel& accel, const HitId& id, float time, SurfaceHit& hit) {
   const SceneDesc& scene = *accel.scene;
   const InstanceDesc& instance = scene.instances[id.instance];
   const MeshDesc& mesh = scene.meshes[instance.mesh];
-  const mat4& to_world = instance.transform;
-  const mat4& to_object = accel.instance_inverse[id.instance];
+  Placement placement;
+  place_at_time(accel, id.instance, time, placement);
+  const mat4& to_world = *placement.to_world;
+  const mat4& to_object = *placement.to_object;
   const uint32_t* tri = &mesh.indices[size_t(id.primitive) * 3];
   float b1 = id.barycentric.x, b2 = id.barycentric.y, b0 = 1 - b1 - b2;
   vec3 p0 = mesh.positions[tri[0]], p1 = mesh.positions[tri[1]], p2 = mesh.positions[tri[2]];
+  if (!mesh.motion_positions.empty()) {  // deforming while the shutter is open: where Embree met it
+    p0 = position_at_time(mesh.motion_positions, tri[0], time);
+    p1 = position_at_time(mesh.motion_positions, tri[1], time);
+    p2 = position_at_time(mesh.motion_positions, tri[2], time);
+  }
 
   // Barycentric interpolation is far more accurate than origin + t * direction (pbrt 6.8.4).
   // Written from a vertex along the edges, its rounding scales with the triangle's size, not
@@ -47,7 +76,7 @@ void fill_triangle_hit(const SceneAccel& accel, const HitId& id, SurfaceHit& hit
   vec3 along_edges = b1 * e1 + b2 * e2;
   vec3 object_point = p0 + along_edges;
   vec3 object_error = rounding_gamma(5) * (abs(b1 * e1) + abs(b2 * e2)) + rounding_gamma(2) * abs(object_point);
-  bool identity = accel.instance_identity[id.instance];
+  bool identity = placement.identity;
   vec3 error = object_error;
   hit.position = object_point;
   if (!identity) {
@@ -70,7 +99,7 @@ void fill_triangle_hit(const SceneAccel& accel, const HitId& id, SurfaceHit& hit
   // back a vector just written as separate floats, which stalls store forwarding.
   vec3 geometric_normal =
       identity ? normalize(id.geometric_normal_raw)
-               : normalize(transform_normal(to_object, cross(e1, e2))) * accel.instance_orientation[id.instance];
+               : normalize(transform_normal(to_object, cross(e1, e2))) * placement.orientation;
   hit.geometric_normal = geometric_normal;
   hit.shading_normal = geometric_normal;
   if (!mesh.normals.empty()) {
@@ -139,10 +168,11 @@ void fill_stroke_hit(const SceneAccel& accel, const Ray& ray, const HitId& id, S
 
 SurfaceHit make_surface_hit(const SceneAccel& accel, const Ray& ray, const HitId& id) {
   SurfaceHit hit;
-  if (id.instance >= 0) fill_triangle_hit(accel, id, hit);
+  if (id.instance >= 0) fill_triangle_hit(accel, id, ray.time, hit);
   else if (id.stroke >= 0) fill_stroke_hit(accel, ray, id, hit);
   else fill_shape_hit(accel, ray, id, hit);
   hit.front_face = arrives_on_front(ray.direction, hit.geometric_normal);
+  hit.time = ray.time;
   return hit;
 }
 

@@ -484,6 +484,7 @@ struct PathVariant {
     path.ray.origin = camera_ray.origin;
     path.ray.direction = camera_ray.direction;
     path.ray.tmax = camera_ray.tmax;
+    path.ray.time = camera_ray.time;
     path.sample = &sample;
     // One aggregate: copied and then given its index in a second store, GCC 12 at -O3 (not -O2,
     // nor with -fno-strict-aliasing) lost the index store in the batch's inlined copy, and every
@@ -606,6 +607,7 @@ struct PathVariant {
       // A mesh's triangle, a sphere or a plane.
       if (id.stroke >= 0) continue;  // lines and points take the single path
       const MeshDesc* mesh = id.instance >= 0 ? &scene.meshes[scene.instances[id.instance].mesh] : nullptr;
+      if (mesh && moves_during_shutter(accel, id)) continue;  // placed at its ray's time: the single path
       const ShapeDesc* shape = mesh ? nullptr : &scene.shapes[id.shape];
       if (shape && shape->kind != ShapeKind::sphere && shape->kind != ShapeKind::plane) continue;
       int material_index = mesh ? mesh->material : shape->material;
@@ -823,6 +825,7 @@ struct PathVariant {
       light.shadow_ray.origin = {l.shadow_ox[i], l.shadow_oy[i], l.shadow_oz[i]};
       light.shadow_ray.direction = {l.shadow_dx[i], l.shadow_dy[i], l.shadow_dz[i]};
       light.shadow_ray.tmax = l.shadow_infinite[i] ? std::numeric_limits<float>::infinity() : 1 - 1e-4f;
+      light.shadow_ray.time = path.ray.time;
       if (!shadows_are_opaque<E>(ctx)) {
         light.target = {l.shadow_tx[i], l.shadow_ty[i], l.shadow_tz[i]};
         light.footprint_scale = texture_footprint_scale((path.depth == 0 ? *path.sample : path.own).index);

@@ -79,6 +79,15 @@ std::optional<Ray> generate_camera_ray(const CameraFrame& f, float x, float y, v
   return f.lens_radius > 0 ? through_lens(f, pinhole, lens) : pinhole;
 }
 
+CameraFrame move_camera_frame(const CameraFrame& still, const CameraPose& pose) {
+  CameraFrame f = still;
+  f.position = pose.position;
+  f.forward = pose.forward;
+  f.right = normalize(cross(f.forward, pose.up));
+  f.up = cross(f.right, f.forward);
+  return f;
+}
+
 bool framing_box(const SceneDesc& scene, vec3& lower, vec3& upper) {
   bool finite = scene_bounds(scene, lower, upper);
   // Infinite planes and tubes: frame a point on each, so a scene of only planes is seen.
@@ -183,6 +192,7 @@ void apply_lens(CameraDesc& camera, const CameraOverride& o) {
 void apply_camera_override(CameraDesc& camera, const CameraOverride& o) {
   check_override_range(o.look_from, "--look-from");
   check_override_range(o.look_at, "--look-at");
+  if (o.look_from || o.look_at) camera.motion.clear();  // placed by the flags: it no longer follows the file
   if (o.look_from) camera.position = *o.look_from;
   if (o.look_at) {
     vec3 d = *o.look_at - camera.position;

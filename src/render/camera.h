@@ -22,6 +22,9 @@ struct CameraFrame {
 
 CameraFrame make_camera_frame(const CameraDesc& camera, int width, int height);
 
+// `still` moved to `pose` (a moving camera at a ray's time): its lens and field of view kept.
+CameraFrame move_camera_frame(const CameraFrame& still, const CameraPose& pose);
+
 // Ray through film position (x, y) in pixels, (0, 0) the top-left corner of the image, leaving
 // the lens at the point `lens` in [0,1)^2 picks (ignored by a pinhole). nullopt where the
 // projection sees nothing (outside a fisheye's circle).

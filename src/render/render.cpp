@@ -20,6 +20,7 @@
 #include "integrators/path.h"
 #include "integrators/surface_lanes.h"
 #include "integrators/whitted.h"
+#include "scene/scene_motion.h"
 #include "scene/volume_absorption.h"
 #include "render/camera.h"
 #include "render/pass_schedule.h"
@@ -136,6 +137,8 @@ struct PassRunner {
   tbb::enumerable_thread_specific<RayCounts>& counts;
   const StopCheck& stop;
   ProgressMeter& progress;
+  // Camera rays spread over the shutter (effect_motion_blur): each draws its time.
+  bool motion_blur = false;
 
   // The camera ray of sample `sample` at pixel (x, y) through `pixel_pair` (its sample_pixel), and
   // the filter's weight sign; none where the projection sees nothing (outside a fisheye's circle).
@@ -144,7 +147,12 @@ struct PassRunner {
     FilterSample placed = sample_filter(filter, pixel_pair);
     negative = placed.weight < 0;  // the weight's magnitude is one for the whole filter
     vec2 lens = frame.lens_radius > 0 ? sample_2d(sample, lens_dimension) : vec2{0.5f, 0.5f};
-    return generate_camera_ray(frame, float(x) + placed.position.x, float(y) + placed.position.y, lens);
+    if (!motion_blur) return generate_camera_ray(frame, float(x) + placed.position.x, float(y) + placed.position.y, lens);
+    float time = sample_time(sample);
+    CameraFrame moved = s.camera.motion.empty() ? frame : move_camera_frame(frame, pose_at_time(s.camera.motion, time));
+    std::optional<Ray> ray = generate_camera_ray(moved, float(x) + placed.position.x, float(y) + placed.position.y, lens);
+    if (ray) ray->time = time;
+    return ray;
   }
 
   SampleContext sample_at(int x, int y, uint32_t index) const {
@@ -359,6 +367,8 @@ static StrokeSizing view_stroke_sizing(const PreparedScene& prepared, const Rend
 }
 
 PreparedScene prepare_scene(SceneDesc scene, const RenderOptions& options, AccelLayout layout) {
+  // Without motion blur the scene holds still at the rendered time.
+  if (!(apply_effects_override(effect_motion_blur, options.effects) & effect_motion_blur)) drop_motion(scene);
   PreparedScene prepared;
   prepared.budget = options.memory;
   prepared.layout = layout;
@@ -449,6 +459,7 @@ RenderResult render_prepared(const PreparedScene& prepared, const RenderOptions&
   PixelFilter filter = make_pixel_filter(s.filter, s.filter_radius);
   PassRunner runner{ctx, s, select_integrator(s), frame, filter, want_aovs, s.transparent, want_halves,
                     options.path_batching, options.seed, result.film, counts, stop, progress};
+  runner.motion_blur = (s.effects & effect_motion_blur) != 0;
 
   PassSchedule schedule;
   schedule.begin = s.samples.begin, schedule.end = s.samples.end;

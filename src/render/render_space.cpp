@@ -15,6 +15,8 @@ WorldPlacement record_world_placement(const SceneDesc& world) {
   for (const InstanceDesc& instance : world.instances) {
     const mat4& m = instance.transform;
     placement.instance_translations.push_back({m.m[0][3], m.m[1][3], m.m[2][3]});
+    std::vector<vec3>& steps = placement.instance_motion_translations.emplace_back();
+    for (const mat4& step : instance.motion) steps.push_back({step.m[0][3], step.m[1][3], step.m[2][3]});
   }
   placement.shape_centers.reserve(world.shapes.size());
   for (const ShapeDesc& shape : world.shapes) placement.shape_centers.push_back(shape.center);
@@ -47,6 +49,11 @@ void place_at_render_origin(SceneDesc& scene, const WorldPlacement& world, dvec3
     mat4& transform = scene.instances[i].transform;
     vec3 moved = to_render_space(world.instance_translations[i], origin);
     transform.m[0][3] = moved.x, transform.m[1][3] = moved.y, transform.m[2][3] = moved.z;
+    std::vector<mat4>& motion = scene.instances[i].motion;
+    for (size_t k = 0; k < motion.size(); ++k) {
+      vec3 step = to_render_space(world.instance_motion_translations[i][k], origin);
+      motion[k].m[0][3] = step.x, motion[k].m[1][3] = step.y, motion[k].m[2][3] = step.z;
+    }
   }
   for (size_t i = 0; i < scene.shapes.size(); ++i) scene.shapes[i].center = to_render_space(world.shape_centers[i], origin);
   for (size_t i = 0; i < scene.strokes.size(); ++i)

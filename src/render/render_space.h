@@ -22,6 +22,7 @@ struct WorldPlacement {
   bool has_framing_box = false;  // what a framing camera frames (render/camera.h framing_box)
   vec3 framing_lower, framing_upper;
   std::vector<vec3> instance_translations;  // placing moves only an instance's translation column
+  std::vector<std::vector<vec3>> instance_motion_translations;  // and those of its motion steps
   std::vector<vec3> shape_centers;
   std::vector<vec3> stroke_centers;
   std::vector<vec3> light_positions;

@@ -132,6 +132,7 @@ ResolvedSettings resolve_settings(const PreparedScene& prepared, const RenderOpt
   if (options.world_up) r.world_up = normalize(*options.world_up);
   r.camera = world_view_camera(prepared, options, r.camera_framed);
   r.camera.position = to_render_space(r.camera.position, prepared.origin);
+  for (CameraPose& pose : r.camera.motion) pose.position = to_render_space(pose.position, prepared.origin);
   resolve_size(options, scene, r);
   check_camera_traceable(r, prepared);
 

@@ -59,6 +59,16 @@ float sample_1d(const SampleContext& c, uint32_t dimension) {
   return bits_to_unit_float(sobol::x_bits(sobol::shuffle(c.pixel, c.index, dimension, c.seed)));
 }
 
+float sample_time(const SampleContext& c) {
+  if (c.kind == SamplerKind::sobol || c.kind == SamplerKind::random || c.samples <= 1) return sample_1d(c, time_dimension);
+  // Its own order of strata, so that the time does not follow the pixel position's stratum.
+  FastDivisor strata_count(c.samples);
+  uint32_t order_seed = hash3(c.pixel, c.seed, time_dimension);
+  uint32_t stratum = permutation_element(strata_count.remainder(c.index), strata_count, order_seed);
+  float offset = c.kind == SamplerKind::jittered ? hashed_value(c.pixel, c.index, time_dimension, c.seed) : 0.5f;
+  return std::min((float(stratum) + offset) / float(c.samples), 0x1.fffffep-1f);
+}
+
 vec2 sample_2d(const SampleContext& c, uint32_t dimension) {
   if (c.kind != SamplerKind::sobol) return {random_value(c, dimension), random_value(c, dimension + 1)};
   sobol::ShuffledIndex s = sobol::shuffle(c.pixel, c.index, dimension, c.seed);

@@ -34,6 +34,13 @@ void draw_stratified_pixels(SamplerKind kind, uint32_t samples, uint32_t index, 
 // The lens point of a thin-lens camera: a fixed pair far above every path vertex's block
 // (integrators/path.cpp), so that a lens shifts no other random number.
 constexpr uint32_t lens_dimension = 0xF0000000u;
+// The time within the shutter of a camera ray (motion blur), beside the lens pair.
+constexpr uint32_t time_dimension = 0xF0000002u;
+
+// A camera ray's time in [0, 1) across the shutter, drawn from time_dimension and stratified
+// over the pixel's samples: Sobol's own 1D points; for grid and jittered, one stratum of
+// 1/samples per sample index in a per-pixel random order (grid at the strata's centres).
+float sample_time(const SampleContext& context);
 
 // A 1D / 2D value for `dimension` (>= 2; dimensions 0 and 1 are the pixel position). Sobol
 // pads pairs of dimensions with independently shuffled and scrambled (0, 1) Sobol dimensions;

@@ -3,6 +3,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "scene/scene_motion.h"
 #include "scene/volume_absorption.h"
 
 namespace radiant {
@@ -16,6 +17,7 @@ const std::vector<EffectInfo>& effect_catalog() {
       {effect_textures, "textures"},         {effect_normal_maps, "normal-maps"},
       {effect_alpha, "alpha"},               {effect_indirect, "indirect"},
       {effect_absorption, "absorption"},     {effect_single_sided, "single-sided"},
+      {effect_motion_blur, "motion-blur"},
   };
   return catalog;
 }
@@ -108,6 +110,7 @@ EffectSet analyze_effects(const SceneDesc& scene) {
   if (absorbing) add(effect_absorption, count(absorbing, "material(s) with an absorbing volume (KHR_materials_volume)"));
   if (single_sided)
     add(effect_single_sided, count(single_sided, "single-sided material(s): camera rays pass through their back faces"));
+  if (MotionCounts motion = count_motion(scene); motion.any()) add(effect_motion_blur, describe_motion(motion));
   return set;
 }
 

@@ -26,8 +26,9 @@ enum Effect : uint32_t {
   effect_indirect = 1u << 11,            // indirect (global) illumination (path tracer)
   effect_absorption = 1u << 12,          // Beer-Lambert absorption inside transmissive volumes (path tracer)
   effect_single_sided = 1u << 13,        // camera rays pass through single-sided materials' back faces
+  effect_motion_blur = 1u << 14,         // camera rays spread over the shutter's time (scene/motion_steps.h)
 };
-constexpr uint32_t effect_all = (1u << 14) - 1;
+constexpr uint32_t effect_all = (1u << 15) - 1;
 
 struct EffectInfo {
   Effect effect;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstring>
 
+#include "scene/scene_motion.h"
+
 namespace radiant {
 
 namespace {
@@ -41,7 +43,8 @@ bool SceneChanges::any() const {
 
 std::optional<SceneChanges> scene_changes(const SceneDesc& before, const SceneDesc& after) {
   if (before.meshes.size() != after.meshes.size() || before.instances.size() != after.instances.size() ||
-      before.shapes.size() != after.shapes.size() || !before.strokes.empty() || !after.strokes.empty())
+      before.shapes.size() != after.shapes.size() || !before.strokes.empty() || !after.strokes.empty() ||
+      count_motion(before).any() || count_motion(after).any())  // motion steps: built anew
     return std::nullopt;
   SceneChanges changes;
   changes.deformed_meshes.resize(after.meshes.size());

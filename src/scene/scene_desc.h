@@ -10,6 +10,7 @@
 
 #include "math/transform.h"
 #include "math/vec.h"
+#include "scene/motion_steps.h"
 
 namespace radiant {
 
@@ -34,6 +35,9 @@ struct CameraDesc {
   int aperture_blades = 0;   // 0 = a round aperture, 3 or more a regular polygon
   float aspect = 0;                 // width / height; 0 = take it from the image size
   int width = 0, height = 0;        // image size the file asks for; 0 = unset
+  // Empty, or the pose at each time step of the shutter (scene/motion_steps.h) when the camera
+  // moves while it is open; position, forward and up above are its pose at the rendered time.
+  std::vector<CameraPose> motion;
 };
 
 // ---------------------------------------------------------------- images and textures
@@ -171,13 +175,19 @@ struct MeshDesc {
   std::vector<vec2> texcoords1;
   std::vector<vec4> colors;      // empty or one per vertex (COLOR_0, linear RGBA)
   std::vector<uint32_t> indices; // three per triangle
+  // Empty, or the vertex positions at each time step of the shutter (scene/motion_steps.h) when
+  // skinning or morphing moves them while it is open; `positions` are those at the rendered time.
+  std::vector<std::vector<vec3>> motion_positions;
   size_t triangle_count() const { return indices.size() / 3; }
 };
 
 struct InstanceDesc {
   int mesh = -1;
-  mat4 transform;  // object to world
+  mat4 transform;  // object to world, at the rendered time
   std::string name;
+  // Empty, or the transform at each time step of the shutter (scene/motion_steps.h) when the
+  // instance moves while it is open.
+  std::vector<mat4> motion;
 };
 
 enum class ShapeKind { sphere, plane, cylinder, tube };

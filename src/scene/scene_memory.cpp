@@ -1,5 +1,7 @@
 #include "scene/scene_memory.h"
 
+#include "memory/memory_budget.h"
+
 namespace radiant {
 
 namespace {
@@ -26,7 +28,8 @@ uint64_t vertex_bytes(const MeshDesc& mesh) {
 uint64_t mesh_bytes(const MeshDesc& mesh) {
   return sizeof(MeshDesc) + string_bytes(mesh.name) + array_bytes(mesh.positions) + array_bytes(mesh.normals) +
          array_bytes(mesh.tangents) + array_bytes(mesh.texcoords0) + array_bytes(mesh.texcoords1) +
-         array_bytes(mesh.colors) + array_bytes(mesh.indices);
+         array_bytes(mesh.colors) + array_bytes(mesh.indices) +
+         saturating_multiply(mesh.motion_positions.size(), sizeof(std::vector<vec3>) + array_bytes(mesh.positions));
 }
 
 uint64_t stroke_bytes(const StrokeDesc& stroke) {
@@ -34,7 +37,9 @@ uint64_t stroke_bytes(const StrokeDesc& stroke) {
          array_bytes(stroke.segments);
 }
 
-uint64_t instance_bytes(const InstanceDesc& instance) { return sizeof(InstanceDesc) + string_bytes(instance.name); }
+uint64_t instance_bytes(const InstanceDesc& instance) {
+  return sizeof(InstanceDesc) + string_bytes(instance.name) + array_bytes(instance.motion);
+}
 
 uint64_t scene_memory_bytes(const SceneDesc& scene) {
   uint64_t bytes = sizeof(SceneDesc);
@@ -45,7 +50,8 @@ uint64_t scene_memory_bytes(const SceneDesc& scene) {
   for (const InstanceDesc& instance : scene.instances) bytes += instance_bytes(instance);
   for (const ShapeDesc& shape : scene.shapes) bytes += sizeof(ShapeDesc) + string_bytes(shape.name);
   for (const StrokeDesc& stroke : scene.strokes) bytes += stroke_bytes(stroke);
-  for (const CameraDesc& camera : scene.cameras) bytes += sizeof(CameraDesc) + string_bytes(camera.name);
+  for (const CameraDesc& camera : scene.cameras)
+    bytes += sizeof(CameraDesc) + string_bytes(camera.name) + array_bytes(camera.motion);
   for (const LightDesc& light : scene.lights) bytes += sizeof(LightDesc) + string_bytes(light.name);
   for (const std::string& warning : scene.warnings) bytes += sizeof(std::string) + string_bytes(warning);
   return bytes + array_bytes(scene.textures);

@@ -211,6 +211,12 @@ struct Checker {
     }
   }
 
+  // Motion over the shutter: none, or between 2 and max_motion_steps time steps.
+  void motion_steps(size_t steps, const std::string& where) const {
+    if (steps == 1 || steps > size_t(max_motion_steps))
+      fail(where, "needs 2 to " + std::to_string(max_motion_steps) + " time steps, not " + std::to_string(steps));
+  }
+
   void run() const {
     for (size_t i = 0; i < scene.images.size(); ++i) image(scene.images[i], at("images", i));
     for (size_t i = 0; i < scene.textures.size(); ++i)
@@ -229,7 +235,17 @@ struct Checker {
       if (!inverse_survives_float(scene.instances[i].transform))
         fail(where + ".transform", "too close to singular to invert in single precision, as ray tracing must");
       placed_in_range(scene.instances[i], mesh_boxes[scene.instances[i].mesh], where);
+      motion_steps(scene.instances[i].motion.size(), where + ".motion");
+      for (const mat4& step : scene.instances[i].motion)
+        if (!is_finite(step) || !inverse_survives_float(step)) fail(where + ".motion", "a step's transform is not invertible");
     }
+    for (size_t i = 0; i < scene.meshes.size(); ++i) {
+      const MeshDesc& m = scene.meshes[i];
+      motion_steps(m.motion_positions.size(), at("meshes", i) + ".motion_positions");
+      for (const std::vector<vec3>& step : m.motion_positions)
+        if (step.size() != m.positions.size()) fail(at("meshes", i) + ".motion_positions", "a step's vertex count differs");
+    }
+    for (size_t i = 0; i < scene.cameras.size(); ++i) motion_steps(scene.cameras[i].motion.size(), at("cameras", i) + ".motion");
     for (size_t i = 0; i < scene.shapes.size(); ++i) shape(scene.shapes[i], at("shapes", i));
     for (size_t i = 0; i < scene.strokes.size(); ++i) stroke(scene.strokes[i], at("strokes", i));
     for (size_t i = 0; i < scene.cameras.size(); ++i) camera(scene.cameras[i], at("cameras", i));
