@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "accel/ray.h"
+#include "accel/triangle_point.h"
 #include "lights/area_light.h"
 #include "lights/environment_light.h"
 #include "materials/bsdf_models.h"
@@ -22,22 +23,6 @@ namespace {
 using lane::largest_float;
 using lane::normalize_in_range;
 using lane::select;
-
-// next_float and offset_ray_origin (accel/ray.h) as selects without a branch, which a vector
-// loop needs: the same values.
-[[gnu::always_inline]] inline float step_lane(float coordinate, float normal) {
-  uint32_t bits = std::bit_cast<uint32_t>(coordinate);
-  bool up = normal > 0;
-  uint32_t stepped = bits + (((coordinate > 0) == up) ? 1u : ~0u);
-  stepped = coordinate == 0 ? (up ? 1u : 0x80000001u) : stepped;
-  bool steps = (bits & 0x7f800000u) != 0x7f800000u && normal != 0;
-  return std::bit_cast<float>(steps ? stepped : bits);
-}
-[[gnu::always_inline]] inline vec3 offset_lane(vec3 p, vec3 error, vec3 n, vec3 w) {
-  vec3 away = dot(w, n) < 0 ? -n : n;
-  vec3 po = p + away * std::max(dot(abs(n), error), 1e-20f);
-  return {step_lane(po.x, away.x), step_lane(po.y, away.y), step_lane(po.z, away.z)};
-}
 
 // A BSDF's value towards a light: f * |cos|, the pdf its sampling gives the direction, whether
 // the light sample goes on (the one-path code's test that f is not black), and false in
@@ -114,10 +99,7 @@ template <class Eval>
 template <class Eval>
 [[gnu::always_inline]] inline LaneLight triangle_light_lane(const SurfaceLanes& l, int i, vec3 point, Eval eval) {
   LaneLight s;
-  float ux = l.u_point_x[i], uy = l.u_point_y[i];
-  bool lower = ux < uy;
-  float half_x = ux / 2, half_y = uy / 2;
-  vec2 b = {lower ? half_x : ux - half_y, lower ? uy - half_x : half_y};
+  vec2 b = sample_uniform_triangle({l.u_point_x[i], l.u_point_y[i]});
   vec3 position = vec3{l.light_x[i], l.light_y[i], l.light_z[i]} * (1 - b.x - b.y) +
                   vec3{l.light1_x[i], l.light1_y[i], l.light1_z[i]} * b.x +
                   vec3{l.light2_x[i], l.light2_y[i], l.light2_z[i]} * b.y;
@@ -132,8 +114,7 @@ template <class Eval>
   color3 emitted = {l.intensity_r[i], l.intensity_g[i], l.intensity_b[i]};
   LaneBsdfValue bsdf = eval(s.direction);
   float pdf = l.select_pdf[i] * light_pdf;
-  float a = pdf * pdf, c = bsdf.pdf * bsdf.pdf;  // power_heuristic (sampling/warp.h)
-  float weight = a + c > 0 ? a / (a + c) : 0.0f;
+  float weight = power_heuristic(pdf, bsdf.pdf);
   s.distance = d * (1 - 1e-4f);
   s.lit = (d > 0) & (area > 0) & (cos_light > 1e-7f) & (std::abs(light_pdf) <= largest_float) & emits &
           !lane::black(emitted) & bsdf.nonzero;
@@ -297,11 +278,11 @@ template <bool MayBeInfinite = false>
   o.shadow_target = target;
   if constexpr (MayBeInfinite) {
     bool infinite = !(light.distance <= largest_float);
-    o.shadow_origin = offset_lane(point, error, geometric_normal, lane::select_bits(infinite, light.direction, target - point));
+    o.shadow_origin = offset_ray_origin(point, error, geometric_normal, lane::select_bits(infinite, light.direction, target - point));
     o.shadow_direction = lane::select_bits(infinite, light.direction, target - o.shadow_origin);
     o.infinite = infinite;
   } else {
-    o.shadow_origin = offset_lane(point, error, geometric_normal, target - point);
+    o.shadow_origin = offset_ray_origin(point, error, geometric_normal, target - point);
     o.shadow_direction = target - o.shadow_origin;
   }
   return o;
@@ -332,24 +313,18 @@ template <bool MayBeInfinite = false>
   store_light_outputs(l, i, o);
 }
 
-// The instance transforms of a lane (surface_hit.cpp, fill_triangle_hit): a point and an error
-// bound into the world, and a normal (the inverse's transpose).
-[[gnu::always_inline]] inline vec3 lane_transform_point(const SurfaceLanes& l, int i, vec3 p) {
-  auto m = [&](int r, int c) { return l.to_world[r * 4 + c][i]; };
-  return {m(0, 0) * p.x + m(0, 1) * p.y + m(0, 2) * p.z + m(0, 3), m(1, 0) * p.x + m(1, 1) * p.y + m(1, 2) * p.z + m(1, 3),
-          m(2, 0) * p.x + m(2, 1) * p.y + m(2, 2) * p.z + m(2, 3)};
-}
-[[gnu::always_inline]] inline vec3 lane_abs_transform_vector(const SurfaceLanes& l, int i, vec3 v) {
-  auto m = [&](int r, int c) { return std::abs(l.to_world[r * 4 + c][i]); };
-  return {m(0, 0) * v.x + m(0, 1) * v.y + m(0, 2) * v.z, m(1, 0) * v.x + m(1, 1) * v.y + m(1, 2) * v.z,
-          m(2, 0) * v.x + m(2, 1) * v.y + m(2, 2) * v.z};
-}
-[[gnu::always_inline]] inline vec3 lane_transform_normal(const SurfaceLanes& l, int i, vec3 n) {
-  auto inverse = [&](int r, int c) { return l.to_object[r * 3 + c][i]; };
-  return {inverse(0, 0) * n.x + inverse(1, 0) * n.y + inverse(2, 0) * n.z,
-          inverse(0, 1) * n.x + inverse(1, 1) * n.y + inverse(2, 1) * n.z,
-          inverse(0, 2) * n.x + inverse(1, 2) * n.y + inverse(2, 2) * n.z};
-}
+// A lane's instance transforms (surface_hit.cpp, fill_triangle_hit), as entries for the products
+// of math/matrix_entries.h: to the world, and the inverse's 3x3 part for normals.
+struct LaneToWorld {
+  const SurfaceLanes& l;
+  int i;
+  [[gnu::always_inline]] float operator()(int r, int c) const { return l.to_world[r * 4 + c][i]; }
+};
+struct LaneToObject {
+  const SurfaceLanes& l;
+  int i;
+  [[gnu::always_inline]] float operator()(int r, int c) const { return l.to_object[r * 3 + c][i]; }
+};
 
 // A sphere's or a plane's hit moved onto the surface in double precision, and its error bound
 // (analytic_shapes.cpp, refine_shape_point, from fill_shape_hit's approximate point).
@@ -398,21 +373,18 @@ template <int Hits>
   float b1 = l.b1[i], b2 = l.b2[i];
   vec3 direction = {l.dx[i], l.dy[i], l.dz[i]};
   vec3 e1 = p1 - p0, e2 = p2 - p0;
-  vec3 object_point = p0 + (b1 * e1 + b2 * e2);
-  vec3 object_error = rounding_gamma(5) * (abs(b1 * e1) + abs(b2 * e2)) + rounding_gamma(2) * abs(object_point);
+  TrianglePoint object = triangle_point(p0, e1, e2, b1, b2);
   // Untransformed, Embree's Ng; transformed, the object normal's image.
   vec3 geometric = {l.ngx[i], l.ngy[i], l.ngz[i]};
   bool transformed = false;
-  hit.point = object_point;
-  vec3 error = object_error;
+  hit.point = object.point;
+  vec3 error = object.error;
   if constexpr ((Hits & SurfaceLanes::transformed_hits) != 0) {
     transformed = l.transformed[i] != 0;
-    vec3 translation = {l.to_world[3][i], l.to_world[7][i], l.to_world[11][i]};
-    vec3 world_error = (1 + rounding_gamma(3)) * lane_abs_transform_vector(l, i, object_error) +
-                       rounding_gamma(3) * (lane_abs_transform_vector(l, i, abs(object_point)) + abs(translation));
-    hit.point = lane::select_bits(transformed, lane_transform_point(l, i, object_point), object_point);
-    error = lane::select_bits(transformed, world_error, object_error);
-    geometric = lane::select_bits(transformed, lane_transform_normal(l, i, cross(e1, e2)), geometric);
+    vec3 world_error = world_point_error(LaneToWorld{l, i}, object.point, object.error);
+    hit.point = lane::select_bits(transformed, transform_point_by(LaneToWorld{l, i}, object.point), object.point);
+    error = lane::select_bits(transformed, world_error, object.error);
+    geometric = lane::select_bits(transformed, transform_normal_by(LaneToObject{l, i}, cross(e1, e2)), geometric);
   }
   hit.error = max_component(error);
   if constexpr ((Hits & SurfaceLanes::shape_hits) != 0) {
@@ -428,15 +400,14 @@ template <int Hits>
   bool front_face = dot(direction, hit.geometric_normal) < 0;
   // Interpolated vertex normals, on the geometric normal's side, where they are usable.
   float b0 = 1 - b1 - b2;
-  vec3 interpolated = vec3{l.n0x[i], l.n0y[i], l.n0z[i]} * b0 + vec3{l.n1x[i], l.n1y[i], l.n1z[i]} * b1 +
-                      vec3{l.n2x[i], l.n2y[i], l.n2z[i]} * b2;
+  vec3 interpolated = barycentric_mix(vec3{l.n0x[i], l.n0y[i], l.n0z[i]}, vec3{l.n1x[i], l.n1y[i], l.n1z[i]},
+                                      vec3{l.n2x[i], l.n2y[i], l.n2z[i]}, b0, b1, b2);
   if constexpr ((Hits & SurfaceLanes::transformed_hits) != 0)
-    interpolated = lane::select_bits(transformed, lane_transform_normal(l, i, interpolated), interpolated);
+    interpolated = lane::select_bits(transformed, transform_normal_by(LaneToObject{l, i}, interpolated), interpolated);
   bool has_normals = l.normals[i] == SurfaceLanes::vertex_normals, interpolated_in_range;
   vec3 n = normalize_in_range(interpolated, interpolated_in_range);
-  bool usable = has_normals & lane::finite(n) & (length_squared(n) > 0.5f);
-  vec3 facing = dot(n, hit.geometric_normal) < 0 ? -n : n;
-  vec3 shading_normal = usable ? facing : hit.geometric_normal;
+  bool usable = has_normals & usable_vertex_normal(n);
+  vec3 shading_normal = usable ? on_side_of(n, hit.geometric_normal) : hit.geometric_normal;
   bool given = l.normals[i] == SurfaceLanes::given_normal;
   shading_normal = lane::select_bits(given, vec3{l.n0x[i], l.n0y[i], l.n0z[i]}, shading_normal);
   hit.wo = -normalize_in_range(direction, direction_in_range);
@@ -480,7 +451,7 @@ template <int Hits>
   vec3 local = {l.cosine_x[i], l.cosine_y[i], l.cosine_z[i]};
   bool scatters = valid & (local.z >= lambert_min_cosine);
   vec3 wi = to_world(make_shading_frame(lobe_normal), local);
-  store_bounce(l, i, scatters, offset_lane(hit.point, {hit.error, hit.error, hit.error}, hit.geometric_normal, wi),
+  store_bounce(l, i, scatters, offset_ray_origin(hit.point, {hit.error, hit.error, hit.error}, hit.geometric_normal, wi),
                wi, local.z * inv_pi, albedo);
   LaneLight light = point_light_lane(l, i, hit.point, LambertValue{lobe_normal, albedo, valid});
   store_light_outputs(l, i, light_outputs(l, i, light, hit.point, {hit.error, hit.error, hit.error}, hit.geometric_normal));
@@ -564,7 +535,7 @@ void sample_glossy_specular(SurfaceLanes& l) {
   vec3 wi = to_world(make_shading_frame(lobes.normal), local);
   vec3 point = {l.px[i], l.py[i], l.pz[i]};
   float error = l.error[i];
-  vec3 origin = offset_lane(point, {error, error, error}, {l.gnx[i], l.gny[i], l.gnz[i]}, wi);
+  vec3 origin = offset_ray_origin(point, {error, error, error}, {l.gnx[i], l.gny[i], l.gnz[i]}, wi);
   l.fallback[i] |= (!in_range) & (specular | diffuse);
   store_bounce(l, i, scatters, origin, wi, pdf, weight);
 }
@@ -631,7 +602,7 @@ void sample_phong_bounces(SurfaceLanes& l) {
   weight = select(lobe.mirror, mirror_weight, weight);
   pdf = lobe.mirror ? p_mirror : pdf;
   vec3 wi = to_world(make_shading_frame(lobes.normal), local);
-  store_bounce(l, i, scatters, offset_lane(point, {error, error, error}, geometric, wi), wi, pdf, weight, lobe.mirror);
+  store_bounce(l, i, scatters, offset_ray_origin(point, {error, error, error}, geometric, wi), wi, pdf, weight, lobe.mirror);
 }
 
 // A lane whose light is an emitting triangle, after the first loop: its light sample replaces
