@@ -12,6 +12,7 @@
 #include "materials/bsdf_models.h"
 #include "materials/fresnel.h"
 #include "materials/metallic_roughness.h"
+#include "materials/metallic_roughness_terms.h"
 #include "materials/microfacet.h"
 #include "materials/microfacet_energy.h"
 #include "materials/shading_frame.h"
@@ -52,7 +53,7 @@ struct GlossyLaneLobes {
 }
 // specular_fresnel without glass and iridescence, given the coating's curve at `cos_h`.
 [[gnu::always_inline]] inline color3 glossy_specular_fresnel(const GlossyLaneMaterial& m, float cos_h, float rise) {
-  color3 coating = (m.specular_f0 + (color3{1, 1, 1} - m.specular_f0) * rise) * m.specular;
+  color3 coating = tinted_coating_reflectance(m.specular_f0, rise) * m.specular;
   color3 plastic = lane::select(m.plastic > 0, coating * m.plastic, color3{0, 0, 0});
   color3 metal = lane::select(m.metal > 0, fresnel_schlick(m.base, cos_h) * m.metal, color3{0, 0, 0});
   float glass = 0;
@@ -79,14 +80,11 @@ struct GlossyLaneLobes {
   l.loss_o = 1 - at_o.albedo;
   l.coating_o = coating_passage_of(m.energy, l.loss_o, at_o.rise);
   l.lambda_o = ggx_lambda(l.wo, m.alpha);
-  // selection_weight of the present lobes, with its floor.
-  constexpr float min_lobe_weight = 0.05f;
   bool specular_present = (m.metal > 0) | (m.plastic * m.specular > 0);
-  float specular = std::max(mean(glossy_specular_fresnel(m, cos_o, rise_o)), min_lobe_weight);
-  specular = specular_present ? specular : 0.0f;
+  float specular = selection_weight(specular_present, mean(glossy_specular_fresnel(m, cos_o, rise_o)), false);
   bool diffuse_present = ((m.plastic > 0) & colored) | (max_component(m.energy.multiple_scattering) > 0);
-  float diffuse = std::max(cosine_lobes_albedo(m.energy, m.base, m.plastic, l.coating_o, l.loss_o), min_lobe_weight);
-  diffuse = diffuse_present ? diffuse : 0.0f;
+  float diffuse =
+      selection_weight(diffuse_present, cosine_lobes_albedo(m.energy, m.base, m.plastic, l.coating_o, l.loss_o), false);
   float transmitted = 0;
   float total = specular + diffuse + transmitted;
   l.valid = valid & !(total <= 0);  // as the model's test: a NaN total leaves it valid
@@ -116,11 +114,11 @@ template <bool WithPdf>
   in_range = h_in_range | !(upper & (l.p_specular > 0));
   float density = ggx_distribution(h, m.alpha);
   float rise = m.plastic > 0 ? glossy_coating_rise(m, cos_h) : 0.0f;
-  float masking_shadowing = 1 / (1 + l.lambda_o + ggx_lambda(wi, m.alpha));
+  float masking_shadowing = ggx_masking_shadowing_of(l.lambda_o, ggx_lambda(wi, m.alpha));
   color3 reflected = glossy_specular_fresnel(m, cos_h, rise) * (density * masking_shadowing / (4 * l.wo.z));
   f = lane::select(reflects, f + reflected, f);
   if constexpr (WithPdf) {
-    float visible = 1 / (1 + l.lambda_o) * std::max(0.0f, dot(l.wo, h)) * density / l.wo.z;
+    float visible = ggx_visible_density(l.wo, h, l.lambda_o, density);
     pdf = reflects ? pdf + l.p_specular * (visible / (4 * cos_h)) : pdf;
     pdf = lane::zero_unless(lane::finite(pdf), pdf);
   }

@@ -27,6 +27,14 @@ namespace radiant {
   float lambda = (std::sqrt(1 + alpha * alpha * tan2) - 1) / 2;
   return cos2 <= 0 ? std::numeric_limits<float>::infinity() : lambda;
 }
+// Height-correlated masking-shadowing G2 from the Lambdas along wo and wi.
+[[gnu::always_inline]] inline float ggx_masking_shadowing_of(float lambda_o, float lambda_i) {
+  return 1 / (1 + lambda_o + lambda_i);
+}
+// Density of the visible normal m given Lambda along wo and D(m): G1(wo) * max(0, wo.m) * D(m) / wo.z.
+[[gnu::always_inline]] inline float ggx_visible_density(vec3 wo, vec3 m, float lambda_o, float density) {
+  return 1 / (1 + lambda_o) * std::max(0.0f, dot(wo, m)) * density / wo.z;
+}
 float ggx_masking(vec3 w, float alpha);
 // Height-correlated masking-shadowing G2(wo, wi).
 float ggx_masking_shadowing(vec3 wo, vec3 wi, float alpha);
