@@ -2,7 +2,6 @@
 // materials/metallic_roughness_lane.h and Phong, read from the lanes' arrays.
 #pragma once
 
-#include "integrators/surface_lanes.h"
 #include "materials/bsdf_models.h"
 #include "materials/metallic_roughness_lane.h"
 #include "materials/shading_frame.h"
@@ -10,7 +9,8 @@
 
 namespace radiant {
 
-// Internal to the surface lanes: included by surface_lanes.cpp alone.
+// Internal to the surface lanes: included by surface_lanes.cpp alone, after surface_lanes.h
+// (SurfaceLanes), whose unit these files are part of.
 namespace {
 
 using lane::largest_float;

@@ -6,14 +6,14 @@
 
 #include "accel/ray.h"
 #include "accel/triangle_point.h"
-#include "integrators/surface_lanes.h"
 #include "math/dvec3.h"
 #include "math/lane.h"
 #include "math/matrix_entries.h"
 
 namespace radiant {
 
-// Internal to the surface lanes: included by surface_lanes.cpp alone.
+// Internal to the surface lanes: included by surface_lanes.cpp alone, after surface_lanes.h
+// (SurfaceLanes), whose unit these files are part of.
 namespace {
 
 using lane::largest_float;

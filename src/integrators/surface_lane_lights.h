@@ -8,14 +8,14 @@
 
 #include "accel/ray.h"
 #include "integrators/surface_lane_bsdfs.h"
-#include "integrators/surface_lanes.h"
 #include "lights/delta_light.h"
 #include "math/lane.h"
 #include "sampling/warp.h"
 
 namespace radiant {
 
-// Internal to the surface lanes: included by surface_lanes.cpp alone.
+// Internal to the surface lanes: included by surface_lanes.cpp alone, after surface_lanes.h
+// (SurfaceLanes), whose unit these files are part of.
 namespace {
 
 using lane::largest_float;
