@@ -3,6 +3,7 @@
 
 #include "accel/analytic_shapes.h"
 #include "accel/scene_accel.h"
+#include "accel/triangle_point.h"
 
 namespace radiant {
 
@@ -10,7 +11,7 @@ namespace {
 
 template <class T>
 T interpolate(const std::vector<T>& values, const uint32_t* tri, float b0, float b1, float b2) {
-  return values[tri[0]] * b0 + values[tri[1]] * b1 + values[tri[2]] * b2;
+  return barycentric_mix(values[tri[0]], values[tri[1]], values[tri[2]], b0, b1, b2);
 }
 vec4 interpolate4(const std::vector<vec4>& v, const uint32_t* tri, float b0, float b1, float b2) {
   const vec4 &a = v[tri[0]], &b = v[tri[1]], &c = v[tri[2]];
@@ -66,24 +67,14 @@ void fill_triangle_hit(const SceneAccel& accel, const HitId& id, float time, Sur
     p1 = position_at_time(mesh.motion_positions, tri[1], time);
     p2 = position_at_time(mesh.motion_positions, tri[2], time);
   }
-
-  // Barycentric interpolation is far more accurate than origin + t * direction (pbrt 6.8.4).
-  // Written from a vertex along the edges, its rounding scales with the triangle's size, not
-  // with its distance from the origin: only the final addition to p0 rounds at p0's magnitude
-  // (edges of nearby vertices subtract exactly; their bound is kept anyway). A barycentric
-  // error moves the point within the plane, which no offset needs to cover.
   vec3 e1 = p1 - p0, e2 = p2 - p0;
-  vec3 along_edges = b1 * e1 + b2 * e2;
-  vec3 object_point = p0 + along_edges;
-  vec3 object_error = rounding_gamma(5) * (abs(b1 * e1) + abs(b2 * e2)) + rounding_gamma(2) * abs(object_point);
+  TrianglePoint object = triangle_point(p0, e1, e2, b1, b2);
   bool identity = placement.identity;
-  vec3 error = object_error;
-  hit.position = object_point;
+  vec3 error = object.error;
+  hit.position = object.point;
   if (!identity) {
-    hit.position = transform_point(to_world, object_point);
-    vec3 translation = {to_world.m[0][3], to_world.m[1][3], to_world.m[2][3]};
-    error = (1 + rounding_gamma(3)) * abs_transform_vector(to_world, object_error) +
-            rounding_gamma(3) * (abs_transform_vector(to_world, abs(object_point)) + abs(translation));
+    hit.position = transform_point(to_world, object.point);
+    error = world_point_error(Mat4Entries{to_world}, object.point, object.error);
   }
   // Embree's own ray-plane arithmetic mixes all three coordinates, so a surface lying in a
   // coordinate plane (error 0 along its normal) still needs an offset: use the largest bound
@@ -105,10 +96,7 @@ void fill_triangle_hit(const SceneAccel& accel, const HitId& id, float time, Sur
   if (!mesh.normals.empty()) {
     vec3 n = interpolate(mesh.normals, tri, b0, b1, b2);
     n = normalize(identity ? n : transform_normal(to_object, n));
-    if (is_finite(n) && length_squared(n) > 0.5f) {
-      // Interpolated normals live on the geometric normal's side.
-      hit.shading_normal = dot(n, geometric_normal) < 0 ? -n : n;
-    }
+    if (usable_vertex_normal(n)) hit.shading_normal = on_side_of(n, geometric_normal);
   }
   if (!mesh.tangents.empty()) {
     vec4 t = interpolate4(mesh.tangents, tri, b0, b1, b2);

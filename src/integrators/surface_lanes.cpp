@@ -1,18 +1,19 @@
 #include "integrators/surface_lanes.h"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <limits>
 
 #include "accel/ray.h"
+#include "integrators/surface_lane_bsdfs.h"
+#include "integrators/surface_lane_hit.h"
+#include "integrators/surface_lane_lights.h"
 #include "lights/area_light.h"
 #include "lights/environment_light.h"
 #include "materials/bsdf_models.h"
 #include "materials/metallic_roughness_lane.h"
 #include "materials/microfacet.h"
 #include "materials/shading_frame.h"
-#include "math/dvec3.h"
 #include "sampling/warp.h"
 
 namespace radiant {
@@ -22,448 +23,6 @@ namespace {
 using lane::largest_float;
 using lane::normalize_in_range;
 using lane::select;
-
-// next_float and offset_ray_origin (accel/ray.h) as selects without a branch, which a vector
-// loop needs: the same values.
-[[gnu::always_inline]] inline float step_lane(float coordinate, float normal) {
-  uint32_t bits = std::bit_cast<uint32_t>(coordinate);
-  bool up = normal > 0;
-  uint32_t stepped = bits + (((coordinate > 0) == up) ? 1u : ~0u);
-  stepped = coordinate == 0 ? (up ? 1u : 0x80000001u) : stepped;
-  bool steps = (bits & 0x7f800000u) != 0x7f800000u && normal != 0;
-  return std::bit_cast<float>(steps ? stepped : bits);
-}
-[[gnu::always_inline]] inline vec3 offset_lane(vec3 p, vec3 error, vec3 n, vec3 w) {
-  vec3 away = dot(w, n) < 0 ? -n : n;
-  vec3 po = p + away * std::max(dot(abs(n), error), 1e-20f);
-  return {step_lane(po.x, away.x), step_lane(po.y, away.y), step_lane(po.z, away.z)};
-}
-
-// A BSDF's value towards a light: f * |cos|, the pdf its sampling gives the direction, whether
-// the light sample goes on (the one-path code's test that f is not black), and false in
-// `in_range` where the lane must fall back.
-struct LaneBsdfValue {
-  color3 f_cos;
-  float pdf;
-  bool nonzero;
-  bool in_range = true;
-};
-
-// What a light sample leaves for its shadow ray: the direction to the light, how far the ray
-// goes, the contribution before the throughput, whether there is one, and the BSDF's in_range.
-struct LaneLight {
-  vec3 direction;
-  float distance;
-  color3 contribution;
-  bool lit;
-  bool in_range;
-};
-
-// A point light without range (delta_light.h, sample_delta_light) and its contribution
-// (path.cpp, sample_one_light). `eval(direction)` is the BSDF's LaneBsdfValue (LambertValue or
-// GlossyValue: a lambda's call GCC may leave out of line, and the loop is then not vectorised).
-template <class Eval>
-[[gnu::always_inline]] inline LaneLight point_light_lane(const SurfaceLanes& l, int i, vec3 point, Eval eval) {
-  LaneLight s;
-  vec3 to_light = vec3{l.light_x[i], l.light_y[i], l.light_z[i]} - point;
-  float d = length(to_light);
-  s.direction = to_light * (1 / d);
-  s.distance = d;
-  float attenuation = l.kc[i] + l.kl[i] * d + l.kq[i] * d * d;
-  color3 irradiance = color3{l.intensity_r[i], l.intensity_g[i], l.intensity_b[i]} * (1.0f / attenuation);
-  LaneBsdfValue bsdf = eval(s.direction);
-  s.lit = (d > 0) & (attenuation > 0) & bsdf.nonzero;
-  s.in_range = bsdf.in_range;
-  s.contribution = bsdf.f_cos * irradiance * color3{1, 1, 1} / l.select_pdf[i];
-  return s;
-}
-
-// Any delta light (delta_light.cpp, sample_any_delta_light): a point light with the glTF spot's
-// smooth cone or a classic spot's power of the cosine (spot_powers) and the glTF range's window
-// where it has them, or a directional light. The point light's own numbers where it has
-// neither: falloff 1 divided by the attenuation is 1 / attenuation to the bit.
-template <class Eval>
-[[gnu::always_inline]] inline LaneLight shaped_delta_light_lane(const SurfaceLanes& l, int i, vec3 point, Eval eval) {
-  LaneLight s;
-  vec3 to_light = vec3{l.light_x[i], l.light_y[i], l.light_z[i]} - point;
-  float d = length(to_light);
-  vec3 towards = to_light * (1 / d);
-  float attenuation = l.kc[i] + l.kl[i] * d + l.kq[i] * d * d;
-  vec3 axis = {l.spot_x[i], l.spot_y[i], l.spot_z[i]};
-  float t = std::clamp((dot(axis, -towards) - l.cos_outer[i]) * l.cone_scale[i], 0.0f, 1.0f);
-  float falloff = l.spot[i] != 0 ? t * t : 1.0f;
-  float spot_power = l.spot_power[i];  // loaded in every lane: a conditional load kept the loop scalar
-  falloff = l.classic_spot[i] != 0 ? spot_power : falloff;
-  float r = d / l.range[i];
-  float window = std::clamp(1 - r * r * r * r, 0.0f, 1.0f);
-  falloff = l.range[i] > 0 ? falloff * window : falloff;
-  color3 intensity = {l.intensity_r[i], l.intensity_g[i], l.intensity_b[i]};
-  bool directional = l.directional[i] != 0;
-  s.direction = lane::select_bits(directional, -axis, towards);
-  s.distance = directional ? std::numeric_limits<float>::infinity() : d;
-  color3 irradiance = lane::select_bits(directional, intensity, intensity * (falloff / attenuation));
-  LaneBsdfValue bsdf = eval(s.direction);
-  s.lit = (directional | ((d > 0) & (attenuation > 0) & (falloff > 0))) & bsdf.nonzero;
-  s.in_range = bsdf.in_range;
-  s.contribution = bsdf.f_cos * irradiance * color3{1, 1, 1} / l.select_pdf[i];
-  return s;
-}
-
-// An emitting triangle (area_light.cpp, sample_area_light and area_light_emits; Heitz's
-// mapping of sample_uniform_triangle) and its contribution with MIS against the BSDF's sampling.
-template <class Eval>
-[[gnu::always_inline]] inline LaneLight triangle_light_lane(const SurfaceLanes& l, int i, vec3 point, Eval eval) {
-  LaneLight s;
-  float ux = l.u_point_x[i], uy = l.u_point_y[i];
-  bool lower = ux < uy;
-  float half_x = ux / 2, half_y = uy / 2;
-  vec2 b = {lower ? half_x : ux - half_y, lower ? uy - half_x : half_y};
-  vec3 position = vec3{l.light_x[i], l.light_y[i], l.light_z[i]} * (1 - b.x - b.y) +
-                  vec3{l.light1_x[i], l.light1_y[i], l.light1_z[i]} * b.x +
-                  vec3{l.light2_x[i], l.light2_y[i], l.light2_z[i]} * b.y;
-  vec3 light_normal = {l.light_nx[i], l.light_ny[i], l.light_nz[i]};
-  vec3 to_light = position - point;
-  float d = length(to_light);
-  s.direction = to_light / d;
-  float area = l.light_area[i];
-  float cos_light = std::abs(dot(light_normal, s.direction));
-  float light_pdf = d * d / (area * cos_light);
-  bool emits = (l.two_sided[i] != 0) | (dot(light_normal, -s.direction) > 0);
-  color3 emitted = {l.intensity_r[i], l.intensity_g[i], l.intensity_b[i]};
-  LaneBsdfValue bsdf = eval(s.direction);
-  float pdf = l.select_pdf[i] * light_pdf;
-  float a = pdf * pdf, c = bsdf.pdf * bsdf.pdf;  // power_heuristic (sampling/warp.h)
-  float weight = a + c > 0 ? a / (a + c) : 0.0f;
-  s.distance = d * (1 - 1e-4f);
-  s.lit = (d > 0) & (area > 0) & (cos_light > 1e-7f) & (std::abs(light_pdf) <= largest_float) & emits &
-          !lane::black(emitted) & bsdf.nonzero;
-  s.contribution = bsdf.f_cos * emitted * color3{1, 1, 1} * (weight / pdf);
-  s.in_range = bsdf.in_range;
-  return s;
-}
-
-// The Lambert lobes' value towards `wi` (eval_world), `normal` facing wo.
-struct LambertValue {
-  vec3 normal;
-  color3 albedo;
-  bool valid;
-  [[gnu::always_inline]] LaneBsdfValue operator()(vec3 wi) const {
-    float cos_i = dot(normal, wi);
-    color3 f_cos = albedo * (inv_pi * cos_i);
-    return {f_cos, cos_i * inv_pi, bool(valid & (cos_i >= lambert_min_cosine) & !lane::black(f_cos))};
-  }
-};
-
-// A glossy lane's material and its lobes as the first loop left them.
-[[gnu::always_inline]] inline GlossyLaneMaterial glossy_material(const SurfaceLanes& l, int i) {
-  return {{l.albedo_r[i], l.albedo_g[i], l.albedo_b[i]},
-          l.alpha[i],
-          l.ior[i],
-          l.ior_f0[i],
-          l.metal[i],
-          l.plastic[i],
-          l.specular[i],
-          {l.specular_f0_r[i], l.specular_f0_g[i], l.specular_f0_b[i]},
-          {l.albedo_roughness[i], l.albedo_ior[i],
-           {l.multiple_r[i], l.multiple_g[i], l.multiple_b[i]}, l.multiple_normalization[i],
-           l.coating_reflect[i], l.coating_rise[i], l.coating_multiple[i], l.diffuse_normalization[i]}};
-}
-[[gnu::always_inline]] inline GlossyLaneLobes stored_glossy_lobes(const SurfaceLanes& l, int i) {
-  return {{l.lobe_nx[i], l.lobe_ny[i], l.lobe_nz[i]},
-          {l.wo_x[i], l.wo_y[i], l.wo_z[i]},
-          l.p_specular[i],
-          l.p_diffuse[i],
-          l.coating_o[i],
-          l.loss_o[i],
-          l.lambda_o[i],
-          l.valid[i] != 0};
-}
-// The metallic-roughness lobes' value towards the world direction `wi` (Bsdf::eval_framed),
-// the albedo tables' values there looked up ahead (GlossyRecord, glossy_light_albedos).
-template <bool WithPdf>
-struct GlossyValue {
-  GlossyLaneMaterial m;
-  GlossyLaneLobes lobes;
-  MicrofacetAlbedos at_i;
-  [[gnu::always_inline]] LaneBsdfValue operator()(vec3 wi) const {
-    float pdf = 0;
-    bool in_range;
-    color3 f = eval_glossy_lane<WithPdf>(m, lobes, to_local(make_shading_frame(lobes.normal), wi), at_i, pdf, in_range);
-    return {f, pdf, !lane::black(f), in_range};
-  }
-};
-// In a light loop's first pass over glossy lanes: records the local cosine of the light's
-// direction into `cosine`, for glossy_light_albedos; the pass's light sample is discarded.
-struct GlossyRecord {
-  vec3 normal;  // the lobes' frame's z
-  float* cosine;
-  [[gnu::always_inline]] LaneBsdfValue operator()(vec3 wi) const {
-    *cosine = to_local(make_shading_frame(normal), wi).z;
-    return {{0, 0, 0}, 0, false};
-  }
-};
-
-// A Phong lane's lobes (phong_bsdf.cpp, make_phong_lobes: facing_frame without a tangent).
-struct PhongLaneLobes {
-  vec3 normal;  // the frame's z: the shading normal on wo's side
-  vec3 wo;      // local
-  bool valid;
-};
-[[gnu::always_inline]] inline PhongLaneLobes make_phong_lane_lobes(vec3 n, vec3 wo) {
-  PhongLaneLobes lobes;
-  lobes.normal = select(dot(n, wo) < 0, -n, n);
-  lobes.wo = to_local(make_shading_frame(lobes.normal), wo);
-  lobes.valid = (lobes.wo.z > 1e-7f) & lane::finite(lobes.wo);  // a lane material always scatters
-  return lobes;
-}
-[[gnu::always_inline]] inline PhongLaneLobes stored_phong_lobes(const SurfaceLanes& l, int i) {
-  return {{l.lobe_nx[i], l.lobe_ny[i], l.lobe_nz[i]}, {l.wo_x[i], l.wo_y[i], l.wo_z[i]}, l.valid[i] != 0};
-}
-// The cosine phong_lobe raises to the exponent: between local `wi` and the mirror of wo.
-[[gnu::always_inline]] inline float phong_cosine(const PhongLaneLobes& lobes, vec3 wi) {
-  return dot(wi, reflect_local(lobes.wo));
-}
-// A Phong lane's eval_local and pdf_local at a local direction whose lobe power (cos^n,
-// phong_lobe_power) is `power`.
-[[gnu::always_inline]] inline color3 eval_phong_lane(const SurfaceLanes& l, int i, const PhongLaneLobes& lobes,
-                                                     vec3 wi, float power, float& pdf) {
-  bool in = lobes.valid & !(wi.z < 1e-7f);
-  color3 kd = {l.albedo_r[i], l.albedo_g[i], l.albedo_b[i]}, ks = {l.ks_r[i], l.ks_g[i], l.ks_b[i]};
-  float exponent = l.exponent[i], p_diffuse = l.p_diffuse[i], p_glossy = l.p_specular[i];
-  color3 f = kd * inv_pi;
-  f = select(p_glossy > 0, f + ks * ((exponent + 2) / (2 * pi) * power), f);
-  f = f * wi.z;
-  float diffuse_pdf = p_diffuse * wi.z * inv_pi;
-  pdf = p_glossy > 0 ? diffuse_pdf + p_glossy * (exponent + 1) / (2 * pi) * power : diffuse_pdf;
-  pdf = lane::zero_unless(in, pdf);
-  return {lane::zero_unless(in, f.x), lane::zero_unless(in, f.y), lane::zero_unless(in, f.z)};
-}
-// The Phong lobes' value towards the world direction `wi` (Bsdf::eval_framed), the lobe power
-// there worked out ahead (phong_power).
-struct PhongValue {
-  const SurfaceLanes& l;
-  int i;
-  PhongLaneLobes lobes;
-  float power;
-  [[gnu::always_inline]] LaneBsdfValue operator()(vec3 wi) const {
-    float pdf;
-    color3 f = eval_phong_lane(l, i, lobes, to_local(make_shading_frame(lobes.normal), wi), power, pdf);
-    return {f, pdf, !lane::black(f)};
-  }
-};
-// In a light loop's first pass over Phong lanes: records the cosine of the light's direction
-// into `cosine`, for phong_powers to raise; the pass's light sample is discarded.
-struct PhongRecord {
-  PhongLaneLobes lobes;
-  float* cosine;
-  [[gnu::always_inline]] LaneBsdfValue operator()(vec3 wi) const {
-    *cosine = phong_cosine(lobes, to_local(make_shading_frame(lobes.normal), wi));
-    return {{0, 0, 0}, 0, false};
-  }
-};
-
-// The BSDF a lane of model `Model` evaluates towards a light (a Phong lane's power at the light
-// worked out ahead); `WithPdf` where the light's MIS needs the glossy lobes' pdf.
-template <RenderContext::LaneModel Model, bool WithPdf>
-[[gnu::always_inline]] inline auto lane_bsdf(const SurfaceLanes& l, int i) {
-  using LaneModel = RenderContext::LaneModel;
-  if constexpr (Model == LaneModel::glossy) {
-    return GlossyValue<WithPdf>{glossy_material(l, i), stored_glossy_lobes(l, i), {l.albedo_i[i], l.rise_i[i]}};
-  } else if constexpr (Model == LaneModel::phong) {
-    return PhongValue{l, i, stored_phong_lobes(l, i), l.phong_power[i]};
-  } else {
-    return LambertValue{{l.lobe_nx[i], l.lobe_ny[i], l.lobe_nz[i]}, {l.albedo_r[i], l.albedo_g[i], l.albedo_b[i]},
-                        l.valid[i] != 0};
-  }
-}
-
-// A light sample's outputs: whether it lights the point, its contribution through the
-// throughput, and its shadow ray (as set_shadow_ray: spawn_ray_to towards the light, or with
-// `MayBeInfinite` and an infinite distance, spawn_ray along the direction) with the point it
-// ends at (shadow_target's, for a walk past see-through occluders; any value when infinite).
-struct LightOutputs {
-  int32_t lit;
-  color3 contribution;
-  vec3 shadow_origin, shadow_direction, shadow_target;
-  int32_t infinite = 0;
-};
-template <bool MayBeInfinite = false>
-[[gnu::always_inline]] inline LightOutputs light_outputs(const SurfaceLanes& l, int i, const LaneLight& light,
-                                                         vec3 point, vec3 error, vec3 geometric_normal) {
-  LightOutputs o;
-  o.lit = light.lit;
-  o.contribution = color3{l.throughput_r[i], l.throughput_g[i], l.throughput_b[i]} * light.contribution;
-  vec3 target = point + light.direction * light.distance;
-  o.shadow_target = target;
-  if constexpr (MayBeInfinite) {
-    bool infinite = !(light.distance <= largest_float);
-    o.shadow_origin = offset_lane(point, error, geometric_normal, lane::select_bits(infinite, light.direction, target - point));
-    o.shadow_direction = lane::select_bits(infinite, light.direction, target - o.shadow_origin);
-    o.infinite = infinite;
-  } else {
-    o.shadow_origin = offset_lane(point, error, geometric_normal, target - point);
-    o.shadow_direction = target - o.shadow_origin;
-  }
-  return o;
-}
-[[gnu::always_inline]] inline LightOutputs stored_light_outputs(const SurfaceLanes& l, int i) {
-  return {l.lit[i], {l.light_r[i], l.light_g[i], l.light_b[i]}, {l.shadow_ox[i], l.shadow_oy[i], l.shadow_oz[i]},
-          {l.shadow_dx[i], l.shadow_dy[i], l.shadow_dz[i]}, {l.shadow_tx[i], l.shadow_ty[i], l.shadow_tz[i]},
-          l.shadow_infinite[i]};
-}
-[[gnu::always_inline]] inline void store_light_outputs(SurfaceLanes& l, int i, const LightOutputs& o) {
-  l.lit[i] = o.lit;
-  l.light_r[i] = o.contribution.x, l.light_g[i] = o.contribution.y, l.light_b[i] = o.contribution.z;
-  l.shadow_ox[i] = o.shadow_origin.x, l.shadow_oy[i] = o.shadow_origin.y, l.shadow_oz[i] = o.shadow_origin.z;
-  l.shadow_dx[i] = o.shadow_direction.x, l.shadow_dy[i] = o.shadow_direction.y, l.shadow_dz[i] = o.shadow_direction.z;
-  l.shadow_tx[i] = o.shadow_target.x, l.shadow_ty[i] = o.shadow_target.y, l.shadow_tz[i] = o.shadow_target.z;
-  l.shadow_infinite[i] = o.infinite;
-}
-// Where `replaces`, the outputs `o` of a later light loop; elsewhere what the lane had. Stored
-// in every lane: a conditional store is a branch without AVX2's masked stores.
-[[gnu::always_inline]] inline void store_light_outputs_where(SurfaceLanes& l, int i, bool replaces, LightOutputs o) {
-  LightOutputs kept = stored_light_outputs(l, i);
-  o.lit = replaces ? o.lit : kept.lit;
-  o.contribution = select(replaces, o.contribution, kept.contribution);
-  o.shadow_origin = select(replaces, o.shadow_origin, kept.shadow_origin);
-  o.shadow_direction = select(replaces, o.shadow_direction, kept.shadow_direction);
-  o.shadow_target = select(replaces, o.shadow_target, kept.shadow_target);
-  o.infinite = replaces ? o.infinite : kept.infinite;
-  store_light_outputs(l, i, o);
-}
-
-// The instance transforms of a lane (surface_hit.cpp, fill_triangle_hit): a point and an error
-// bound into the world, and a normal (the inverse's transpose).
-[[gnu::always_inline]] inline vec3 lane_transform_point(const SurfaceLanes& l, int i, vec3 p) {
-  auto m = [&](int r, int c) { return l.to_world[r * 4 + c][i]; };
-  return {m(0, 0) * p.x + m(0, 1) * p.y + m(0, 2) * p.z + m(0, 3), m(1, 0) * p.x + m(1, 1) * p.y + m(1, 2) * p.z + m(1, 3),
-          m(2, 0) * p.x + m(2, 1) * p.y + m(2, 2) * p.z + m(2, 3)};
-}
-[[gnu::always_inline]] inline vec3 lane_abs_transform_vector(const SurfaceLanes& l, int i, vec3 v) {
-  auto m = [&](int r, int c) { return std::abs(l.to_world[r * 4 + c][i]); };
-  return {m(0, 0) * v.x + m(0, 1) * v.y + m(0, 2) * v.z, m(1, 0) * v.x + m(1, 1) * v.y + m(1, 2) * v.z,
-          m(2, 0) * v.x + m(2, 1) * v.y + m(2, 2) * v.z};
-}
-[[gnu::always_inline]] inline vec3 lane_transform_normal(const SurfaceLanes& l, int i, vec3 n) {
-  auto inverse = [&](int r, int c) { return l.to_object[r * 3 + c][i]; };
-  return {inverse(0, 0) * n.x + inverse(1, 0) * n.y + inverse(2, 0) * n.z,
-          inverse(0, 1) * n.x + inverse(1, 1) * n.y + inverse(2, 1) * n.z,
-          inverse(0, 2) * n.x + inverse(1, 2) * n.y + inverse(2, 2) * n.z};
-}
-
-// A sphere's or a plane's hit moved onto the surface in double precision, and its error bound
-// (analytic_shapes.cpp, refine_shape_point, from fill_shape_hit's approximate point).
-struct ShapePoint {
-  vec3 point;
-  float error;
-};
-[[gnu::always_inline]] inline ShapePoint refine_shape_lane(const SurfaceLanes& l, int i, vec3 direction) {
-  vec3 approximate = vec3{l.ray_ox[i], l.ray_oy[i], l.ray_oz[i]} + direction * l.ray_t[i];
-  dvec3 p = to_double(approximate), c = to_double({l.center_x[i], l.center_y[i], l.center_z[i]});
-  float radius = l.radius[i];
-  bool sphere = l.shape[i] == SurfaceLanes::sphere_hit;
-  dvec3 local = p - c;
-  double len = std::sqrt(dot(local, local));
-  dvec3 on_sphere = c + local * (double(radius) / len);
-  dvec3 n = to_double({l.axis_x[i], l.axis_y[i], l.axis_z[i]});
-  dvec3 on_plane = p - n * dot(p - c, n);
-  // Chosen after rounding to float, by 32-bit masks: SSE2 has no 64-bit compare to make double
-  // masks from, and as ternaries GCC branches. len > 0 exactly when its float is: p and c are
-  // floats, so a nonzero len is at least their smallest nonzero difference, a float.
-  bool moves = float(len) > 0;
-  vec3 sphere_point = lane::select_bits(moves, to_float(on_sphere), approximate);
-  ShapePoint s;
-  s.point = lane::select_bits(sphere, sphere_point, to_float(on_plane));
-  s.error = max_component(abs(s.point)) * rounding_gamma(4);
-  s.error = lane::select_bits(sphere, s.error + std::abs(radius) * rounding_gamma(4), s.error);
-  return s;
-}
-
-// A lane's hit: make_surface_hit for a triangle (surface_hit.cpp, fill_triangle_hit) and
-// make_hit_shading. `in_range` is false where a normalize() the one-path code does would have
-// rescaled. `Hits`: which kinds of hit beside untransformed triangles the lanes hold
-// (SurfaceLanes::hit_kinds), each decoded only where some lane needs it.
-struct LaneHit {
-  vec3 point;
-  float error;  // the position's error bound, the same along every axis
-  vec3 geometric_normal;
-  vec3 normal;  // the shading normal facing the ray (HitShading::normal)
-  vec3 wo;
-  bool in_range;
-};
-template <int Hits>
-[[gnu::always_inline]] inline LaneHit decode_lane(const SurfaceLanes& l, int i) {
-  LaneHit hit;
-  vec3 p0 = {l.p0x[i], l.p0y[i], l.p0z[i]}, p1 = {l.p1x[i], l.p1y[i], l.p1z[i]}, p2 = {l.p2x[i], l.p2y[i], l.p2z[i]};
-  float b1 = l.b1[i], b2 = l.b2[i];
-  vec3 direction = {l.dx[i], l.dy[i], l.dz[i]};
-  vec3 e1 = p1 - p0, e2 = p2 - p0;
-  vec3 object_point = p0 + (b1 * e1 + b2 * e2);
-  vec3 object_error = rounding_gamma(5) * (abs(b1 * e1) + abs(b2 * e2)) + rounding_gamma(2) * abs(object_point);
-  // Untransformed, Embree's Ng; transformed, the object normal's image.
-  vec3 geometric = {l.ngx[i], l.ngy[i], l.ngz[i]};
-  bool transformed = false;
-  hit.point = object_point;
-  vec3 error = object_error;
-  if constexpr ((Hits & SurfaceLanes::transformed_hits) != 0) {
-    transformed = l.transformed[i] != 0;
-    vec3 translation = {l.to_world[3][i], l.to_world[7][i], l.to_world[11][i]};
-    vec3 world_error = (1 + rounding_gamma(3)) * lane_abs_transform_vector(l, i, object_error) +
-                       rounding_gamma(3) * (lane_abs_transform_vector(l, i, abs(object_point)) + abs(translation));
-    hit.point = lane::select_bits(transformed, lane_transform_point(l, i, object_point), object_point);
-    error = lane::select_bits(transformed, world_error, object_error);
-    geometric = lane::select_bits(transformed, lane_transform_normal(l, i, cross(e1, e2)), geometric);
-  }
-  hit.error = max_component(error);
-  if constexpr ((Hits & SurfaceLanes::shape_hits) != 0) {
-    bool shape = l.shape[i] != SurfaceLanes::triangle_hit;
-    ShapePoint refined = refine_shape_lane(l, i, direction);
-    hit.point = lane::select_bits(shape, refined.point, hit.point);
-    hit.error = lane::select_bits(shape, refined.error, hit.error);
-  }
-  bool normal_in_range, direction_in_range;
-  hit.geometric_normal = normalize_in_range(geometric, normal_in_range);
-  if constexpr ((Hits & SurfaceLanes::transformed_hits) != 0)
-    hit.geometric_normal = lane::select_bits(transformed, hit.geometric_normal * l.orientation[i], hit.geometric_normal);
-  bool front_face = dot(direction, hit.geometric_normal) < 0;
-  // Interpolated vertex normals, on the geometric normal's side, where they are usable.
-  float b0 = 1 - b1 - b2;
-  vec3 interpolated = vec3{l.n0x[i], l.n0y[i], l.n0z[i]} * b0 + vec3{l.n1x[i], l.n1y[i], l.n1z[i]} * b1 +
-                      vec3{l.n2x[i], l.n2y[i], l.n2z[i]} * b2;
-  if constexpr ((Hits & SurfaceLanes::transformed_hits) != 0)
-    interpolated = lane::select_bits(transformed, lane_transform_normal(l, i, interpolated), interpolated);
-  bool has_normals = l.normals[i] == SurfaceLanes::vertex_normals, interpolated_in_range;
-  vec3 n = normalize_in_range(interpolated, interpolated_in_range);
-  bool usable = has_normals & lane::finite(n) & (length_squared(n) > 0.5f);
-  vec3 facing = dot(n, hit.geometric_normal) < 0 ? -n : n;
-  vec3 shading_normal = usable ? facing : hit.geometric_normal;
-  bool given = l.normals[i] == SurfaceLanes::given_normal;
-  shading_normal = lane::select_bits(given, vec3{l.n0x[i], l.n0y[i], l.n0z[i]}, shading_normal);
-  hit.wo = -normalize_in_range(direction, direction_in_range);
-  hit.normal = front_face ? shading_normal : -shading_normal;
-  hit.in_range = normal_in_range & direction_in_range & (interpolated_in_range | !has_normals);
-  return hit;
-}
-
-// What every lane stores of its hit for the outputs and the later loops.
-[[gnu::always_inline]] inline void store_hit(SurfaceLanes& l, int i, const LaneHit& hit, vec3 lobe_normal, bool valid) {
-  l.fallback[i] = !hit.in_range;
-  l.px[i] = hit.point.x, l.py[i] = hit.point.y, l.pz[i] = hit.point.z;
-  l.nx[i] = hit.normal.x, l.ny[i] = hit.normal.y, l.nz[i] = hit.normal.z;
-  l.gnx[i] = hit.geometric_normal.x, l.gny[i] = hit.geometric_normal.y, l.gnz[i] = hit.geometric_normal.z;
-  l.error[i] = hit.error;
-  l.lobe_nx[i] = lobe_normal.x, l.lobe_ny[i] = lobe_normal.y, l.lobe_nz[i] = lobe_normal.z;
-  l.valid[i] = valid;
-}
-[[gnu::always_inline]] inline void store_bounce(SurfaceLanes& l, int i, bool scatters, vec3 origin, vec3 wi,
-                                                float pdf, color3 weight, bool delta = false) {
-  l.scatters[i] = scatters;
-  l.delta[i] = delta;
-  l.ox[i] = origin.x, l.oy[i] = origin.y, l.oz[i] = origin.z;
-  l.wix[i] = wi.x, l.wiy[i] = wi.y, l.wiz[i] = wi.z;
-  l.pdf[i] = pdf;
-  l.weight_r[i] = weight.x, l.weight_g[i] = weight.y, l.weight_b[i] = weight.z;
-}
 
 // A Lambert lane: its hit, the lobes (lambert_bsdf.cpp) and their bounce (sample_warped), then
 // sample_one_light for a point light with opaque shadows, and the two rays' origins (spawn_ray,
@@ -480,7 +39,7 @@ template <int Hits>
   vec3 local = {l.cosine_x[i], l.cosine_y[i], l.cosine_z[i]};
   bool scatters = valid & (local.z >= lambert_min_cosine);
   vec3 wi = to_world(make_shading_frame(lobe_normal), local);
-  store_bounce(l, i, scatters, offset_lane(hit.point, {hit.error, hit.error, hit.error}, hit.geometric_normal, wi),
+  store_bounce(l, i, scatters, offset_ray_origin(hit.point, {hit.error, hit.error, hit.error}, hit.geometric_normal, wi),
                wi, local.z * inv_pi, albedo);
   LaneLight light = point_light_lane(l, i, hit.point, LambertValue{lobe_normal, albedo, valid});
   store_light_outputs(l, i, light_outputs(l, i, light, hit.point, {hit.error, hit.error, hit.error}, hit.geometric_normal));
@@ -564,7 +123,7 @@ void sample_glossy_specular(SurfaceLanes& l) {
   vec3 wi = to_world(make_shading_frame(lobes.normal), local);
   vec3 point = {l.px[i], l.py[i], l.pz[i]};
   float error = l.error[i];
-  vec3 origin = offset_lane(point, {error, error, error}, {l.gnx[i], l.gny[i], l.gnz[i]}, wi);
+  vec3 origin = offset_ray_origin(point, {error, error, error}, {l.gnx[i], l.gny[i], l.gnz[i]}, wi);
   l.fallback[i] |= (!in_range) & (specular | diffuse);
   store_bounce(l, i, scatters, origin, wi, pdf, weight);
 }
@@ -631,7 +190,7 @@ void sample_phong_bounces(SurfaceLanes& l) {
   weight = select(lobe.mirror, mirror_weight, weight);
   pdf = lobe.mirror ? p_mirror : pdf;
   vec3 wi = to_world(make_shading_frame(lobes.normal), local);
-  store_bounce(l, i, scatters, offset_lane(point, {error, error, error}, geometric, wi), wi, pdf, weight, lobe.mirror);
+  store_bounce(l, i, scatters, offset_ray_origin(point, {error, error, error}, geometric, wi), wi, pdf, weight, lobe.mirror);
 }
 
 // A lane whose light is an emitting triangle, after the first loop: its light sample replaces
@@ -738,7 +297,7 @@ void spot_powers(SurfaceLanes& l) {
     vec3 to_light = vec3{l.light_x[i], l.light_y[i], l.light_z[i]} - vec3{l.px[i], l.py[i], l.pz[i]};
     vec3 towards = to_light * (1 / length(to_light));
     float cos_angle = dot(vec3{l.spot_x[i], l.spot_y[i], l.spot_z[i]}, -towards);
-    l.spot_power[i] = cos_angle > 0 ? std::pow(cos_angle, l.spot_exponent[i]) : 0.0f;
+    l.spot_power[i] = classic_spot_falloff(cos_angle, l.spot_exponent[i]);
   }
 }
 
@@ -862,9 +421,8 @@ void set_lane_shaped_light(SurfaceLanes& l, int i, const LightDesc& light) {
   // A glTF spot's cone, worked out as spot_falloff does; finite values for the other lights,
   // whose lanes compute a cone they do not use.
   if (l.spot[i]) {
-    float cos_outer = std::cos(light.outer_cone), cos_inner = std::cos(light.inner_cone);
-    l.cos_outer[i] = cos_outer;
-    l.cone_scale[i] = 1.0f / std::max(0.001f, cos_inner - cos_outer);
+    SpotCone cone = spot_cone(light);
+    l.cos_outer[i] = cone.cos_outer, l.cone_scale[i] = cone.scale;
   } else {
     l.cos_outer[i] = 0, l.cone_scale[i] = 1;
   }

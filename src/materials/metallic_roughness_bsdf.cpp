@@ -5,15 +5,13 @@
 #include "materials/lobe_sampling.h"
 #include "materials/fresnel.h"
 #include "materials/metallic_roughness.h"
+#include "materials/metallic_roughness_terms.h"
 #include "materials/microfacet.h"
 #include "materials/shading_frame.h"
 
 namespace radiant {
 
 namespace {
-
-// Smallest selection weight of a present non-delta lobe: its pdf must never be 0 where it scatters.
-constexpr float min_lobe_weight = 0.05f;
 
 // The exact Fresnel curve of the coating's ior, rescaled to run from 0 at normal incidence to 1
 // at grazing.
@@ -25,7 +23,7 @@ constexpr float min_lobe_weight = 0.05f;
 // `cos`) run from the tinted F0 at normal incidence to 1 at grazing, times its strength. With
 // iridescence, a share of it is the thin film's reflectance over that F0 instead.
 [[gnu::always_inline]] inline color3 coating_fresnel(const MetallicRoughnessLobes& l, float cos, float rise) {
-  color3 f = l.specular_f0 + (color3{1, 1, 1} - l.specular_f0) * rise;
+  color3 f = tinted_coating_reflectance(l.specular_f0, rise);
   if (l.iridescence > 0) f = lerp(f, thin_film_fresnel(cos, l.film_outside_ior, l.film, l.specular_f0), l.iridescence);
   return f * l.specular;
 }
@@ -61,20 +59,14 @@ constexpr float min_lobe_weight = 0.05f;
   return l.anisotropic ? ggx_lambda(w, l.anisotropic_alpha) : ggx_lambda(w, l.alpha);
 }
 [[gnu::always_inline]] inline float microfacet_masking_shadowing(const MetallicRoughnessLobes& l, vec3 wi) {
-  return 1 / (1 + l.lambda_o + microfacet_lambda(l, wi));
+  return ggx_masking_shadowing_of(l.lambda_o, microfacet_lambda(l, wi));
 }
 // The density of visible normals h (Heitz 2018), given h's density.
 [[gnu::always_inline]] inline float visible_normal_pdf(const MetallicRoughnessLobes& l, vec3 h, float density) {
-  return 1 / (1 + l.lambda_o) * std::max(0.0f, dot(l.wo, h)) * density / l.wo.z;
+  return ggx_visible_density(l.wo, h, l.lambda_o, density);
 }
 vec3 sample_visible_normal(const MetallicRoughnessLobes& l, vec2 u) {
   return l.anisotropic ? sample_ggx_visible_normal(l.wo, l.anisotropic_alpha, u) : sample_ggx_visible_normal(l.wo, l.alpha, u);
-}
-
-// Delta lobes need no floor: a delta lobe with no reflectance is simply never chosen.
-float selection_weight(bool present, float estimate, bool delta) {
-  if (!present) return 0;
-  return delta ? estimate : std::max(estimate, min_lobe_weight);
 }
 
 // Between equal indices a rough interface neither reflects (F = 0) nor bends light: Walter's

@@ -7,16 +7,16 @@
 #pragma once
 
 #include <algorithm>
-#include <bit>
-#include <cstdint>
 #include <cmath>
-#include <limits>
 
 #include "materials/bsdf_models.h"
 #include "materials/fresnel.h"
 #include "materials/metallic_roughness.h"
+#include "materials/metallic_roughness_terms.h"
+#include "materials/microfacet.h"
 #include "materials/microfacet_energy.h"
 #include "materials/shading_frame.h"
+#include "math/lane.h"
 
 namespace radiant {
 
@@ -27,70 +27,6 @@ inline bool is_metallic_roughness_lane_case(const MetallicRoughnessParams& p) {
   return !p.anisotropic && !p.smooth && !(p.glass > 0) && !(p.iridescence > 0) &&
          !(max_component(p.diffuse_transmitted) > 0);
 }
-
-namespace lane {
-
-constexpr float largest_float = std::numeric_limits<float>::max();
-
-// std::isfinite as comparisons, which a vector loop can take.
-[[gnu::always_inline]] inline bool finite(float x) { return std::abs(x) <= largest_float; }
-[[gnu::always_inline]] inline bool finite(vec3 a) { return finite(a.x) & finite(a.y) & finite(a.z); }
-[[gnu::always_inline]] inline bool black(vec3 a) { return (a.x == 0) & (a.y == 0) & (a.z == 0); }
-// A per-component select: a ternary on whole vectors is a branch GCC does not if-convert.
-[[gnu::always_inline]] inline vec3 select(bool c, vec3 a, vec3 b) {
-  return {c ? a.x : b.x, c ? a.y : b.y, c ? a.z : b.z};
-}
-
-// `x` where `keep`, else +0: the select written on the bits. As a float select, GCC folds the
-// comparisons callers make of the result into selects of booleans, which it cannot vectorise.
-[[gnu::always_inline]] inline float zero_unless(bool keep, float x) {
-  return std::bit_cast<float>(std::bit_cast<uint32_t>(x) & (keep ? ~0u : 0u));
-}
-
-// select() written on the bits, for a choice GCC must not turn back into a branch: sunk into
-// one, the chosen side's loads become conditional, which the SSE2 loops cannot vectorise.
-[[gnu::always_inline]] inline float select_bits(bool c, float a, float b) {
-  uint32_t mask = c ? ~0u : 0u;
-  return std::bit_cast<float>((std::bit_cast<uint32_t>(a) & mask) | (std::bit_cast<uint32_t>(b) & ~mask));
-}
-[[gnu::always_inline]] inline vec3 select_bits(bool c, vec3 a, vec3 b) {
-  return {select_bits(c, a.x, b.x), select_bits(c, a.y, b.y), select_bits(c, a.z, b.z)};
-}
-
-// normalize() without its rescaling branch: `in_range` says whether the result is normalize()'s.
-[[gnu::always_inline]] inline vec3 normalize_in_range(vec3 a, bool& in_range) {
-  float l2 = dot(a, a);
-  in_range = (l2 >= std::numeric_limits<float>::min()) & (l2 <= std::numeric_limits<float>::max());
-  return a * (1 / std::sqrt(l2));
-}
-
-// fresnel_dielectric (fresnel.h): under total internal reflection the square root's NaN is
-// worked out and not selected.
-[[gnu::always_inline]] inline float fresnel_dielectric(float cos_i, float eta) {
-  cos_i = std::clamp(cos_i, 0.0f, 1.0f);
-  float sin2_t = (1 - cos_i * cos_i) / (eta * eta);
-  float cos_t = std::sqrt(1 - sin2_t);
-  float parallel = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
-  float perpendicular = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
-  float reflectance = (parallel * parallel + perpendicular * perpendicular) / 2;
-  return sin2_t >= 1 ? 1.0f : reflectance;
-}
-
-// ggx_lambda and ggx_distribution (microfacet.h).
-[[gnu::always_inline]] inline float ggx_lambda(vec3 w, float alpha) {
-  float cos2 = w.z * w.z;
-  float tan2 = std::max(0.0f, 1 - cos2) / cos2;
-  float lambda = (std::sqrt(1 + alpha * alpha * tan2) - 1) / 2;
-  return cos2 <= 0 ? std::numeric_limits<float>::infinity() : lambda;
-}
-[[gnu::always_inline]] inline float ggx_distribution(vec3 m, float alpha) {
-  float a2 = alpha * alpha;
-  float d = m.z * m.z * (a2 - 1) + 1;
-  float density = a2 / (pi * d * d);
-  return m.z <= 0 ? 0.0f : density;
-}
-
-}  // namespace lane
 
 // The parameters of the case that a lane reads (MetallicRoughnessParams' fields).
 struct GlossyLaneMaterial {
@@ -113,12 +49,11 @@ struct GlossyLaneLobes {
 
 // coating_rise and coating_fresnel without iridescence.
 [[gnu::always_inline]] inline float glossy_coating_rise(const GlossyLaneMaterial& m, float cos) {
-  float rise = std::max((lane::fresnel_dielectric(cos, m.ior) - m.ior_f0) / (1 - m.ior_f0), 0.0f);
-  return m.ior_f0 < 1 ? rise : 1.0f;
+  return fresnel_rise(cos, m.ior, m.ior_f0);
 }
 // specular_fresnel without glass and iridescence, given the coating's curve at `cos_h`.
 [[gnu::always_inline]] inline color3 glossy_specular_fresnel(const GlossyLaneMaterial& m, float cos_h, float rise) {
-  color3 coating = (m.specular_f0 + (color3{1, 1, 1} - m.specular_f0) * rise) * m.specular;
+  color3 coating = tinted_coating_reflectance(m.specular_f0, rise) * m.specular;
   color3 plastic = lane::select(m.plastic > 0, coating * m.plastic, color3{0, 0, 0});
   color3 metal = lane::select(m.metal > 0, fresnel_schlick(m.base, cos_h) * m.metal, color3{0, 0, 0});
   float glass = 0;
@@ -144,15 +79,12 @@ struct GlossyLaneLobes {
   float rise_o = glossy_coating_rise(m, cos_o);
   l.loss_o = 1 - at_o.albedo;
   l.coating_o = coating_passage_of(m.energy, l.loss_o, at_o.rise);
-  l.lambda_o = lane::ggx_lambda(l.wo, m.alpha);
-  // selection_weight of the present lobes, with its floor.
-  constexpr float min_lobe_weight = 0.05f;
+  l.lambda_o = ggx_lambda(l.wo, m.alpha);
   bool specular_present = (m.metal > 0) | (m.plastic * m.specular > 0);
-  float specular = std::max(mean(glossy_specular_fresnel(m, cos_o, rise_o)), min_lobe_weight);
-  specular = specular_present ? specular : 0.0f;
+  float specular = selection_weight(specular_present, mean(glossy_specular_fresnel(m, cos_o, rise_o)), false);
   bool diffuse_present = ((m.plastic > 0) & colored) | (max_component(m.energy.multiple_scattering) > 0);
-  float diffuse = std::max(cosine_lobes_albedo(m.energy, m.base, m.plastic, l.coating_o, l.loss_o), min_lobe_weight);
-  diffuse = diffuse_present ? diffuse : 0.0f;
+  float diffuse =
+      selection_weight(diffuse_present, cosine_lobes_albedo(m.energy, m.base, m.plastic, l.coating_o, l.loss_o), false);
   float transmitted = 0;
   float total = specular + diffuse + transmitted;
   l.valid = valid & !(total <= 0);  // as the model's test: a NaN total leaves it valid
@@ -180,13 +112,13 @@ template <bool WithPdf>
   float cos_h = dot(l.wo, h);
   bool reflects = upper & (l.p_specular > 0) & !(cos_h <= 0);  // a NaN goes on, as in the model
   in_range = h_in_range | !(upper & (l.p_specular > 0));
-  float density = lane::ggx_distribution(h, m.alpha);
+  float density = ggx_distribution(h, m.alpha);
   float rise = m.plastic > 0 ? glossy_coating_rise(m, cos_h) : 0.0f;
-  float masking_shadowing = 1 / (1 + l.lambda_o + lane::ggx_lambda(wi, m.alpha));
+  float masking_shadowing = ggx_masking_shadowing_of(l.lambda_o, ggx_lambda(wi, m.alpha));
   color3 reflected = glossy_specular_fresnel(m, cos_h, rise) * (density * masking_shadowing / (4 * l.wo.z));
   f = lane::select(reflects, f + reflected, f);
   if constexpr (WithPdf) {
-    float visible = 1 / (1 + l.lambda_o) * std::max(0.0f, dot(l.wo, h)) * density / l.wo.z;
+    float visible = ggx_visible_density(l.wo, h, l.lambda_o, density);
     pdf = reflects ? pdf + l.p_specular * (visible / (4 * cos_h)) : pdf;
     pdf = lane::zero_unless(lane::finite(pdf), pdf);
   }

@@ -8,7 +8,7 @@ namespace radiant {
 float ggx_masking(vec3 w, float alpha) { return 1 / (1 + ggx_lambda(w, alpha)); }
 
 float ggx_masking_shadowing(vec3 wo, vec3 wi, float alpha) {
-  return 1 / (1 + ggx_lambda(wo, alpha) + ggx_lambda(wi, alpha));
+  return ggx_masking_shadowing_of(ggx_lambda(wo, alpha), ggx_lambda(wi, alpha));
 }
 
 vec3 sample_ggx_visible_normal(vec3 wo, float alpha, vec2 u) { return sample_ggx_visible_normal(wo, {alpha, alpha}, u); }
@@ -31,7 +31,7 @@ vec3 sample_ggx_visible_normal(vec3 wo, vec2 alpha, vec2 u) {
 
 float ggx_visible_normal_pdf(vec3 wo, vec3 m, float alpha) {
   if (wo.z <= 0) return 0;
-  return ggx_masking(wo, alpha) * std::max(0.0f, dot(wo, m)) * ggx_distribution(m, alpha) / wo.z;
+  return ggx_visible_density(wo, m, ggx_lambda(wo, alpha), ggx_distribution(m, alpha));
 }
 
 float ggx_distribution(vec3 m, vec2 alpha) {

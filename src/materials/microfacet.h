@@ -6,24 +6,34 @@
 #include <cmath>
 #include <limits>
 
+#include "math/lane.h"
 #include "math/vec.h"
 
 namespace radiant {
 
 // Normal distribution D(m) for a microfacet normal m with m.z > 0. Inline, as is Lambda: the
-// metallic-roughness model evaluates both twice per path vertex.
-inline float ggx_distribution(vec3 m, float alpha) {
-  if (m.z <= 0) return 0;
+// metallic-roughness model evaluates both twice per path vertex. Both are written over a lane
+// (math/lane.h), a select for the early return, so that the batch's SIMD lanes call them too.
+[[gnu::always_inline]] inline float ggx_distribution(vec3 m, float alpha) {
   float a2 = alpha * alpha;
   float d = m.z * m.z * (a2 - 1) + 1;
-  return a2 / (pi * d * d);
+  float density = a2 / (pi * d * d);
+  return m.z <= 0 ? 0.0f : density;
 }
 // Smith Lambda(w): the masking function is G1 = 1 / (1 + Lambda).
-inline float ggx_lambda(vec3 w, float alpha) {
+[[gnu::always_inline]] inline float ggx_lambda(vec3 w, float alpha) {
   float cos2 = w.z * w.z;
-  if (cos2 <= 0) return std::numeric_limits<float>::infinity();
   float tan2 = std::max(0.0f, 1 - cos2) / cos2;
-  return (std::sqrt(1 + alpha * alpha * tan2) - 1) / 2;
+  float lambda = (std::sqrt(1 + alpha * alpha * tan2) - 1) / 2;
+  return cos2 <= 0 ? std::numeric_limits<float>::infinity() : lambda;
+}
+// Height-correlated masking-shadowing G2 from the Lambdas along wo and wi.
+[[gnu::always_inline]] inline float ggx_masking_shadowing_of(float lambda_o, float lambda_i) {
+  return 1 / (1 + lambda_o + lambda_i);
+}
+// Density of the visible normal m given Lambda along wo and D(m): G1(wo) * max(0, wo.m) * D(m) / wo.z.
+[[gnu::always_inline]] inline float ggx_visible_density(vec3 wo, vec3 m, float lambda_o, float density) {
+  return 1 / (1 + lambda_o) * std::max(0.0f, dot(wo, m)) * density / wo.z;
 }
 float ggx_masking(vec3 w, float alpha);
 // Height-correlated masking-shadowing G2(wo, wi).

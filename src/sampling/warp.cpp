@@ -23,19 +23,6 @@ vec3 sample_uniform_cone(vec2 u, float cos_max) {
   return {sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta};
 }
 
-vec2 sample_uniform_triangle(vec2 u) {
-  // Heitz 2019's low-distortion mapping.
-  float b0, b1;
-  if (u.x < u.y) {
-    b0 = u.x / 2;
-    b1 = u.y - b0;
-  } else {
-    b1 = u.y / 2;
-    b0 = u.x - b1;
-  }
-  return {b0, b1};
-}
-
 vec2 sample_uniform_disk(vec2 u) {
   vec3 d = sample_cosine_hemisphere(u);  // the cosine-weighted hemisphere is the disk, lifted
   return {d.x, d.y};
