@@ -45,6 +45,7 @@ void check_render_job_outputs(const RenderJob& job) {
   if (job.options.transparent.value_or(false) && !stores_alpha(format))
     throw std::invalid_argument("--transparent needs an output with alpha: PNG, TIFF or EXR (got '" + format + "')");
   for (const NamedFile& output : render_job_outputs(job)) check_output_place(output.path);
+  if (!shard) charge_image_output(job.options.memory, format, job.options.bit_depth);
 }
 
 void check_outputs_spare_inputs(const std::string& scene_path, const std::string& env_map,
@@ -134,6 +135,8 @@ void run_render_job(const std::string& scene_path, PreparedScene& prepared, cons
   RenderOptions options = job.options;
   options.stop_request = &interrupt_signal();
   check_outputs_spare_scene_files(prepared.scene->input_files, render_job_outputs(job));
+  // Before the render: a batch line's budget is made just now.
+  if (!writes_shard(options)) charge_image_output(job.options.memory, image_format_name(job), job.options.bit_depth);
   prepare_view(prepared, job.options);
   times.build = prepared.build_seconds;
   if (job.skip_existing) {

@@ -250,6 +250,7 @@ class Session {
   void save(const std::string& path) {
     check_image_output(path);
     RenderJob job = current_job();
+    charge_image_output(&budget_, path, job.options.bit_depth);
     std::vector<NamedFile> written = {{"save", path}};
     if (!job.stats_path.empty()) written.push_back({"--stats", job.stats_path});
     check_outputs_spare_inputs(scene_path_, job.options.env_map, scene_files(), written);

@@ -103,4 +103,13 @@ void check_image_output(const std::string& path) {
                                 extension + "'");
 }
 
+void charge_image_output(MemoryBudget* budget, const std::string& path, int bit_depth) {
+  OutputImage color_only;
+  color_only.channels = {"R", "G", "B"};
+  color_only.bit_depth = bit_depth;
+  ImageWriteSpec spec = output_spec(path, color_only);
+  if (!budget || writes_as_png(path, spec) || writes_as_exr(path, spec)) return;
+  budget->charge_once("OpenImageIO", image_module_bytes, path + ": OpenImageIO's libraries and buffers to write it");
+}
+
 }  // namespace radiant

@@ -22,6 +22,12 @@ void MemoryBudget::charge(uint64_t bytes, const std::string& what) {
   if (!try_charge(bytes)) throw MemoryLimitError(refusal(bytes, what));
 }
 
+void MemoryBudget::charge_once(const std::string& key, uint64_t bytes, const std::string& what) {
+  if (charged_once_.count(key)) return;
+  charge(bytes, what);
+  charged_once_.insert(key);
+}
+
 std::string MemoryBudget::refusal(uint64_t bytes, const std::string& what) const {
   std::string held = used_ > 0 ? " (with " + format_bytes(used_) + " already in use)" : "";
   return what + ": " + format_bytes(bytes) + " needed" + held + ", over the memory limit of " +

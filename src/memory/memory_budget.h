@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <set>
 #include <stdexcept>
 #include <string>
 
@@ -23,6 +24,9 @@ class MemoryBudget {
   // Adds `bytes` for `what` (a file and a place: "model.gltf: meshes[0]"), or, when that would
   // pass the limit, charges nothing and throws MemoryLimitError.
   void charge(uint64_t bytes, const std::string& what);
+  // Charges `bytes` for `key` the first time only, like charge(): for what stays for the rest
+  // of the process once made (a library loaded on first use).
+  void charge_once(const std::string& key, uint64_t bytes, const std::string& what);
   // Charges `bytes` and returns true, or returns false and charges nothing.
   bool try_charge(uint64_t bytes);
   // The one-line refusal of `bytes` more for `what`.
@@ -38,6 +42,7 @@ class MemoryBudget {
   uint64_t limit_;
   uint64_t used_ = 0;
   std::string limit_source_;
+  std::set<std::string> charged_once_;
 };
 
 // Bytes held against a budget for as long as this object lives (a film, an accelerator). A null
