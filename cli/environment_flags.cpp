@@ -4,9 +4,11 @@
 
 #include <cctype>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include "number_parsing.h"
+#include "render/render_option_names.h"
 
 namespace radiant::cli {
 
@@ -20,9 +22,7 @@ std::string lower_case(std::string text) {
 }  // namespace
 
 void parse_environment_choice(const std::string& text, RenderOptions& options) {
-  if (text == "studio") options.env_preset = EnvironmentPreset::studio;
-  else if (text == "white") options.env_preset = EnvironmentPreset::white;
-  else if (text == "none") options.env_preset = EnvironmentPreset::none;
+  if (std::optional<EnvironmentPreset> preset = value_named(environment_preset_names, text)) options.env_preset = *preset;
   else if (text.empty()) throw CLI::ValidationError("--env", "needs studio, white, none or an image file");
   else options.env_map = text;
 }

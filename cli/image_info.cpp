@@ -4,6 +4,7 @@
 #include <array>
 #include <fstream>
 
+#include "image/image_format.h"
 #include "image/image_io.h"
 #include "image/render_metadata.h"
 #include "json_output.h"
@@ -89,10 +90,7 @@ bool is_image_path(const std::string& path) {
   std::string extension = lowercase_extension(path);
   if (path == "-" || extension == ".scene" || extension == ".gltf" || extension == ".glb" || extension == ".obj")
     return false;
-  static const std::array<const char*, 14> image_extensions = {".png", ".exr", ".tif", ".tiff", ".jpg", ".jpeg", ".hdr",
-                                                               ".pfm", ".bmp", ".tga", ".webp", ".ppm", ".pgm", ".dpx"};
-  return has_image_signature(path) ||
-         std::find(image_extensions.begin(), image_extensions.end(), extension) != image_extensions.end();
+  return has_image_signature(path) || is_known_image_extension(path);
 }
 
 void print_image_info(std::ostream& out, const std::string& path, bool json) {

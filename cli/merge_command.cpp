@@ -128,7 +128,7 @@ int merge_main(int argc, char** argv) {
   }
   MemoryBudget budget = command_memory_budget(max_memory_bytes);
   try {
-    if (keep_accum && lowercase_extension(output) != ".exr")
+    if (keep_accum && !is_exr_format(output))
       throw std::invalid_argument("--keep-accum writes a shard EXR: -o must end in .exr (got '" + output + "')");
     DistinctFiles files;
     for (const std::string& path : paths) files.add_input({"a shard", path});

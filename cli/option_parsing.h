@@ -1,4 +1,5 @@
-// Parsing the command line's value syntaxes (X,Y,Z triples, mode and sampler names, windows).
+// The flags `render`, `converge`, `batch` and `session` share: their table (names, help, checks)
+// and their conversion into RenderOptions. The value syntaxes are in flag_values.h.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -9,49 +10,17 @@
 #include <string>
 #include <vector>
 
+#include "flag_values.h"
 #include "log_level.h"
 #include "memory/memory_budget.h"
 #include "number_parsing.h"
+#include "unknown_flags.h"
 #include "render/render_options.h"
 
 namespace radiant::cli {
 
-// Parses a command's arguments (argv[0] is the command) with what CLI11 does not check: a flag
-// given twice (`--spp 4 --spp=8`) is an error naming both, and an unknown flag is an error that
-// suggests the nearest known ones (`--sampels`: did you mean --sampler or --spp?). Throws
-// CLI::ParseError.
-void parse_arguments(CLI::App& app, int argc, char** argv);
-// The same for the words of a script line (the first word is the command).
-void parse_arguments(CLI::App& app, std::vector<std::string> words);
-
-// Each throws CLI::ValidationError naming `flag` on bad input. Numbers must be finite as floats.
-RenderMode parse_mode(const std::string& flag, const std::string& text);
-SamplerKind parse_sampler(const std::string& flag, const std::string& text);
-LightSampler parse_light_sampler(const std::string& flag, const std::string& text);
-Projection parse_camera_type(const std::string& flag, const std::string& text);
-TextureFilterMode parse_texture_filter(const std::string& flag, const std::string& text);
-PathBatching parse_batching(const std::string& flag, const std::string& text);
-// "2" (pixels) or "0.01m" (world units): a positive width.
-LineWidth parse_line_width(const std::string& flag, const std::string& text);
-PixelWindow parse_window(const std::string& flag, const std::string& text);
-// "I/K" with 0 <= I < K <= 65536, and "A:B" sample indices.
-ShardSpec parse_shard(const std::string& flag, const std::string& text);
-ShardSplit parse_split(const std::string& flag, const std::string& text);
-SampleRange parse_sample_range(const std::string& flag, const std::string& text);
-std::vector<std::string> parse_aovs(const std::string& flag, const std::string& text);
-// --progress auto|bar|lines|none as the style a command prints: auto is the bar when stderr is a
-// terminal and lines when it is not (a log); none when `quiet`.
-ProgressStyle parse_progress(const std::string& flag, const std::string& text, bool quiet);
-// --time-limit's check: seconds in (0, max_time_limit_seconds] (CLI::PositiveNumber lets NaN
-// through, and 1e308 seconds overflows the deadline).
-CLI::Validator time_limit_range();
-
-// GiB as bytes: finite, positive and at least one byte; beyond what 64 bits count means no cap.
-uint64_t parse_memory_limit(const std::string& flag, const std::string& text);
 // The budget of a command: --max-memory when given, else a quarter of RAM.
 MemoryBudget command_memory_budget(const std::optional<uint64_t>& max_memory_bytes);
-const char* mode_name(RenderMode mode);
-const char* sampler_name(SamplerKind kind);
 
 // The options shared by `render`, `converge` and `batch`, bound to `app`; call `finish` after
 // parsing to convert the string flags.

@@ -54,7 +54,7 @@ std::string frames_usage_problem(const std::string& output, const std::string& s
 std::string shard_usage_problem(const std::string& scene_path, const std::string& output, const RenderOptions& options,
                                 bool skip_existing) {
   if (!writes_shard(options)) return skip_existing ? "--skip-existing needs --shard or --sample-range" : "";
-  if (lowercase_extension(output) != ".exr")
+  if (!is_exr_format(output))
     return "--shard and --sample-range write a shard EXR for `radiant merge`: -o must end in .exr (got '" + output + "')";
   if (scene_path == "-") return "--shard and --sample-range need a scene file (merge checks its hash), not standard input";
   return "";

@@ -35,12 +35,11 @@ std::string image_format_name(const RenderJob& job) {
 void check_render_job_outputs(const RenderJob& job) {
   std::string format = image_format_name(job);
   check_image_output(format);
-  std::string extension = lowercase_extension(format);
   // A shard holds exact sums whatever the encoding: it records --half and --bit-depth for merge.
   bool shard = writes_shard(job.options);
   if (job.options.half_float && !is_exr_format(format) && !shard)
     throw std::invalid_argument("--half needs an EXR output (got '" + format + "')");
-  if (job.options.bit_depth == 16 && extension != ".png" && extension != ".tif" && extension != ".tiff" && !shard)
+  if (job.options.bit_depth == 16 && !image_format_of(format).sixteen_bit && !shard)
     throw std::invalid_argument("--bit-depth 16 needs a PNG or TIFF output (got '" + format + "')");
   if (job.options.transparent.value_or(false) && !stores_alpha(format))
     throw std::invalid_argument("--transparent needs an output with alpha: PNG, TIFF or EXR (got '" + format + "')");

@@ -8,6 +8,7 @@
 #include "interrupts.h"
 #include "json_output.h"
 #include "option_parsing.h"
+#include "scene/enum_names.h"
 #include "sampling/pixel_filter.h"
 
 namespace radiant::cli {
@@ -83,7 +84,7 @@ std::string render_stats_json(const std::string& scene_path, const std::string& 
   j["mode"] = mode_name(s.mode);
   j["mode_reason"] = s.mode_reason;
   j["sampler"] = sampler_name(s.sampler);
-  j["light_sampler"] = s.light_sampler == LightSampler::bvh ? "bvh" : "power";
+  j["light_sampler"] = name_of(light_sampler_names, s.light_sampler);
   j["filter"] = {{"name", pixel_filter_name(s.filter)}, {"width", 2 * s.filter_radius}};
   j["transparent"] = s.transparent;
   j["spp"] = s.spp;

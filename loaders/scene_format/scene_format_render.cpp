@@ -1,5 +1,7 @@
 #include "scene_format/scene_format_render.h"
 
+#include "scene/enum_names.h"
+
 #include "scene_format/scene_format_units.h"
 #include "scene_format/scene_format_values.h"
 
@@ -14,20 +16,14 @@ void build_render_block(BuildContext& context, const Block& block) {
   expect_block_arguments(context, block, 0);
   Attributes attributes = index_attributes(context, block, render_names, "@render");
   SceneSettings& settings = context.scene.settings;
-  // Same order as RenderMode and SamplerKind.
-  if (auto* a = find(attributes, "mode")) settings.mode = RenderMode(read_choice(context, *a, {"auto", "whitted", "path", "naive"}));
-  if (auto* a = find(attributes, "sampler"))
-    settings.sampler = SamplerKind(read_choice(context, *a, {"grid", "random", "jittered", "sobol"}));
+  if (auto* a = find(attributes, "mode")) settings.mode = read_named(context, *a, render_mode_names);
+  if (auto* a = find(attributes, "sampler")) settings.sampler = read_named(context, *a, sampler_names);
   if (auto* a = find(attributes, "spp")) settings.spp = read_integer(context, *a, 1, max_samples_per_pixel);
   if (auto* a = find(attributes, "max-depth")) settings.max_depth = read_integer(context, *a, 1, max_render_depth);
   if (auto* a = find(attributes, "width")) settings.width = read_integer(context, *a, 1, max_image_side);
   if (auto* a = find(attributes, "height")) settings.height = read_integer(context, *a, 1, max_image_side);
-  // Same order as ViewTransform.
-  if (auto* a = find(attributes, "view"))
-    settings.view = ViewTransform(read_choice(context, *a, {"standard", "linear", "filmic", "agx", "neutral", "aces"}));
-  // Same order as PixelFilterKind.
-  if (auto* a = find(attributes, "filter"))
-    settings.filter = PixelFilterKind(read_choice(context, *a, {"box", "triangle", "gaussian", "mitchell", "blackman-harris"}));
+  if (auto* a = find(attributes, "view")) settings.view = read_named(context, *a, view_transform_names);
+  if (auto* a = find(attributes, "filter")) settings.filter = read_named(context, *a, pixel_filter_names);
   if (auto* a = find(attributes, "filter-width")) {
     float width = read_positive(context, *a);
     if (width > max_filter_width)

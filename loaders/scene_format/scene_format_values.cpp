@@ -4,6 +4,8 @@
 #include <charconv>
 #include <cmath>
 
+#include "scene/enum_names.h"
+
 namespace radiant::scene_format {
 
 // ---------------------------------------------------------------- attribute names
@@ -185,13 +187,10 @@ bool read_boolean(const BuildContext& context, const Attribute& attribute) {
 int read_choice(const BuildContext& context, const Attribute& attribute,
                 const std::vector<std::string>& choices) {
   std::string word = read_word(context, attribute);
-  std::string list;
-  for (size_t i = 0; i < choices.size(); ++i) {
+  for (size_t i = 0; i < choices.size(); ++i)
     if (word == choices[i]) return int(i);
-    list += (i == 0 ? "" : i + 1 == choices.size() ? " or " : ", ") + choices[i];
-  }
   fail(context, attribute.arguments[0],
-       "unknown " + attribute.name.text + " " + quote(word) + " (expected " + list + ")");
+       "unknown " + attribute.name.text + " " + quote(word) + " (expected " + choices_text(choices) + ")");
 }
 
 }  // namespace radiant::scene_format

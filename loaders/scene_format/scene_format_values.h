@@ -2,8 +2,10 @@
 // check of a block's attribute names. Every failure names the line and column.
 #pragma once
 
+#include <cstddef>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "math/vec.h"
@@ -58,6 +60,13 @@ bool read_boolean(const BuildContext& context, const Attribute& attribute);
 int read_choice(const BuildContext& context, const Attribute& attribute,
                 const std::vector<std::string>& choices);
 std::string read_word(const BuildContext& context, const Attribute& attribute);
+// The value `table` (scene/enum_names.h) names by the attribute's one word; fails as read_choice.
+template <class Enum, size_t N>
+Enum read_named(const BuildContext& context, const Attribute& attribute, const std::pair<Enum, const char*> (&table)[N]) {
+  std::vector<std::string> choices;
+  for (const auto& entry : table) choices.push_back(entry.second);
+  return table[read_choice(context, attribute, choices)].first;
+}
 
 // Fails at the attribute name unless it has exactly `count` arguments.
 void expect_arguments(const BuildContext& context, const Attribute& attribute, size_t count,

@@ -1,8 +1,12 @@
 #include "film/shard_merge.h"
 
 #include <algorithm>
+#include <optional>
 #include <set>
 #include <stdexcept>
+
+#include "sampling/sampler.h"
+#include "scene/enum_names.h"
 
 namespace radiant {
 
@@ -27,8 +31,11 @@ void require_same(const NamedShard& a, const NamedShard& b, const std::string& w
                              why + ")");
 }
 
-// Whether the sampler's positions do not depend on the total spp (settings_hash.h's sampler_extends).
-bool extends(const std::string& sampler) { return sampler == "sobol" || sampler == "random"; }
+// Whether the sampler a shard names extends to a larger total spp (sampling/sampler.h).
+bool extends(const std::string& sampler) {
+  std::optional<SamplerKind> kind = value_named(sampler_names, sampler);
+  return kind && sampler_extends(*kind);
+}
 
 void check_belong(const NamedShard& first, const NamedShard& s) {
   const ShardInfo &a = first.info, &b = s.info;

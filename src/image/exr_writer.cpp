@@ -10,7 +10,7 @@
 #include <cstring>
 #include <map>
 
-#include "output/file_extension.h"
+#include "image/image_format.h"
 
 namespace radiant {
 
@@ -117,7 +117,7 @@ std::vector<unsigned char> zip_chunk(const std::vector<unsigned char>& raw) {
 }  // namespace
 
 bool writes_as_exr(const std::string& path, const ImageWriteSpec& spec) {
-  if (lowercase_extension(path) != ".exr" || spec.channel_names.empty()) return false;
+  if (image_format_of(path).writer != ImageWriterKind::exr || spec.channel_names.empty()) return false;
   if (spec.channel_types.empty()) return spec.type == PixelType::half || spec.type == PixelType::float32;
   return spec.channel_types.size() == spec.channel_names.size() &&
          std::all_of(spec.channel_types.begin(), spec.channel_types.end(),

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "image/image_format.h"
 #include "image/image_io.h"
 
 namespace radiant {
@@ -34,7 +35,7 @@ void write_false_color(TemporaryFile& file, const std::vector<float>& magnitude,
   spec.width = width;
   spec.height = height;
   spec.channel_names = {"R", "G", "B"};
-  spec.type = lowercase_extension(file.target()) == ".exr" ? PixelType::half : PixelType::uint8;
+  spec.type = image_format_of(file.target()).named_channels ? PixelType::half : PixelType::uint8;
   write_image_file(file, spec, colorize(magnitude, top).data());
 }
 

@@ -11,6 +11,7 @@
 
 #include "image/exr_header_check.h"
 #include "image/exr_writer.h"
+#include "image/image_format.h"
 #include "image/hdr_header.h"
 #include "image/packed_metadata.h"
 #include "image/png_reader.h"
@@ -145,10 +146,10 @@ void write_image_file(TemporaryFile& file, const ImageWriteSpec& spec, const voi
   } else {
     // Only EXR keeps every attribute: other formats get them packed into their description.
     ImageWriteSpec stored = spec;
-    if (lowercase_extension(file.target()) != ".exr") stored.metadata = packed_metadata(spec.metadata);
+    if (!image_format_of(file.target()).header_metadata) stored.metadata = packed_metadata(spec.metadata);
     // The temporary's name keeps the target's extension, which names the format.
     error = image_io_module().write(file.descriptor(), file.path(), stored, pixels);
-    if (error.empty() && lowercase_extension(file.target()) == ".hdr") add_hdr_header_lines(file, spec.metadata);
+    if (error.empty() && image_format_of(file.target()).radiance_header) add_hdr_header_lines(file, spec.metadata);
     // Name the file the user asked for, not the temporary one.
     for (size_t at; (at = error.find(file.path())) != std::string::npos;) error.replace(at, file.path().size(), file.target());
   }

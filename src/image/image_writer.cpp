@@ -78,18 +78,6 @@ std::vector<unsigned char> encode_preview_png(const OutputImage& image, std::str
   return encode_png(spec, data.data(), error);
 }
 
-bool is_float_format(const std::string& path) {
-  std::string ext = lowercase_extension(path);
-  return ext == ".exr" || ext == ".hdr";
-}
-
-bool is_exr_format(const std::string& path) { return lowercase_extension(path) == ".exr"; }
-
-bool stores_alpha(const std::string& path) {
-  std::string ext = lowercase_extension(path);
-  return ext == ".png" || ext == ".tif" || ext == ".tiff" || ext == ".exr";
-}
-
 void check_image_output(const std::string& path) {
   OutputImage color_only;  // what decides the writer: the format and the first three channels
   color_only.channels = {"R", "G", "B"};

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "image/image_format.h"
 #include "image/image_io_module.h"
 #include "image/view_transform.h"
 #include "memory/memory_budget.h"
@@ -28,14 +29,13 @@ struct OutputImage {
 
 // True for the formats radiant writes as linear floating point: EXR and HDR (TIFF float is not
 // chosen; PFM has no writer in OpenImageIO 2.4).
-bool is_float_format(const std::string& path);
+inline bool is_float_format(const std::string& path) { return image_format_of(path).linear_float; }
 // True for the format that holds named channels beyond R, G, B, A and half floats: EXR (HDR's
 // RGBE has three channels and one encoding). AOVs, a partial render's sample counts and --half
 // need it.
-bool is_exr_format(const std::string& path);
-
+inline bool is_exr_format(const std::string& path) { return image_format_of(path).named_channels; }
 // True for the formats radiant writes with an alpha channel (--transparent): PNG, TIFF, EXR.
-bool stores_alpha(const std::string& path);
+inline bool stores_alpha(const std::string& path) { return image_format_of(path).alpha; }
 
 // Checks, before any work, that an image can be written to `path`: its extension names a format
 // radiant writes (std::invalid_argument, a usage error, when not). Loads now whatever writing it

@@ -9,7 +9,7 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "output/file_extension.h"
+#include "image/image_format.h"
 #include "image/parallel_deflate.h"
 
 namespace radiant {
@@ -134,7 +134,7 @@ std::vector<uint8_t> filtered_rows(const float* pixels, size_t width, size_t hei
 bool writes_as_png(const std::string& path, const ImageWriteSpec& spec) {
   size_t channels = spec.channel_names.size();
   return spec.type == PixelType::uint8 && spec.channel_types.empty() && (channels == 1 || channels == 3 || channels == 4) &&
-         lowercase_extension(path) == ".png";
+         image_format_of(path).writer == ImageWriterKind::png;
 }
 
 std::vector<unsigned char> encode_png(const ImageWriteSpec& spec, const float* pixels, std::string& error) {

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iterator>
+#include <optional>
 #include <stdexcept>
+
+#include "scene/enum_names.h"
 
 namespace radiant {
 
@@ -93,9 +95,6 @@ color3 srgb_encode(color3 display_linear) {
           linear_to_srgb(clamp01(display_linear.z))};
 }
 
-constexpr ViewTransform all_views[] = {ViewTransform::standard, ViewTransform::linear, ViewTransform::filmic,
-                                       ViewTransform::agx,      ViewTransform::neutral, ViewTransform::aces};
-
 }  // namespace
 
 color3 display_encode(color3 linear, const DisplaySettings& display) {
@@ -111,29 +110,13 @@ color3 display_encode(color3 linear, const DisplaySettings& display) {
   return c;
 }
 
-const char* view_transform_name(ViewTransform view) {
-  switch (view) {
-    case ViewTransform::standard: return "standard";
-    case ViewTransform::linear: return "linear";
-    case ViewTransform::filmic: return "filmic";
-    case ViewTransform::agx: return "agx";
-    case ViewTransform::neutral: return "neutral";
-    case ViewTransform::aces: return "aces";
-  }
-  return "?";
-}
+const char* view_transform_name(ViewTransform view) { return name_of(view_transform_names, view); }
 
 ViewTransform parse_view_transform(const std::string& name) {
-  for (ViewTransform v : all_views)
-    if (name == view_transform_name(v)) return v;
+  if (std::optional<ViewTransform> view = value_named(view_transform_names, name)) return *view;
   throw std::invalid_argument("unknown view '" + name + "' (" + view_transform_choices() + ")");
 }
 
-std::string view_transform_choices() {
-  std::string text;
-  for (size_t i = 0; i < std::size(all_views); ++i)
-    text += (i == 0 ? "" : i + 1 == std::size(all_views) ? " or " : ", ") + std::string(view_transform_name(all_views[i]));
-  return text;
-}
+std::string view_transform_choices() { return names_text(view_transform_names); }
 
 }  // namespace radiant

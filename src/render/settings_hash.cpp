@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "math/fnv_hash.h"
+#include "sampling/sampler.h"
 
 namespace radiant {
 
@@ -40,8 +41,6 @@ std::string files_hash(const std::vector<std::string>& paths) {
 }
 
 std::string text_hash(const std::string& text) { return hex(fnv1a(fnv_offset, text.data(), text.size())); }
-
-bool sampler_extends(SamplerKind sampler) { return sampler == SamplerKind::sobol || sampler == SamplerKind::random; }
 
 std::string settings_hash(const ResolvedSettings& s, const RenderOptions& options) {
   std::ostringstream text;

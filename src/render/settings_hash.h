@@ -23,8 +23,4 @@ std::string text_hash(const std::string& text);
 // range, which differ between shards of one render.
 std::string settings_hash(const ResolvedSettings& settings, const RenderOptions& options);
 
-// Whether a render of [0, A) samples can be extended later by [A, B) of a larger total: the
-// sample positions of sobol and random do not depend on the total spp, those of grid and jittered do.
-bool sampler_extends(SamplerKind sampler);
-
 }  // namespace radiant

@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "render/render_option_names.h"
+
 namespace radiant {
 
 namespace {
@@ -68,13 +70,6 @@ ShardPiece plan_shard(const ShardSpec& shard, int width, int height, uint32_t sp
   return {tile_window(shard.index / samples, tiles, width, height), sample_range(shard.index % samples, samples, spp)};
 }
 
-const char* split_name(ShardSplit split) {
-  switch (split) {
-    case ShardSplit::tiles: return "tiles";
-    case ShardSplit::samples: return "samples";
-    case ShardSplit::both: return "both";
-  }
-  return "?";
-}
+const char* split_name(ShardSplit split) { return name_of(shard_split_names, split); }
 
 }  // namespace radiant

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
+
+#include "scene/enum_names.h"
 
 namespace radiant {
 
@@ -131,22 +134,11 @@ float sample_filter_pdf_1d(const PixelFilter& filter, float x) {
   return filter.table.pmf[cell] * float(cells) / (2 * r);
 }
 
-const char* pixel_filter_name(PixelFilterKind kind) {
-  switch (kind) {
-    case PixelFilterKind::box: return "box";
-    case PixelFilterKind::triangle: return "triangle";
-    case PixelFilterKind::gaussian: return "gaussian";
-    case PixelFilterKind::mitchell: return "mitchell";
-    case PixelFilterKind::blackman_harris: return "blackman-harris";
-  }
-  return "?";
-}
+const char* pixel_filter_name(PixelFilterKind kind) { return name_of(pixel_filter_names, kind); }
 
 PixelFilterKind parse_pixel_filter(const std::string& name) {
-  for (PixelFilterKind kind : {PixelFilterKind::box, PixelFilterKind::triangle, PixelFilterKind::gaussian,
-                               PixelFilterKind::mitchell, PixelFilterKind::blackman_harris})
-    if (name == pixel_filter_name(kind)) return kind;
-  throw std::invalid_argument("unknown filter '" + name + "' (box, triangle, gaussian, mitchell or blackman-harris)");
+  if (std::optional<PixelFilterKind> kind = value_named(pixel_filter_names, name)) return *kind;
+  throw std::invalid_argument("unknown filter '" + name + "' (" + names_text(pixel_filter_names) + ")");
 }
 
 }  // namespace radiant

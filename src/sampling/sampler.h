@@ -25,6 +25,11 @@ struct SampleContext {
 // grid and jittered.
 vec2 sample_pixel(const SampleContext& context);
 
+// Whether a render of [0, A) samples can be extended later by [A, B) of a larger total: the
+// sample positions of sobol and random do not depend on the total spp, those of grid and jittered
+// (their strata) do.
+constexpr bool sampler_extends(SamplerKind kind) { return kind == SamplerKind::sobol || kind == SamplerKind::random; }
+
 // Grid and jittered pixel positions of `count` pixels at one sample index, drawn across SIMD
 // lanes (math/lane_isa.h): (x[i], y[i]) is sample_pixel({kind, pixel[i], index, samples, seed})
 // to the bit. `kind` is grid or jittered.

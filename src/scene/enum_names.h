@@ -6,6 +6,7 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include "scene/scene_desc.h"
 
@@ -19,6 +20,26 @@ inline constexpr std::pair<LightKind, const char*> light_kind_names[] = {{LightK
                                                                         {LightKind::directional, "directional"},
                                                                         {LightKind::point, "point"},
                                                                         {LightKind::spot, "spot"}};
+inline constexpr std::pair<RenderMode, const char*> render_mode_names[] = {{RenderMode::auto_select, "auto"},
+                                                                          {RenderMode::whitted, "whitted"},
+                                                                          {RenderMode::path, "path"},
+                                                                          {RenderMode::naive, "naive"}};
+inline constexpr std::pair<SamplerKind, const char*> sampler_names[] = {{SamplerKind::grid, "grid"},
+                                                                       {SamplerKind::random, "random"},
+                                                                       {SamplerKind::jittered, "jittered"},
+                                                                       {SamplerKind::sobol, "sobol"}};
+inline constexpr std::pair<ViewTransform, const char*> view_transform_names[] = {
+    {ViewTransform::standard, "standard"}, {ViewTransform::linear, "linear"}, {ViewTransform::filmic, "filmic"},
+    {ViewTransform::agx, "agx"},           {ViewTransform::neutral, "neutral"}, {ViewTransform::aces, "aces"}};
+inline constexpr std::pair<PixelFilterKind, const char*> pixel_filter_names[] = {
+    {PixelFilterKind::box, "box"},           {PixelFilterKind::triangle, "triangle"},
+    {PixelFilterKind::gaussian, "gaussian"}, {PixelFilterKind::mitchell, "mitchell"},
+    {PixelFilterKind::blackman_harris, "blackman-harris"}};
+inline constexpr std::pair<LightSampler, const char*> light_sampler_names[] = {
+    {LightSampler::automatic, "auto"}, {LightSampler::power, "power"}, {LightSampler::bvh, "bvh"}};
+inline constexpr std::pair<TextureFilterMode, const char*> texture_filter_names[] = {
+    {TextureFilterMode::point, "point"}, {TextureFilterMode::bilinear, "bilinear"},
+    {TextureFilterMode::trilinear, "trilinear"}};
 
 // The name of `value` in `table` ("" when it has none).
 template <class Enum, size_t N>
@@ -36,12 +57,19 @@ constexpr std::optional<Enum> value_named(const std::pair<Enum, const char*> (&t
   return std::nullopt;
 }
 
+// `names` as "a, b, c or d", for messages.
+inline std::string choices_text(const std::vector<std::string>& names) {
+  std::string text;
+  for (size_t i = 0; i < names.size(); ++i) text += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+  return text;
+}
+
 // The names of `table` as "a, b, c or d", for messages.
 template <class Enum, size_t N>
 std::string names_text(const std::pair<Enum, const char*> (&table)[N]) {
-  std::string text;
-  for (size_t i = 0; i < N; ++i) text += std::string(i == 0 ? "" : i + 1 == N ? " or " : ", ") + table[i].second;
-  return text;
+  std::vector<std::string> names;
+  for (const auto& entry : table) names.push_back(entry.second);
+  return choices_text(names);
 }
 
 }  // namespace radiant
