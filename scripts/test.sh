@@ -14,6 +14,6 @@ for p in chromium nodejs; do
     break
   fi
 done
-scripts/setup.sh "$build_dir" "$@"
+scripts/setup.sh "$build_dir" -DRADIANT_TESTS=ON "$@"
 cd "$build_dir"
 ctest --output-on-failure -j2 --timeout 600
