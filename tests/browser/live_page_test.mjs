@@ -79,11 +79,13 @@ const snapshot = `(async () => {
   const image = document.getElementById("image");
   if (!image || !image.src) return null;
   const generation = Number(image.dataset.generation), status = document.getElementById("status").textContent;
+  const src = image.src;  // set together with the generation
   try {
     await image.decode();  // the image of the src just set, not the one still on screen
   } catch (e) {
     return null;  // replaced by a newer pass while loading
   }
+  if (image.src !== src) return null;  // a newer pass arrived while decoding: its pixels are not this generation's
   const canvas = document.createElement("canvas");
   canvas.width = image.naturalWidth;
   canvas.height = image.naturalHeight;
@@ -121,10 +123,11 @@ try {
   children.push(browser);
   const page = await openPage(browser);
 
-  // Two passes of the first view, seen as two different images.
+  // Two passes of the first view, seen as two different images. The image a generation names is
+  // the newest when it is fetched, which may already be a later pass's: wait for one that differs.
   const first = await waitFor(page, (s) => s.generation >= 1 && s.width === 48, "the first pass");
-  const later = await waitFor(page, (s) => s.generation > first.generation, "a later pass");
-  if (later.pixels === first.pixels) fail("the image did not change between passes");
+  await waitFor(page, (s) => s.generation > first.generation && s.pixels !== first.pixels,
+                "a later pass showing a different image");
   const done = await waitFor(page, (s) => s.status.includes(": done,"), "the first view to finish");
   if (!done.status.includes("64 of 64 spp")) fail("status of a finished view: " + done.status);
 
