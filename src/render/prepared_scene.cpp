@@ -69,7 +69,7 @@ static StrokeSizing view_stroke_sizing(const PreparedScene& prepared, const Rend
   bool framed = false;
   CameraDesc camera = world_view_camera(prepared, options, framed);
   int height = resolved_image_height(options, *prepared.scene, camera);
-  return stroke_sizing_for(*prepared.scene, options.line_width, camera, height, prepared.origin);
+  return stroke_sizing_in_pixels(options.line_width, camera, height, prepared.origin);
 }
 
 PreparedScene prepare_scene(SceneDesc scene, const RenderOptions& options, AccelLayout layout) {

@@ -21,13 +21,8 @@ PixelFootprint pixel_footprint(const CameraDesc& camera, vec3 position, int heig
   return f;
 }
 
-StrokeSizing stroke_sizing_for(const SceneDesc& scene, LineWidth width, const CameraDesc& camera, int height,
-                               dvec3 origin) {
-  StrokeSizing sizing;
-  sizing.line_width = width;
-  if (scene.strokes.empty() || !width.in_pixels) return sizing;
-  sizing.footprint = pixel_footprint(camera, to_render_space(camera.position, origin), height);
-  return sizing;
+StrokeSizing stroke_sizing_in_pixels(LineWidth width, const CameraDesc& camera, int height, dvec3 origin) {
+  return {width, pixel_footprint(camera, to_render_space(camera.position, origin), height)};
 }
 
 bool same_sizing(const StrokeSizing& a, const StrokeSizing& b) {

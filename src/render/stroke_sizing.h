@@ -11,10 +11,9 @@ namespace radiant {
 
 // One pixel's world size for `camera` (at render-space `position`) in an image `height` tall.
 PixelFootprint pixel_footprint(const CameraDesc& camera, vec3 position, int height);
-// How a view sizes `scene`'s lines and points: `camera` (world space) seeing an image `height`
-// tall, the scene placed in the render space of `origin`.
-StrokeSizing stroke_sizing_for(const SceneDesc& scene, LineWidth width, const CameraDesc& camera, int height,
-                               dvec3 origin);
+// How a view sizes lines and points `width` pixels wide: `camera` (world space) seeing an image
+// `height` tall, the scene placed in the render space of `origin`.
+StrokeSizing stroke_sizing_in_pixels(LineWidth width, const CameraDesc& camera, int height, dvec3 origin);
 bool same_sizing(const StrokeSizing& a, const StrokeSizing& b);
 
 }  // namespace radiant
